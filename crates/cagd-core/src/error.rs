@@ -1,0 +1,153 @@
+//! The error type shared by every cagd crate (DESIGN.md, "Error model").
+//!
+//! Each variant says what was wrong and with which value, so that a message such as
+//! `weights[3] = -0.5 must be finite and > 0` can be shown to a user without extra context.
+//! Each variant maps to exactly one C status code in `cagd-capi`.
+
+/// Everything that can go wrong in cagd-core, and the base of the other crates' errors.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// A degree outside the supported range `0..=max` (see [`crate::MAX_DEGREE`]).
+    #[error("degree {degree} is outside the supported range 0..={max}")]
+    DegreeOutOfRange {
+        /// The degree that was asked for.
+        degree: usize,
+        /// The largest supported degree.
+        max: usize,
+    },
+    /// Too few points (or coefficients) for the object or the algorithm.
+    #[error("not enough points: got {got}, need at least {need}")]
+    NotEnoughPoints {
+        /// How many were given.
+        got: usize,
+        /// How many are needed.
+        need: usize,
+    },
+    /// The spatial dimension is zero.
+    #[error("dimension must be at least 1, got 0")]
+    ZeroDimension,
+    /// Two lengths that must agree do not.
+    #[error("length mismatch in {what}: got {got}, expected {expected}")]
+    LengthMismatch {
+        /// Which array or count.
+        what: &'static str,
+        /// The length that was given.
+        got: usize,
+        /// The length that was expected.
+        expected: usize,
+    },
+    /// A coordinate is NaN or infinite.
+    #[error("points[{index}][{coord}] = {value} is not finite")]
+    NonFinite {
+        /// Index of the point.
+        index: usize,
+        /// Index of the coordinate within the point.
+        coord: usize,
+        /// The offending value.
+        value: f64,
+    },
+    /// A weight of a rational object is zero, negative or not finite.
+    #[error("weights[{index}] = {weight} must be finite and > 0")]
+    NonPositiveWeight {
+        /// Index of the weight.
+        index: usize,
+        /// The offending value.
+        weight: f64,
+    },
+    /// A knot is NaN or infinite.
+    #[error("knots[{index}] = {value} is not finite")]
+    NonFiniteKnot {
+        /// Index of the knot.
+        index: usize,
+        /// The offending value.
+        value: f64,
+    },
+    /// The knot vector decreases at `index` (knots[index] < knots[index - 1]).
+    #[error("knots[{index}] is smaller than knots[{}]: the knot vector must be non-decreasing", .index - 1)]
+    KnotsNotNondecreasing {
+        /// First index at which the vector decreases.
+        index: usize,
+    },
+    /// The knot vector has the wrong length (must be `n_points + degree + 1`).
+    #[error("knot vector has {got} knots, expected {expected} (n_points + degree + 1)")]
+    KnotCount {
+        /// Number of knots given.
+        got: usize,
+        /// Number of knots expected.
+        expected: usize,
+    },
+    /// A knot appears more often than `degree + 1` times.
+    #[error("knot {knot} has multiplicity {mult}, above degree + 1 = {}", .degree + 1)]
+    MultiplicityAboveDegree {
+        /// The knot value.
+        knot: f64,
+        /// Its multiplicity.
+        mult: usize,
+        /// The degree of the spline.
+        degree: usize,
+    },
+    /// A parameter (evaluation point, split point, interval end) is not usable.
+    #[error("parameter {name} = {value} is not valid: {why}")]
+    BadParameter {
+        /// Name of the parameter.
+        name: &'static str,
+        /// The offending value.
+        value: f64,
+        /// What is required of it.
+        why: &'static str,
+    },
+    /// A pair of degrees that the operation does not accept (e.g. target >= source).
+    #[error("degree pair {from} -> {to} is not valid: {why}")]
+    BadDegreePair {
+        /// Source degree.
+        from: usize,
+        /// Target degree.
+        to: usize,
+        /// What is required of the pair.
+        why: &'static str,
+    },
+    /// Too many end constraints for the target degree (needs r + p + 1 < m or similar).
+    #[error("too many end constraints: r = {r}, p = {p} for target degree {m} ({why})")]
+    TooManyConstraints {
+        /// Derivative order kept at t = 0 (-1 for none).
+        r: i64,
+        /// Derivative order kept at t = 1 (-1 for none).
+        p: i64,
+        /// Target degree.
+        m: usize,
+        /// The condition that failed.
+        why: &'static str,
+    },
+    /// A tolerance that is not finite and positive.
+    #[error("tolerance {value} must be finite and > 0")]
+    BadTolerance {
+        /// The offending value.
+        value: f64,
+    },
+    /// A condition of a seed formula is not met (the equation number is given).
+    #[error("condition of eq. {eq} is not met: {why}")]
+    ConditionNotMet {
+        /// Equation number in the seed, e.g. "15.1.8".
+        eq: &'static str,
+        /// What failed.
+        why: &'static str,
+    },
+    /// An iterative or adaptive algorithm could not reach the tolerance.
+    #[error("no convergence: tolerance {tolerance} asked, {achieved} achieved")]
+    NoConvergence {
+        /// The tolerance that was asked for.
+        tolerance: f64,
+        /// The best that was achieved.
+        achieved: f64,
+    },
+    /// A linear system that must be solved is singular.
+    #[error("singular system in {what}")]
+    Singular {
+        /// Which system.
+        what: &'static str,
+    },
+}
+
+/// `Result` with [`Error`].
+pub type Result<T> = core::result::Result<T, Error>;

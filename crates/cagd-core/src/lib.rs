@@ -1,0 +1,44 @@
+//! # cagd-core
+//!
+//! Numbers and shapes for computer-aided geometric design: exact binomials, Bernstein and
+//! related bases, Bézier curves (polynomial and rational, any dimension), tensor-product and
+//! triangular Bézier patches, B-spline / NURBS curves and surfaces, and the error type
+//! shared by every cagd crate. The reducers, converters and implicitizers of the other
+//! crates stand on it.
+//!
+//! Data layout (DESIGN.md): scalars are `f64`; point sets are flat row-major buffers (point
+//! `i`, coordinate `k` at `i * dim + k`); rational objects carry Euclidean points plus a
+//! separate weight array.
+//!
+//! ```
+//! use cagd_core::BezierCurve;
+//! let c = BezierCurve::new(vec![0.0, 0.0, 1.0, 3.0, 3.0, 4.0, 5.0, 1.0], 2)?;
+//! let e = c.elevate(2)?; // degree 5, same curve
+//! let (left, right) = c.subdivide(0.5)?;
+//! assert_eq!(left.eval(1.0), right.eval(0.0));
+//! assert!((e.eval(0.3)[1] - c.eval(0.3)[1]).abs() < 1e-14);
+//! # Ok::<(), cagd_core::Error>(())
+//! ```
+//!
+//! ## Supported range and accuracy
+//!
+//! Degrees `0..=64` ([`MAX_DEGREE`]) in every direction; a larger degree is
+//! [`Error::DegreeOutOfRange`]. Binomial coefficients are exact (`u128`) up to `C(130, k)`.
+//! Evaluation, subdivision and elevation are convex-combination algorithms with a relative
+//! error of a few `n` ulp of the control-point size.
+#![forbid(unsafe_code)]
+
+mod bezier_curve;
+mod bezier_ops;
+mod binomial;
+mod error;
+pub mod kernel;
+mod validate;
+
+pub use bezier_curve::BezierCurve;
+pub use binomial::{
+    MAX_BINOMIAL_N, MAX_DEGREE, binomial, binomial_f64, check_degree, sign_binomial_f64,
+    try_binomial,
+};
+pub use error::{Error, Result};
+pub use validate::{check_finite_param, check_points, check_tolerance, check_weights};
