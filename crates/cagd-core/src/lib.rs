@@ -33,6 +33,8 @@ mod bezier_ops;
 mod binomial;
 mod error;
 pub mod kernel;
+mod tensor_patch;
+mod tri_patch;
 mod validate;
 
 pub use bezier_curve::BezierCurve;
@@ -41,4 +43,6 @@ pub use binomial::{
     try_binomial,
 };
 pub use error::{Error, Result};
+pub use tensor_patch::TensorPatch;
+pub use tri_patch::{TriPatch, tri_count, tri_index};
 pub use validate::{check_finite_param, check_points, check_tolerance, check_weights};
