@@ -6,6 +6,16 @@
 //! shared by every cagd crate. The reducers, converters and implicitizers of the other
 //! crates stand on it.
 //!
+//! Features:
+//! - exact binomials ([`binomial`]) and exact rational matrices ([`ExactMatrix`]: product,
+//!   Gauss–Jordan inverse, rounding once to `f64`) for building operators without rounding;
+//! - basis changes between Bernstein and the power, shifted Chebyshev, shifted Legendre,
+//!   Said–Ball, Wang–Ball and Wang–Said generalized Ball bases ([`Basis`],
+//!   [`to_bernstein`], [`from_bernstein`], their `_exact` forms, [`convert_points`]), exact
+//!   and cached per degree;
+//! - Bézier curves ([`BezierCurve`]), tensor-product and triangular patches
+//!   ([`TensorPatch`], [`TriPatch`]) and the slice kernels under them ([`kernel`]).
+//!
 //! Data layout (DESIGN.md): scalars are `f64`; point sets are flat row-major buffers (point
 //! `i`, coordinate `k` at `i * dim + k`); rational objects carry Euclidean points plus a
 //! separate weight array.
@@ -28,21 +38,30 @@
 //! error of a few `n` ulp of the control-point size.
 #![forbid(unsafe_code)]
 
+mod basis;
+mod basis_ball;
+mod basis_closed;
 mod bezier_curve;
 mod bezier_ops;
 mod binomial;
 mod error;
+mod exact;
 pub mod kernel;
 mod tensor_patch;
 mod tri_patch;
 mod validate;
 
+pub use basis::{
+    Basis, convert_points, from_bernstein, from_bernstein_exact, to_bernstein, to_bernstein_exact,
+};
+pub use basis_ball::{BallTerm, wsgb_max_l, wsgb_terms};
 pub use bezier_curve::BezierCurve;
 pub use binomial::{
     MAX_BINOMIAL_N, MAX_DEGREE, binomial, binomial_f64, check_degree, sign_binomial_f64,
     try_binomial,
 };
 pub use error::{Error, Result};
+pub use exact::ExactMatrix;
 pub use tensor_patch::TensorPatch;
 pub use tri_patch::{TriPatch, tri_count, tri_index};
 pub use validate::{check_finite_param, check_points, check_tolerance, check_weights};
