@@ -1,79 +1,6 @@
 //! Basis-change matrices between the degree-n Bernstein basis and other polynomial bases on
 //! `[0, 1]`, exact (rationals) and rounded once to `f64`, cached per `(basis, n)`.
-//!
-//! Convention: if `c` holds the coefficients of a polynomial in `basis` and `b` its Bernstein
-//! coefficients, then `b = to_bernstein(basis, n) * c` and `c = from_bernstein(basis, n) * b`.
-//! Column `k` of `to_bernstein` is the Bernstein coefficient vector of the k-th basis
-//! polynomial. Points of any dimension are converted coordinate-wise by [`convert_points`].
-//!
-//! | basis | polynomials | to Bernstein | from Bernstein |
-//! |---|---|---|---|
-//! | [`Basis::Power`] | `t^k` | closed form | closed form |
-//! | [`Basis::Chebyshev`] | `T_k(2t-1)` (seed 000 Lemma 14.5.3) | closed form (SPEC-reduce §7) | closed form by orthogonality |
-//! | [`Basis::Legendre`] | `P_k(2t-1)` | closed form | closed form by orthogonality |
-//! | [`Basis::SaidBall`], [`Basis::WangBall`], [`Basis::Wsgb`] | seed 003, SPEC-reduce §9.1 | closed form | exact inverse |
-//!
-//! ```
-//! use cagd_core::{Basis, convert_points, to_bernstein, from_bernstein};
-//! // 1 - 2t + 3t^2 in the power basis, as a 1-D "curve".
-//! let to = to_bernstein(Basis::Power, 2)?; // Arc<DMatrix<f64>>, cached
-//! let b = convert_points(&to, &[1.0, -2.0, 3.0], 1)?;
-//! assert_eq!(b, vec![1.0, 0.0, 2.0]);
-//! let from = from_bernstein(Basis::Chebyshev, 2)?;
-//! let c = convert_points(&from, &b, 1)?;
-//! // 1 - 2t + 3t^2 = 9/8 T_0 + 1/2 T_1 + 3/8 T_2 with T_k = T_k(2t - 1).
-//! assert_eq!(c, vec![9.0 / 8.0, 0.5, 3.0 / 8.0]);
-//! # Ok::<(), cagd_core::Error>(())
-//! ```
-//!
-//! ## Supported range and accuracy
-//!
-//! Degrees `0..=64` ([`crate::MAX_DEGREE`]); `Wsgb { l }` needs
-//! `l <= max(floor(n/2) - 1, 0)`. The `_exact` matrices are exact, and
-//! `from_bernstein_exact * to_bernstein_exact = I` exactly. Every `f64` entry is the exact entry
-//! rounded once (relative error <= 2^-53), so applying a matrix costs at most
-//! `(n+2) eps |M|_inf |c|_inf`; a round trip through another basis is then limited only by
-//! the conditioning `|to|_inf |from|_inf` of the basis change, which no `f64` matrix can beat.
-//! Measured (examples/basis_accuracy.rs; max abs error / max abs input, worst of 20 random
-//! vectors in `[-1, 1]`):
-//!
-//! Basis -> Bernstein -> basis, `from * (to * c)`:
-//!
-//! | n | Power | Chebyshev | Legendre | Said–Ball | Wang–Ball |
-//! |---|---|---|---|---|---|
-//! | 5 | 7.1e-15 | 8.8e-16 | 4.9e-16 | 3.0e-16 | 3.3e-16 |
-//! | 10 | 1.2e-12 | 2.4e-14 | 8.9e-15 | 3.7e-16 | 3.3e-15 |
-//! | 20 | 5.5e-8 | 8.5e-12 | 3.7e-12 | 1.2e-15 | 9.9e-13 |
-//! | 30 | 1.5e-3 | 1.1e-8 | 6.0e-9 | 5.4e-15 | 1.8e-10 |
-//! | 40 | 1.4e2 | 1.3e-5 | 3.5e-6 | 4.2e-14 | 2.5e-8 |
-//! | 50 | 1.6e7 | 9.0e-3 | 3.6e-3 | 2.1e-13 | 6.9e-6 |
-//! | 64 | 2.7e13 | 1.1e2 | 4.2e1 | 1.3e-12 | 9.5e-3 |
-//!
-//! Bernstein -> basis -> Bernstein, `to * (from * b)` (the direction of Chebyshev
-//! economisation and of degree reduction):
-//!
-//! | n | Power | Chebyshev | Legendre | Said–Ball | Wang–Ball |
-//! |---|---|---|---|---|---|
-//! | 5 | 7.7e-15 | 3.0e-16 | 3.0e-16 | 1.7e-16 | 4.6e-16 |
-//! | 10 | 2.7e-12 | 4.6e-16 | 3.6e-16 | 3.5e-16 | 5.9e-16 |
-//! | 20 | 8.8e-8 | 4.8e-16 | 5.8e-16 | 1.9e-15 | 2.2e-14 |
-//! | 30 | 5.8e-3 | 6.0e-16 | 5.7e-16 | 5.2e-15 | 8.2e-13 |
-//! | 40 | 4.8e2 | 7.0e-16 | 6.9e-16 | 2.2e-14 | 1.6e-11 |
-//! | 50 | 1.5e7 | 7.8e-16 | 7.8e-16 | 1.3e-13 | 3.8e-10 |
-//! | 64 | 8.0e13 | 1.1e-15 | 7.9e-16 | 1.4e-12 | 7.4e-8 |
-//!
-//! Condition numbers `|to|_inf |from|_inf` at n = 20 / 40 / 64: Power 1.3e10 / 6.6e19 /
-//! 2.4e31, Chebyshev 9.5e5 / 9.9e11 / 1.7e19, Legendre 3.2e5 / 2.8e11 / 4.2e18, Said–Ball 22 /
-//! 610 / 3.3e4, Wang–Ball 8.7e3 / 3.8e8 / 1.6e14. So: the power basis is usable in `f64` up to
-//! degree ~10; Chebyshev and Legendre coefficients of a Bézier curve are accurate at every
-//! degree, but going from given Chebyshev/Legendre coefficients to Bézier points loses
-//! accuracy beyond degree ~15. Use the `_exact` matrices when exact input is at hand.
-//!
-//! Build cost: Power, Chebyshev and Legendre use closed forms in both directions
-//! (Bernstein -> Chebyshev and -> Legendre by exact orthogonality integrals); the Ball bases
-//! use the closed form to Bernstein and an exact fraction-free inverse back. First call for
-//! `to` + `from` at n = 64 (test profile): Power 2 ms, Chebyshev 80 ms, Legendre 65 ms,
-//! Said–Ball 20 ms, Wang–Ball 55 ms, WSGB(64, 16) 60 ms; later calls are a hash-map lookup.
+//! Everything is documented on [`Basis`].
 
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
@@ -87,7 +14,82 @@ use crate::basis_closed::{
 };
 use crate::{Error, ExactMatrix, Result, check_degree, check_points};
 
-/// A polynomial basis of degree `n` on `[0, 1]` other than Bernstein.
+/// A polynomial basis of degree `n` on `[0, 1]` other than Bernstein, for the basis-change
+/// matrices [`to_bernstein`], [`from_bernstein`] and their `_exact` forms.
+///
+/// Convention: if `c` holds the coefficients of a polynomial in `basis` and `b` its Bernstein
+/// coefficients, then `b = to_bernstein(basis, n) * c` and `c = from_bernstein(basis, n) * b`.
+/// Column `k` of `to_bernstein` is the Bernstein coefficient vector of the k-th basis
+/// polynomial. Points of any dimension are converted coordinate-wise by [`convert_points`].
+///
+/// | basis | polynomials | to Bernstein | from Bernstein |
+/// |---|---|---|---|
+/// | [`Basis::Power`] | `t^k` | closed form | closed form |
+/// | [`Basis::Chebyshev`] | `T_k(2t-1)` (seed 000 Lemma 14.5.3) | closed form (SPEC-reduce §7) | closed form by orthogonality |
+/// | [`Basis::Legendre`] | `P_k(2t-1)` | closed form | closed form by orthogonality |
+/// | [`Basis::SaidBall`], [`Basis::WangBall`], [`Basis::Wsgb`] | seed 003, SPEC-reduce §9.1 | closed form | exact inverse |
+///
+/// ```
+/// use cagd_core::{Basis, convert_points, to_bernstein, from_bernstein};
+/// // 1 - 2t + 3t^2 in the power basis, as a 1-D "curve".
+/// let to = to_bernstein(Basis::Power, 2)?; // Arc<DMatrix<f64>>, cached
+/// let b = convert_points(&to, &[1.0, -2.0, 3.0], 1)?;
+/// assert_eq!(b, vec![1.0, 0.0, 2.0]);
+/// let from = from_bernstein(Basis::Chebyshev, 2)?;
+/// let c = convert_points(&from, &b, 1)?;
+/// // 1 - 2t + 3t^2 = 9/8 T_0 + 1/2 T_1 + 3/8 T_2 with T_k = T_k(2t - 1).
+/// assert_eq!(c, vec![9.0 / 8.0, 0.5, 3.0 / 8.0]);
+/// # Ok::<(), cagd_core::Error>(())
+/// ```
+///
+/// ## Supported range and accuracy
+///
+/// Degrees `0..=64` ([`crate::MAX_DEGREE`]); `Wsgb { l }` needs
+/// `l <= max(floor(n/2) - 1, 0)`. The `_exact` matrices are exact, and
+/// `from_bernstein_exact * to_bernstein_exact = I` exactly. Every `f64` entry is the exact entry
+/// rounded once (relative error <= 2^-53), so applying a matrix costs at most
+/// `(n+2) eps |M|_inf |c|_inf`; a round trip through another basis is then limited only by
+/// the conditioning `|to|_inf |from|_inf` of the basis change, which no `f64` matrix can beat.
+/// Measured (examples/basis_accuracy.rs; max abs error / max abs input, worst of 20 random
+/// vectors in `[-1, 1]`):
+///
+/// Basis -> Bernstein -> basis, `from * (to * c)`:
+///
+/// | n | Power | Chebyshev | Legendre | Said–Ball | Wang–Ball |
+/// |---|---|---|---|---|---|
+/// | 5 | 7.1e-15 | 8.8e-16 | 4.9e-16 | 3.0e-16 | 3.3e-16 |
+/// | 10 | 1.2e-12 | 2.4e-14 | 8.9e-15 | 3.7e-16 | 3.3e-15 |
+/// | 20 | 5.5e-8 | 8.5e-12 | 3.7e-12 | 1.2e-15 | 9.9e-13 |
+/// | 30 | 1.5e-3 | 1.1e-8 | 6.0e-9 | 5.4e-15 | 1.8e-10 |
+/// | 40 | 1.4e2 | 1.3e-5 | 3.5e-6 | 4.2e-14 | 2.5e-8 |
+/// | 50 | 1.6e7 | 9.0e-3 | 3.6e-3 | 2.1e-13 | 6.9e-6 |
+/// | 64 | 2.7e13 | 1.1e2 | 4.2e1 | 1.3e-12 | 9.5e-3 |
+///
+/// Bernstein -> basis -> Bernstein, `to * (from * b)` (the direction of Chebyshev
+/// economisation and of degree reduction):
+///
+/// | n | Power | Chebyshev | Legendre | Said–Ball | Wang–Ball |
+/// |---|---|---|---|---|---|
+/// | 5 | 7.7e-15 | 3.0e-16 | 3.0e-16 | 1.7e-16 | 4.6e-16 |
+/// | 10 | 2.7e-12 | 4.6e-16 | 3.6e-16 | 3.5e-16 | 5.9e-16 |
+/// | 20 | 8.8e-8 | 4.8e-16 | 5.8e-16 | 1.9e-15 | 2.2e-14 |
+/// | 30 | 5.8e-3 | 6.0e-16 | 5.7e-16 | 5.2e-15 | 8.2e-13 |
+/// | 40 | 4.8e2 | 7.0e-16 | 6.9e-16 | 2.2e-14 | 1.6e-11 |
+/// | 50 | 1.5e7 | 7.8e-16 | 7.8e-16 | 1.3e-13 | 3.8e-10 |
+/// | 64 | 8.0e13 | 1.1e-15 | 7.9e-16 | 1.4e-12 | 7.4e-8 |
+///
+/// Condition numbers `|to|_inf |from|_inf` at n = 20 / 40 / 64: Power 1.3e10 / 6.6e19 /
+/// 2.4e31, Chebyshev 9.5e5 / 9.9e11 / 1.7e19, Legendre 3.2e5 / 2.8e11 / 4.2e18, Said–Ball 22 /
+/// 610 / 3.3e4, Wang–Ball 8.7e3 / 3.8e8 / 1.6e14. So: the power basis is usable in `f64` up to
+/// degree ~10; Chebyshev and Legendre coefficients of a Bézier curve are accurate at every
+/// degree, but going from given Chebyshev/Legendre coefficients to Bézier points loses
+/// accuracy beyond degree ~15. Use the `_exact` matrices when exact input is at hand.
+///
+/// Build cost: Power, Chebyshev and Legendre use closed forms in both directions
+/// (Bernstein -> Chebyshev and -> Legendre by exact orthogonality integrals); the Ball bases
+/// use the closed form to Bernstein and an exact fraction-free inverse back. First call for
+/// `to` + `from` at n = 64 (test profile): Power 2 ms, Chebyshev 80 ms, Legendre 65 ms,
+/// Said–Ball 20 ms, Wang–Ball 55 ms, WSGB(64, 16) 60 ms; later calls are a hash-map lookup.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum Basis {
@@ -262,3 +264,7 @@ mod tests;
 #[cfg(test)]
 #[path = "basis_tests_f64.rs"]
 mod tests_f64;
+
+#[cfg(test)]
+#[path = "basis_tests_spec.rs"]
+mod tests_spec;

@@ -1,18 +1,5 @@
 //! The Wang–Said generalized Ball basis WSGB(n, L) of seed 003, as reconstructed in
 //! SPEC-reduce §9.1, and its exact conversion to the Bernstein basis.
-//!
-//! With `h = floor(n/2)` and `0 <= L <= max(h - 1, 0)`:
-//!
-//! ```text
-//! beta_i = 2^i u^i (1-u)^(i+2),                          0 <= i <= L-1          (Wang part)
-//! beta_i = 2^L C(h+i-2L, i-L) u^i (1-u)^(h+1),           L <= i <= ceil(n/2)-1  (Said part)
-//! beta_{n/2} = 2^L C(n-2L, n/2-L) u^(n/2) (1-u)^(n/2),   n even
-//! beta_i(u) = beta_{n-i}(1-u),                           floor(n/2)+1 <= i <= n
-//! ```
-//!
-//! `L = 0` is the Said–Ball basis, `L = floor(n/2) - 1` the Wang–Ball basis. Each basis
-//! function is one term `K u^a (1-u)^b`, and (SPEC-reduce §9.1)
-//! `K u^a (1-u)^b = sum_{k=a}^{n-b} K C(n-a-b, k-a) / C(n, k) B_k^n(u)`.
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -57,6 +44,19 @@ pub(crate) fn check_wsgb(n: usize, l: usize) -> Result<()> {
 
 /// The `n + 1` basis functions of WSGB(n, L), `beta_0 .. beta_n`, as exact terms
 /// `K u^a (1-u)^b` (seed 003 §2, SPEC-reduce §9.1).
+///
+/// With `h = floor(n/2)` and `0 <= L <= max(h - 1, 0)`:
+///
+/// ```text
+/// beta_i = 2^i u^i (1-u)^(i+2),                          0 <= i <= L-1          (Wang part)
+/// beta_i = 2^L C(h+i-2L, i-L) u^i (1-u)^(h+1),           L <= i <= ceil(n/2)-1  (Said part)
+/// beta_{n/2} = 2^L C(n-2L, n/2-L) u^(n/2) (1-u)^(n/2),   n even
+/// beta_i(u) = beta_{n-i}(1-u),                           floor(n/2)+1 <= i <= n
+/// ```
+///
+/// `L = 0` is the Said–Ball basis, `L = floor(n/2) - 1` the Wang–Ball basis. Each basis
+/// function is one term `K u^a (1-u)^b`, and (SPEC-reduce §9.1)
+/// `K u^a (1-u)^b = sum_{k=a}^{n-b} K C(n-a-b, k-a) / C(n, k) B_k^n(u)`.
 ///
 /// ```
 /// use cagd_core::{wsgb_terms, BallTerm};

@@ -299,32 +299,6 @@ fn wsgb_leading_coefficient_matches_9_2() {
 }
 
 #[test]
-fn wsgb_spec_vectors() {
-    let vs = cagd_testkit::vectors_with_algorithm("vectors-reduce.json", "wsgb_basis");
-    assert!(
-        vs.iter().any(|v| v["id"] == "wsgb-basis-7-1"),
-        "wsgb-basis-7-1 missing"
-    );
-    for v in vs {
-        let n = usize::try_from(v["params"]["n"].as_u64().unwrap()).unwrap();
-        let l = usize::try_from(v["params"]["L"].as_u64().unwrap()).unwrap();
-        let terms = wsgb_terms(n, l).unwrap();
-        let expected = v["expected"]["terms_K_a_b"].as_array().unwrap();
-        assert_eq!(expected.len(), n + 1, "{}", v["id"]);
-        for (t, e) in terms.iter().zip(expected) {
-            assert_eq!(
-                BigRational::from_integer(BigInt::from(t.coef)),
-                cagd_testkit::rational(&e[0])
-            );
-            assert_eq!(
-                (t.a as u64, t.b as u64),
-                (e[1].as_u64().unwrap(), e[2].as_u64().unwrap())
-            );
-        }
-    }
-}
-
-#[test]
 fn out_of_range_inputs_are_errors() {
     for basis in named_bases() {
         assert!(matches!(

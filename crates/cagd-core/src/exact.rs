@@ -1,21 +1,6 @@
 //! Exact rational matrices, for building conversion and reduction operators without
 //! rounding and rounding them to `f64` once (SPEC-reduce §11: "closed forms in exact
 //! integer/rational arithmetic where they exist; evaluate in f64 only at the end").
-//!
-//! [`ExactMatrix`] is a dense row-major matrix of [`BigRational`]. Products and the inverse
-//! work on integer-scaled rows (one common denominator per row or column), so that the inner
-//! loops multiply and add big integers instead of reducing a fraction at every step.
-//!
-//! ```
-//! use cagd_core::ExactMatrix;
-//! use num_rational::BigRational;
-//! let a = ExactMatrix::from_fn(2, 2, |i, j| BigRational::from_integer((1 + i + 2 * j).into()));
-//! let inv = a.inverse()?;
-//! assert!(a.mul(&inv)?.is_identity());
-//! let f = inv.to_f64(); // each entry rounded once
-//! assert_eq!(f[(0, 0)], -2.0);
-//! # Ok::<(), cagd_core::Error>(())
-//! ```
 
 use nalgebra::DMatrix;
 use num_bigint::BigInt;
@@ -25,7 +10,22 @@ use num_traits::{One, ToPrimitive, Zero};
 
 use crate::{Error, Result};
 
-/// A dense `rows x cols` matrix of exact rationals, stored row-major.
+/// A dense `rows x cols` matrix of exact rationals ([`BigRational`]), stored row-major.
+///
+/// Products and the inverse
+/// work on integer-scaled rows (one common denominator per row or column), so that the inner
+/// loops multiply and add big integers instead of reducing a fraction at every step.
+///
+/// ```
+/// use cagd_core::ExactMatrix;
+/// use num_rational::BigRational;
+/// let a = ExactMatrix::from_fn(2, 2, |i, j| BigRational::from_integer((1 + i + 2 * j).into()));
+/// let inv = a.inverse()?;
+/// assert!(a.mul(&inv)?.is_identity());
+/// let f = inv.to_f64(); // each entry rounded once
+/// assert_eq!(f[(0, 0)], -2.0);
+/// # Ok::<(), cagd_core::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct ExactMatrix {
     rows: usize,
