@@ -31,6 +31,7 @@
 mod bezier_curve;
 mod bezier_ops;
 mod binomial;
+mod distance;
 mod error;
 pub mod kernel;
 mod tensor_patch;
@@ -42,6 +43,7 @@ pub use binomial::{
     MAX_BINOMIAL_N, MAX_DEGREE, binomial, binomial_f64, check_degree, sign_binomial_f64,
     try_binomial,
 };
+pub use distance::{curve_distance, max_distance_1d};
 pub use error::{Error, Result};
 pub use tensor_patch::TensorPatch;
 pub use tri_patch::{TriPatch, tri_count, tri_index};
