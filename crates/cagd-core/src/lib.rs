@@ -32,10 +32,14 @@ mod bezier_curve;
 mod bezier_ops;
 mod binomial;
 mod distance;
+mod distance_2d;
 mod error;
 pub mod kernel;
+mod tensor_ops;
 mod tensor_patch;
+mod tri_ops;
 mod tri_patch;
+mod tri_subdivide;
 mod validate;
 
 pub use bezier_curve::BezierCurve;
@@ -44,6 +48,7 @@ pub use binomial::{
     try_binomial,
 };
 pub use distance::{curve_distance, max_distance_1d};
+pub use distance_2d::{Domain2, max_distance_2d, tensor_patch_distance, tri_patch_distance};
 pub use error::{Error, Result};
 pub use tensor_patch::TensorPatch;
 pub use tri_patch::{TriPatch, tri_count, tri_index};
