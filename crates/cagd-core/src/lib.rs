@@ -25,7 +25,10 @@
 //! Degrees `0..=64` ([`MAX_DEGREE`]) in every direction; a larger degree is
 //! [`Error::DegreeOutOfRange`]. Binomial coefficients are exact (`u128`) up to `C(130, k)`.
 //! Evaluation, subdivision and elevation are convex-combination algorithms with a relative
-//! error of a few `n` ulp of the control-point size.
+//! error of a few `n` ulp of the control-point size. Parametric distances
+//! ([`curve_distance`], [`tensor_patch_distance`], [`tri_patch_distance`]) are maxima found by
+//! dense sampling plus local refinement, relative accuracy `1e-12` above a floor of a few
+//! ulp of the difference's control points (measured on closed-form cases).
 #![forbid(unsafe_code)]
 
 mod bezier_curve;
