@@ -5,9 +5,9 @@
 //!
 //! Method (ADDED): the squared distance is sampled on a dense grid; the boundary edges are
 //! maximised as curves by [`max_distance_1d`]; every interior grid node that is a local
-//! maximum among its 8 neighbours is refined by a pattern search (steps along `±u`, `±v`,
-//! `±(u - v)`, `±(u + v)`, halved when no step improves, points outside the domain
-//! rejected) down to a step of `1e-10`. The result is never below the sampled maximum.
+//! maximum among its 8 neighbours (and not flat to `1e-13` relative) is refined by a pattern
+//! search (steps along `±u`, `±v`, `±(u - v)`, `±(u + v)`, halved when no step improves,
+//! points outside the domain rejected) down to a step of `1e-10`. The result is never below the sampled maximum.
 
 use crate::distance::max_distance_1d;
 use crate::{Error, Result, TensorPatch, TriPatch};
@@ -18,6 +18,10 @@ const MIN_STEP: f64 = 1e-10;
 
 /// A parameter point `(u, v)`.
 type Param = (f64, f64);
+
+/// A 3 x 3 grid neighbourhood whose values differ by less than this (relative) is flat: its
+/// centre is not refined (the possible gain is below the `1e-12` target).
+const FLAT: f64 = 1e-13;
 
 /// The parameter domain of [`max_distance_2d`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -160,7 +164,7 @@ pub fn max_distance_2d(
             if c.is_nan() {
                 continue;
             }
-            let (mut ge, mut gt) = (true, false);
+            let (mut ge, mut gt, mut lowest) = (true, false, c);
             for ni in i - 1..=i + 1 {
                 for nj in j - 1..=j + 1 {
                     if ni == i && nj == j {
@@ -172,9 +176,12 @@ pub fn max_distance_2d(
                     }
                     ge &= c >= w;
                     gt |= c > w;
+                    lowest = lowest.min(w);
                 }
             }
-            if !(ge && gt) {
+            // Refine strict local maxima only; a neighbourhood flat to 1e-13 relative (e.g.
+            // rounding noise on a constant distance) cannot hide a larger value within it.
+            if !(ge && gt) || c - lowest <= FLAT * c {
                 continue;
             }
             let (mut u, mut v, mut val) = (node(i), node(j), c);
