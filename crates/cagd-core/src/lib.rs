@@ -40,6 +40,10 @@
 //! the docs of [`Basis`] (limited by the conditioning of the basis, e.g. 1e-15 for
 //! Bernstein -> Chebyshev -> Bernstein at every degree, but ~1e-12 for the power basis
 //! already at degree 10).
+//!
+//! Parametric distances ([`curve_distance`], [`tensor_patch_distance`], [`tri_patch_distance`]) are maxima found by
+//! dense sampling plus local refinement, relative accuracy `1e-12` above a floor of a few
+//! ulp of the difference's control points (measured on closed-form cases).
 #![forbid(unsafe_code)]
 
 mod basis;
@@ -48,11 +52,16 @@ mod basis_closed;
 mod bezier_curve;
 mod bezier_ops;
 mod binomial;
+mod distance;
+mod distance_2d;
 mod error;
 mod exact;
 pub mod kernel;
+mod tensor_ops;
 mod tensor_patch;
+mod tri_ops;
 mod tri_patch;
+mod tri_subdivide;
 mod validate;
 
 pub use basis::{
@@ -64,6 +73,8 @@ pub use binomial::{
     MAX_BINOMIAL_N, MAX_DEGREE, binomial, binomial_f64, check_degree, sign_binomial_f64,
     try_binomial,
 };
+pub use distance::{curve_distance, max_distance_1d};
+pub use distance_2d::{Domain2, max_distance_2d, tensor_patch_distance, tri_patch_distance};
 pub use error::{Error, Result};
 pub use exact::ExactMatrix;
 pub use tensor_patch::TensorPatch;
