@@ -29,20 +29,28 @@
 #![forbid(unsafe_code)]
 
 mod bezier_curve;
+mod bezier_extract;
 mod bezier_ops;
 mod binomial;
+mod bspline_curve;
+mod bspline_eval;
 mod error;
 pub mod kernel;
+mod knot_insert;
+mod knots;
 mod tensor_patch;
 mod tri_patch;
 mod validate;
 
 pub use bezier_curve::BezierCurve;
+pub use bezier_extract::BezierSegment;
 pub use binomial::{
     MAX_BINOMIAL_N, MAX_DEGREE, binomial, binomial_f64, check_degree, sign_binomial_f64,
     try_binomial,
 };
+pub use bspline_curve::BSplineCurve;
 pub use error::{Error, Result};
+pub use knots::{check_knots, find_span, knot_multiplicity};
 pub use tensor_patch::TensorPatch;
 pub use tri_patch::{TriPatch, tri_count, tri_index};
 pub use validate::{check_finite_param, check_points, check_tolerance, check_weights};
