@@ -40,6 +40,7 @@ mod knot_insert;
 mod knots;
 mod tensor_patch;
 mod tri_patch;
+mod uniform_bspline;
 mod validate;
 
 pub use bezier_curve::BezierCurve;
@@ -53,4 +54,5 @@ pub use error::{Error, Result};
 pub use knots::{check_knots, find_span, knot_multiplicity};
 pub use tensor_patch::TensorPatch;
 pub use tri_patch::{TriPatch, tri_count, tri_index};
+pub use uniform_bspline::{s_matrix, s_matrix_exact, s_matrix_inverse, s_matrix_inverse_exact};
 pub use validate::{check_finite_param, check_points, check_tolerance, check_weights};
