@@ -37,6 +37,7 @@ mod bspline_eval;
 mod error;
 pub mod kernel;
 mod knot_insert;
+mod knot_removal;
 mod knots;
 mod tensor_patch;
 mod tri_patch;
@@ -51,6 +52,7 @@ pub use binomial::{
 };
 pub use bspline_curve::BSplineCurve;
 pub use error::{Error, Result};
+pub use knot_removal::KnotRemoval;
 pub use knots::{check_knots, find_span, knot_multiplicity};
 pub use tensor_patch::TensorPatch;
 pub use tri_patch::{TriPatch, tri_count, tri_index};
