@@ -5,9 +5,12 @@
 //! points `Q_i = P_i` for `i < r - p` and `Q_i = P_{i+1}` for `i >= r - s`, and solves the
 //! `p - s` unknown points from the `p - s + 1` knot-insertion equations
 //! `P_i = a_i Q_i + (1 - a_i) Q_{i-1}`, `a_i = (u - u_i) / (u_{i+p+1} - u_i)`,
-//! `i = r-p..=r-s`, from both ends towards the middle. One equation is left over: in the
-//! even case it is the residual at the middle point, in the odd case the two values of the
-//! middle unknown are averaged (for `s = p + 1` the two coinciding points are averaged).
+//! `i = r-p..=r-s`, from both ends. One equation `k` is left over and only its point moves.
+//! A5.8 meets in the middle (and averages in the odd case); here `k` is where `a_i`
+//! (non-increasing in `i`) crosses `1/2`, so the left sweep divides by `a_i >= 1/2` and the
+//! right one by `1 - a_i > 1/2` and rounding is never amplified — the middle choice loses
+//! a factor `~(1/a)^(p/2)` for a knot near a neighbour. For `s = p + 1` (no equations) the
+//! two end points of the pieces are averaged.
 //!
 //! **Certified bound.** Re-inserting `u` into the new curve gives points `P'_i` on the old
 //! knot vector, and `C(t) - C'(t) = sum_i N_i(t) (P_i - P'_i)`, so by the partition of unity
@@ -20,8 +23,6 @@
 //! the bound reported. Removals accumulate: the reported bound is the sum of the bounds of
 //! the single removals (triangle inequality) and never exceeds the caller's tolerance.
 //!
-//! Conditioning: the sweeps divide by `a_i` and `1 - a_i`, so a knot very close to a
-//! neighbour amplifies rounding; the bound is computed after the fact and stays honest.
 
 use crate::knot_insert::insert_once;
 use crate::knots::knot_multiplicity;
@@ -67,25 +68,23 @@ fn remove_once(
         let (first, last) = (r - p, r - s);
         q[..first * pdim].copy_from_slice(&work[..first * pdim]);
         q[last * pdim..].copy_from_slice(&work[(last + 1) * pdim..]);
-        let (mut i, mut j) = (first, last);
-        while j >= i + 2 {
-            let (ai, aj) = (alpha(i), alpha(j));
+        // Drop equation k where a_i (non-increasing in i) crosses 1/2: the left sweep then
+        // divides by a_i >= 1/2 and the right sweep by 1 - a_i > 1/2, so neither amplifies.
+        // Ties (a_i = 1/2, growth factor 1 either way) are split evenly, so a symmetric
+        // configuration drops the middle equation as A5.8 does.
+        let above = (first..=last).filter(|&i| alpha(i) > 0.5).count();
+        let half = (first..=last).filter(|&i| alpha(i) == 0.5).count();
+        let k = (first + above + half / 2).min(last);
+        for i in first..k {
+            let ai = alpha(i);
             for c in 0..pdim {
                 q[i * pdim + c] = (work[i * pdim + c] - (1.0 - ai) * q[(i - 1) * pdim + c]) / ai;
-                q[(j - 1) * pdim + c] = (work[j * pdim + c] - aj * q[j * pdim + c]) / (1.0 - aj);
             }
-            i += 1;
-            j -= 1;
         }
-        if j == i + 1 {
-            // One unknown Q_i and two equations (i and j): average the two solutions.
-            let (ai, aj) = (alpha(i), alpha(j));
-            let left: Vec<f64> = (0..pdim)
-                .map(|c| (work[i * pdim + c] - (1.0 - ai) * q[(i - 1) * pdim + c]) / ai)
-                .collect();
-            for (c, l) in left.iter().enumerate() {
-                let right = (work[j * pdim + c] - aj * q[j * pdim + c]) / (1.0 - aj);
-                q[i * pdim + c] = 0.5 * (l + right);
+        for i in (k + 1..=last).rev() {
+            let ai = alpha(i);
+            for c in 0..pdim {
+                q[(i - 1) * pdim + c] = (work[i * pdim + c] - ai * q[i * pdim + c]) / (1.0 - ai);
             }
         }
     }

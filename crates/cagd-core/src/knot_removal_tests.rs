@@ -27,9 +27,6 @@ fn scale(c: &BSplineCurve) -> f64 {
 proptest! {
     #[test]
     fn inserted_knot_is_removed_exactly(c in curve_strategy(), t in 0.02f64..0.98) {
-        // Removal divides by a_i and 1 - a_i: keep t away from the other knots so that
-        // the recovery is well conditioned (the bound stays honest either way).
-        prop_assume!(c.knots().iter().all(|k| (k - t).abs() > 0.01));
         let finer = c.insert_knot(t, 1).unwrap();
         let back = finer.remove_knot(t, 1, 1e-9 * scale(&c)).unwrap();
         prop_assert_eq!(back.removed, 1);
@@ -43,7 +40,10 @@ proptest! {
                 prop_assert!((x - y).abs() <= 1e-12 * y.abs().max(1.0));
             }
         }
-        prop_assert!(back.error_bound <= 1e-12 * s);
+        // The sweeps do not amplify rounding; for NURBS the bound carries the factor
+        // (1 + max|P|) / w_min <= 55 and the homogeneous scale (w <= 5).
+        let allowed = if c.is_rational() { 1e-11 * s } else { 1e-13 * s };
+        prop_assert!(back.error_bound <= allowed, "bound {} > {}", back.error_bound, allowed);
     }
 
     #[test]
