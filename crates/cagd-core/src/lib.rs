@@ -34,6 +34,7 @@ mod bezier_ops;
 mod binomial;
 mod bspline_curve;
 mod bspline_eval;
+mod bspline_merge;
 mod error;
 pub mod kernel;
 mod knot_insert;
