@@ -35,6 +35,7 @@ mod binomial;
 mod bspline_curve;
 mod bspline_eval;
 mod bspline_merge;
+mod bspline_surface;
 mod error;
 pub mod kernel;
 mod knot_insert;
@@ -52,6 +53,7 @@ pub use binomial::{
     try_binomial,
 };
 pub use bspline_curve::BSplineCurve;
+pub use bspline_surface::{BSplineSurface, SurfacePatchPiece};
 pub use error::{Error, Result};
 pub use knot_removal::KnotRemoval;
 pub use knots::{check_knots, find_span, knot_multiplicity};
