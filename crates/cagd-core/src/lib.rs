@@ -26,6 +26,9 @@
 //! [`Error::DegreeOutOfRange`]. Binomial coefficients are exact (`u128`) up to `C(130, k)`.
 //! Evaluation, subdivision and elevation are convex-combination algorithms with a relative
 //! error of a few `n` ulp of the control-point size.
+//! B-spline / NURBS evaluation (de Boor), knot insertion and Bézier extraction are
+//! convex-combination algorithms too (measured: curves and surfaces preserved to `1e-12`
+//! relative); knot removal returns a certified error bound.
 #![forbid(unsafe_code)]
 
 mod bezier_curve;
