@@ -84,6 +84,11 @@ enum CagdStatus
    */
   CAGD_ERR_DIMENSION_MISMATCH = 4,
   /**
+   * A value that was not computed was asked for (e.g. the measured error of a
+   * reduction run without `measure`).
+   */
+  CAGD_ERR_NOT_AVAILABLE = 5,
+  /**
    * A coordinate or a knot is NaN or infinite.
    */
   CAGD_ERR_NON_FINITE = 20,
@@ -143,11 +148,116 @@ typedef int32_t CagdStatus;
 #endif // __cplusplus
 
 /**
+ * The degree-reduction methods (cagd-reduce `Method`; seed 000 chapter 14 and the
+ * classical methods it cites). Stored in `CagdReduceOptions.method` as an `int32_t`.
+ *
+ */
+enum CagdReduceMethod
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : int32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  /**
+   * Forrest's one-degree reduction, applied stepwise; interpolates derivatives up to
+   * order `floor((m - 1) / 2)` at both ends.
+   */
+  CAGD_METHOD_FORREST = 0,
+  /**
+   * Piegl–Tiller one-degree reduction (equal to Forrest, own formula).
+   */
+  CAGD_METHOD_PIEGL_TILLER = 1,
+  /**
+   * Farin's one-degree reduction; interpolates the end points; needs `m >= 1`.
+   */
+  CAGD_METHOD_FARIN = 2,
+  /**
+   * Control-point perturbation with fixed ends (seed 000 §14.2.1); needs `m >= 1`.
+   */
+  CAGD_METHOD_PERTURB = 3,
+  /**
+   * Perturbation with G1 ends and the given `l1`, `l2` (seed 000 §14.2.3); needs
+   * `m >= 3`, `1 + l1 > 0`, `1 + l2 > 0`.
+   */
+  CAGD_METHOD_PERTURB_G1 = 4,
+  /**
+   * Eck's one-degree reduction (Chebyshev economisation, best uniform for one degree).
+   */
+  CAGD_METHOD_ECK = 5,
+  /**
+   * Watkins–Worsey Chebyshev truncation (multi-degree).
+   */
+  CAGD_METHOD_WATKINS_WORSEY = 6,
+  /**
+   * Bogacki–Weinstein–Xu near-best uniform multi-degree reduction, ends free.
+   */
+  CAGD_METHOD_BOGACKI_WEINSTEIN_XU = 7,
+  /**
+   * Generalized-inverse (L2-best) reduction without end constraints (seed 000 §14.4.1).
+   */
+  CAGD_METHOD_GENERALIZED_INVERSE = 8,
+  /**
+   * Generalized-inverse reduction with interpolated end points (seed 000 §14.4.2);
+   * needs `m >= 1`.
+   */
+  CAGD_METHOD_GENERALIZED_INVERSE_ENDS = 9,
+  /**
+   * Constrained Chebyshev reduction keeping derivatives `0..=r` at t = 0 and `0..=p` at
+   * t = 1 (seed 000 §14.5); needs `r + p + 1 <= m`.
+   */
+  CAGD_METHOD_CONSTRAINED_CHEBYSHEV = 10,
+  /**
+   * L2-optimal reduction with `C^(r,p)` end constraints; needs `r + p + 1 <= m`.
+   */
+  CAGD_METHOD_L2 = 11,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum CagdReduceMethod CagdReduceMethod;
+#else
+typedef int32_t CagdReduceMethod;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
+ * The space in which a reduction report's error numbers are measured (matters for
+ * rational curves only). Stored in `CagdReduceOptions.space` as an `int32_t`.
+ *
+ */
+enum CagdErrorSpace
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : int32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  /**
+   * `max_t |P(t) - Q(t)|` of the Euclidean curves.
+   */
+  CAGD_SPACE_EUCLIDEAN = 0,
+  /**
+   * The same maximum for the homogeneous curves `(wP, w)`, `(vQ, v)`.
+   */
+  CAGD_SPACE_HOMOGENEOUS = 1,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum CagdErrorSpace CagdErrorSpace;
+#else
+typedef int32_t CagdErrorSpace;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
  * Opaque handle to a Bézier curve of degree `n` (`n + 1` control points of `dim`
  * coordinates, `0 <= n <= 64`, `dim >= 1`), polynomial or rational (Euclidean points plus
  * positive weights). Immutable once created; release with `cagd_curve_free`.
  */
 typedef struct CagdCurve CagdCurve;
+
+/**
+ * Opaque handle to the report of a reduction: the method, the degrees, the certified
+ * error bound, and (on request) the measured error. Immutable; release with
+ * `cagd_report_free`.
+ */
+typedef struct CagdReport CagdReport;
 
 /**
  * Opaque handle to a tensor-product Bézier patch of degree `(deg_u, deg_v)`, each in
@@ -165,6 +275,50 @@ typedef struct CagdTensorPatch CagdTensorPatch;
  * release with `cagd_tripatch_free`.
  */
 typedef struct CagdTriPatch CagdTriPatch;
+
+/**
+ * How to reduce: a plain struct the caller owns. Fill it with
+ * `cagd_reduce_options_init`, then change the fields you need.
+ */
+typedef struct CagdReduceOptions {
+  /**
+   * A `CagdReduceMethod` value (an `int32_t`, so that any value a caller stores is
+   * checked rather than undefined). Default `CAGD_METHOD_CONSTRAINED_CHEBYSHEV`.
+   */
+  int32_t method;
+  /**
+   * The target degree `m`, below the source degree. Default 3.
+   */
+  size_t target;
+  /**
+   * Highest derivative order kept at t = 0 for `CAGD_METHOD_CONSTRAINED_CHEBYSHEV` and
+   * `CAGD_METHOD_L2`, `-1` for none. Ignored by the other methods. Default 0 (the end
+   * point is kept, so joints stay connected).
+   */
+  int32_t r;
+  /**
+   * Highest derivative order kept at t = 1, as `r`. Default 0.
+   */
+  int32_t p;
+  /**
+   * Tangent scale at t = 0 for `CAGD_METHOD_PERTURB_G1` (finite, `> -1`). Default 0.
+   */
+  double l1;
+  /**
+   * Tangent scale at t = 1 for `CAGD_METHOD_PERTURB_G1` (finite, `> -1`). Default 0.
+   */
+  double l2;
+  /**
+   * Also measure the error by dense sampling (costs about 8000 evaluations). Default
+   * false.
+   */
+  bool measure;
+  /**
+   * A `CagdErrorSpace` value: the space of the report's numbers. Default
+   * `CAGD_SPACE_EUCLIDEAN`.
+   */
+  int32_t space;
+} CagdReduceOptions;
 
 #ifdef __cplusplus
 extern "C" {
@@ -523,6 +677,220 @@ CagdStatus cagd_curve_segment(const struct CagdCurve *curve,
  * should depend on the returned `CagdStatus`, never on this text.
  */
 const char *cagd_last_error_message(void);
+
+/**
+ * Reduces a curve of degree `n` to degree `opts->target` with `opts->method`, returning
+ * the reduced curve and a report with the certified error bound (and, with
+ * `opts->measure`, the measured error). Rational curves are reduced in homogeneous
+ * coordinates and stay rational. The operator of each `(method, n, m)` is computed once
+ * in exact rational arithmetic and cached process-wide (thread-safe).
+ *
+ * Parameters:
+ * - `curve` (in): the curve, degree `n`.
+ * - `opts` (in): the options (see `CagdReduceOptions`; start from
+ *   `cagd_reduce_options_init`). Borrowed for the call.
+ * - `curve_out` (out): on `CAGD_OK`, the reduced curve of degree `opts->target`
+ *   (`(target + 1) * dim` doubles read back with `cagd_curve_points`), owned by the
+ *   caller: release with `cagd_curve_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report, owned by the caller: release with
+ *   `cagd_report_free`. Neither output is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `curve`, `opts`, `curve_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->method` or `opts->space` is not a valid code,
+ *   `l1` / `l2` of `CAGD_METHOD_PERTURB_G1` are not finite or not `> -1`,
+ *   `curve_out` and `report_out` are the same address, or a pointer is misaligned.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n`, or `target` below the method's minimum
+ *   (1 for FARIN, PERTURB, GENERALIZED_INVERSE_ENDS; 3 for PERTURB_G1).
+ * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target`, or `r` or `p` below -1
+ *   (CONSTRAINED_CHEBYSHEV, L2).
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational curve is not positive.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live curve handle; `opts` NULL or a readable
+ * `CagdReduceOptions`; `curve_out` and `report_out` NULL or writable.
+ */
+CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
+                             const struct CagdReduceOptions *opts,
+                             struct CagdCurve **curve_out,
+                             struct CagdReport **report_out);
+
+/**
+ * Reduces `n_curves` polynomial curves of one degree `n` to degree `opts->target` with
+ * one cached operator and no per-curve allocation — the fast path for many curves. Only
+ * `opts->method`, `target`, `r`, `p`, `l1`, `l2` are used (no report: call
+ * `cagd_curve_reduce` for a certified bound per curve). Rational curves: pass their
+ * homogeneous points `(w_i P_i, w_i)` as polynomial curves of dimension `dim + 1`.
+ *
+ * Parameters:
+ * - `points` (in): `n_curves * (n + 1) * dim` doubles, curve after curve, row-major inside
+ *   a curve: coordinate k of point j of curve c at `points[(c * (n + 1) + j) * dim + k]`.
+ *   Borrowed for the call.
+ * - `n_curves` (in): number of curves; 0 is allowed (`*out_needed = 0`).
+ * - `degree` (in): the common source degree `n`, `0..=64`.
+ * - `dim` (in): coordinates per point, `>= 1`.
+ * - `opts` (in): the options. Borrowed for the call.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
+ *   `n_curves * (target + 1) * dim` doubles hold the reduced curves in the same layout.
+ *   May be NULL only when `out_cap == 0`. Not written on failure.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
+ *   `n_curves * (target + 1) * dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the reduced curves are in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `points`, `opts` or `out_needed` is NULL, or `out` is NULL
+ *   with `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a size formula overflows, an invalid
+ *   `opts->method` code or `l1` / `l2`, or a pointer is misaligned.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
+ * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
+ * - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message gives
+ *   the point index counted over the whole batch).
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
+ *   written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `points` must be NULL or point to `n_curves * (degree + 1) * dim` readable doubles;
+ * `opts` NULL or readable; `out` NULL or `out_cap` writable doubles not overlapping
+ * `points`; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_curve_reduce_batch(const double *points,
+                                   size_t n_curves,
+                                   size_t degree,
+                                   size_t dim,
+                                   const struct CagdReduceOptions *opts,
+                                   double *out,
+                                   size_t out_cap,
+                                   size_t *out_needed);
+
+/**
+ * Fills `opts` with the defaults: `method = CAGD_METHOD_CONSTRAINED_CHEBYSHEV`,
+ * `target = 3`, `r = p = 0` (end points kept), `l1 = l2 = 0`, `measure = false`,
+ * `space = CAGD_SPACE_EUCLIDEAN`. Call it before setting fields, so that fields added in
+ * later versions get their defaults.
+ *
+ * Parameters:
+ * - `opts` (out): the struct to fill (caller-owned, e.g. on the stack).
+ *
+ * Returns:
+ * - `CAGD_OK`: `*opts` holds the defaults.
+ * - `CAGD_ERR_NULL_POINTER`: `opts` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `opts` is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `opts` must be NULL or point to a writable `CagdReduceOptions`.
+ */
+CagdStatus cagd_reduce_options_init(struct CagdReduceOptions *opts);
+
+/**
+ * Releases a report. NULL is accepted and ignored (freeing NULL twice is fine); a
+ * non-NULL handle must be released exactly once and not used afterwards.
+ *
+ * Parameters:
+ * - `report` (in, consumed): a `CagdReport **` output of `cagd_curve_reduce`, or NULL.
+ *
+ * Does not change `cagd_last_error_message()`.
+ *
+ * # Safety
+ * `report` must be NULL or a live handle created by cagd that is not used afterwards.
+ */
+void cagd_report_free(struct CagdReport *report);
+
+/**
+ * Reads the method and the degrees of a reduction.
+ *
+ * Parameters:
+ * - `report` (in): the report.
+ * - `method_out` (out): on `CAGD_OK`, the `CagdReduceMethod` code that was used.
+ * - `degree_from_out` (out): on `CAGD_OK`, the source degree `n`.
+ * - `degree_to_out` (out): on `CAGD_OK`, the target degree `m`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the three outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `report` must be NULL or a live report handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_report_method(const struct CagdReport *report,
+                              int32_t *method_out,
+                              size_t *degree_from_out,
+                              size_t *degree_to_out);
+
+/**
+ * Reads the certified upper bound of the reduction error `max_t |P(t) - Q(t)|` (in
+ * model units, in the space given by `cagd_report_space`; `f64` rounding included): the
+ * true error never exceeds it.
+ *
+ * Parameters:
+ * - `report` (in): the report.
+ * - `bound_out` (out): on `CAGD_OK`, the bound (finite, `>= 0`).
+ *
+ * Returns:
+ * - `CAGD_OK`: `*bound_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `report` or `bound_out` is NULL.
+ * - `CAGD_ERR_NOT_AVAILABLE`: no bound could be formed for this reduction.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `report` must be NULL or a live report handle; `bound_out` NULL or writable.
+ */
+CagdStatus cagd_report_bound(const struct CagdReport *report, double *bound_out);
+
+/**
+ * Reads the error measured by dense sampling (`max_t |P(t) - Q(t)|` at 4001 parameters
+ * plus local refinement, in the space given by `cagd_report_space`), available when the
+ * reduction ran with `opts->measure = true`. Never above the certified bound.
+ *
+ * Parameters:
+ * - `report` (in): the report.
+ * - `error_out` (out): on `CAGD_OK`, the measured error (`>= 0`).
+ *
+ * Returns:
+ * - `CAGD_OK`: `*error_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `report` or `error_out` is NULL.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the reduction ran with `measure = false`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `report` must be NULL or a live report handle; `error_out` NULL or writable.
+ */
+CagdStatus cagd_report_max_error(const struct CagdReport *report, double *error_out);
+
+/**
+ * Reads the space of the report's error numbers, and for a rational curve the certified
+ * bound in homogeneous space (from which the Euclidean one is derived).
+ *
+ * Parameters:
+ * - `report` (in): the report.
+ * - `space_out` (out): on `CAGD_OK`, the `CagdErrorSpace` code of `cagd_report_bound`
+ *   and `cagd_report_max_error`.
+ * - `homogeneous_bound_out` (out): on `CAGD_OK`, the homogeneous bound for a rational
+ *   input, or the Euclidean bound for a polynomial one (the two spaces coincide).
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
+ * - `CAGD_ERR_NOT_AVAILABLE`: no bound could be formed for this reduction.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `report` must be NULL or a live report handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_report_space(const struct CagdReport *report,
+                             int32_t *space_out,
+                             double *homogeneous_bound_out);
 
 /**
  * The name of a status code: `"CAGD_OK"`, `"CAGD_ERR_NULL_POINTER"`, ….

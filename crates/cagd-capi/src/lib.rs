@@ -48,6 +48,12 @@ mod curve_ops;
     reason = "C entry points (no_mangle) returning static strings"
 )]
 mod last_error;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod reduce;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod reduce_options;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod report;
 #[allow(
     unsafe_code,
     reason = "C entry points (no_mangle) returning static strings"
@@ -68,6 +74,14 @@ pub use curve_ops::{
     cagd_curve_subdivide,
 };
 pub use last_error::{cagd_last_error_message, last_error_string};
+pub use reduce::{cagd_curve_reduce, cagd_curve_reduce_batch};
+pub use reduce_options::{
+    CagdErrorSpace, CagdReduceMethod, CagdReduceOptions, cagd_reduce_options_init,
+};
+pub use report::{
+    CagdReport, cagd_report_bound, cagd_report_free, cagd_report_max_error, cagd_report_method,
+    cagd_report_space,
+};
 pub use status::{CagdStatus, cagd_status_name, status_of_core};
 pub use tensor_patch::{
     CagdTensorPatch, cagd_tensorpatch_free, cagd_tensorpatch_new, cagd_tensorpatch_points,

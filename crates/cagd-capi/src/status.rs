@@ -33,6 +33,9 @@ pub enum CagdStatus {
     ERR_INVALID_ARGUMENT = 3,
     /// Two sizes that must agree do not (e.g. a point count against the degree).
     ERR_DIMENSION_MISMATCH = 4,
+    /// A value that was not computed was asked for (e.g. the measured error of a
+    /// reduction run without `measure`).
+    ERR_NOT_AVAILABLE = 5,
     /// A coordinate or a knot is NaN or infinite.
     ERR_NON_FINITE = 20,
     /// A weight is zero, negative or not finite.
@@ -70,6 +73,7 @@ impl CagdStatus {
             CagdStatus::ERR_BUFFER_TOO_SMALL => c"CAGD_ERR_BUFFER_TOO_SMALL",
             CagdStatus::ERR_INVALID_ARGUMENT => c"CAGD_ERR_INVALID_ARGUMENT",
             CagdStatus::ERR_DIMENSION_MISMATCH => c"CAGD_ERR_DIMENSION_MISMATCH",
+            CagdStatus::ERR_NOT_AVAILABLE => c"CAGD_ERR_NOT_AVAILABLE",
             CagdStatus::ERR_NON_FINITE => c"CAGD_ERR_NON_FINITE",
             CagdStatus::ERR_NON_POSITIVE_WEIGHT => c"CAGD_ERR_NON_POSITIVE_WEIGHT",
             CagdStatus::ERR_BAD_KNOTS => c"CAGD_ERR_BAD_KNOTS",
@@ -92,12 +96,13 @@ impl CagdStatus {
 }
 
 /// Every status, in numeric order (used by tests and by `cagd_status_name`).
-pub(crate) const ALL_STATUSES: [CagdStatus; 17] = [
+pub(crate) const ALL_STATUSES: [CagdStatus; 18] = [
     CagdStatus::OK,
     CagdStatus::ERR_NULL_POINTER,
     CagdStatus::ERR_BUFFER_TOO_SMALL,
     CagdStatus::ERR_INVALID_ARGUMENT,
     CagdStatus::ERR_DIMENSION_MISMATCH,
+    CagdStatus::ERR_NOT_AVAILABLE,
     CagdStatus::ERR_NON_FINITE,
     CagdStatus::ERR_NON_POSITIVE_WEIGHT,
     CagdStatus::ERR_BAD_KNOTS,
@@ -165,12 +170,13 @@ mod tests {
 
     #[test]
     fn discriminants_are_pinned() {
-        let expected: [(CagdStatus, i32); 17] = [
+        let expected: [(CagdStatus, i32); 18] = [
             (CagdStatus::OK, 0),
             (CagdStatus::ERR_NULL_POINTER, 1),
             (CagdStatus::ERR_BUFFER_TOO_SMALL, 2),
             (CagdStatus::ERR_INVALID_ARGUMENT, 3),
             (CagdStatus::ERR_DIMENSION_MISMATCH, 4),
+            (CagdStatus::ERR_NOT_AVAILABLE, 5),
             (CagdStatus::ERR_NON_FINITE, 20),
             (CagdStatus::ERR_NON_POSITIVE_WEIGHT, 21),
             (CagdStatus::ERR_BAD_KNOTS, 22),
@@ -205,7 +211,7 @@ mod tests {
         for s in ALL_STATUSES {
             assert_eq!(name_of(s as i32), format!("CAGD_{s:?}"));
         }
-        for code in [-1, 5, 19, 43, 98, 100, i32::MIN, i32::MAX] {
+        for code in [-1, 6, 19, 43, 98, 100, i32::MIN, i32::MAX] {
             assert_eq!(name_of(code), "CAGD_ERR_UNKNOWN", "{code}");
         }
     }

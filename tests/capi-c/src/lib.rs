@@ -57,6 +57,16 @@ c_tests![
     tensorpatch_bad_input,
     tripatch_roundtrip,
     tripatch_bad_input,
+    // c/reduce.c
+    reduce_forrest_1,
+    reduce_ginv_n7_m3_free,
+    reduce_hermite_n7_m3,
+    reduce_batch,
+    reduce_rational_roundtrip,
+    // c/reduce_bad_input.c
+    reduce_bad_input,
+    report_accessors_bad_input,
+    reduce_batch_bad_input,
     // cpp/header_compiles.cpp
     cpp_header,
 ];
