@@ -1,0 +1,354 @@
+//! The panic boundary and the typed pointer helpers every entry point uses (STYLE §9.6,
+//! §9.8): the rustls-ffi `ffi_panic_boundary!` / `Castable` ideas reduced to what cagd needs.
+//!
+//! Every status-returning entry point is `boundary(|| { … })`: the closure checks its
+//! pointers with the helpers below (NULL → `CAGD_ERR_NULL_POINTER`, before any data is
+//! read), computes, and writes its outputs last, so outputs are written only on `CAGD_OK`.
+//! A panic is caught and becomes `CAGD_ERR_PANIC`; the thread-local message is set on every
+//! failure and cleared on success.
+
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
+use crate::last_error::{clear_last_error, set_last_error};
+use crate::status::{CagdStatus, status_of_core};
+
+/// A failure on its way to C: the status and the message for `cagd_last_error_message`.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Failure {
+    pub(crate) status: CagdStatus,
+    pub(crate) message: String,
+}
+
+impl Failure {
+    /// A failure with an explicit status.
+    pub(crate) fn new(status: CagdStatus, message: impl Into<String>) -> Self {
+        Self {
+            status,
+            message: message.into(),
+        }
+    }
+
+    /// `CAGD_ERR_NULL_POINTER` naming the argument.
+    pub(crate) fn null(name: &str) -> Self {
+        Self::new(
+            CagdStatus::ERR_NULL_POINTER,
+            format!("argument `{name}` is NULL"),
+        )
+    }
+
+    /// `CAGD_ERR_INVALID_ARGUMENT` with a message.
+    pub(crate) fn invalid(message: impl Into<String>) -> Self {
+        Self::new(CagdStatus::ERR_INVALID_ARGUMENT, message)
+    }
+}
+
+impl From<cagd_core::Error> for Failure {
+    fn from(e: cagd_core::Error) -> Self {
+        Self::new(status_of_core(&e), e.to_string())
+    }
+}
+
+/// Result type of the closures run by [`boundary`].
+pub(crate) type CResult<T> = Result<T, Failure>;
+
+/// Runs an entry point's body: catches panics (`CAGD_ERR_PANIC`), sets the thread-local
+/// message on failure and clears it on success.
+pub(crate) fn boundary(f: impl FnOnce() -> CResult<()>) -> CagdStatus {
+    match catch_unwind(AssertUnwindSafe(f)) {
+        Ok(Ok(())) => {
+            clear_last_error();
+            CagdStatus::OK
+        }
+        Ok(Err(failure)) => {
+            set_last_error(&failure.message);
+            failure.status
+        }
+        Err(payload) => {
+            let what = payload
+                .downcast_ref::<&str>()
+                .map(|s| (*s).to_owned())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "non-string panic payload".to_owned());
+            set_last_error(&format!(
+                "internal error in cagd (Rust panic: {what}); please report it"
+            ));
+            CagdStatus::ERR_PANIC
+        }
+    }
+}
+
+/// Runs a function that returns nothing (the `_free` functions): a panic is swallowed,
+/// because it must not unwind into C, and the message is left unchanged.
+pub(crate) fn boundary_void(f: impl FnOnce()) {
+    let _ignored = catch_unwind(AssertUnwindSafe(f));
+}
+
+/// Borrows a handle; NULL → `CAGD_ERR_NULL_POINTER` naming the argument.
+///
+/// # Safety
+/// `ptr` must be NULL or point to a live `T` that stays valid and unmodified for `'a`.
+pub(crate) unsafe fn handle_ref<'a, T>(ptr: *const T, name: &str) -> CResult<&'a T> {
+    if !ptr.is_aligned() {
+        return Err(Failure::invalid(format!(
+            "argument `{name}` is not a pointer cagd returned (misaligned)"
+        )));
+    }
+    // SAFETY: non-NULL and aligned checked; validity is the caller's contract.
+    unsafe { ptr.as_ref() }.ok_or_else(|| Failure::null(name))
+}
+
+/// `a * b` for a buffer length, or `CAGD_ERR_INVALID_ARGUMENT` when it overflows or the
+/// buffer of doubles could not exist.
+pub(crate) fn checked_len(a: usize, b: usize, what: &str) -> CResult<usize> {
+    a.checked_mul(b)
+        .filter(|n| *n <= isize::MAX as usize / size_of::<f64>())
+        .ok_or_else(|| Failure::invalid(format!("{what}: {a} * {b} doubles overflows")))
+}
+
+/// Borrows `len` doubles of caller input (copied by the caller of this helper if kept).
+/// NULL → `CAGD_ERR_NULL_POINTER` (also when `len == 0`).
+///
+/// # Safety
+/// `ptr` must be NULL or point to `len` readable, initialised doubles valid for `'a`.
+pub(crate) unsafe fn slice_in<'a>(ptr: *const f64, len: usize, name: &str) -> CResult<&'a [f64]> {
+    if ptr.is_null() {
+        return Err(Failure::null(name));
+    }
+    if !ptr.is_aligned() {
+        return Err(Failure::invalid(format!(
+            "argument `{name}` is not aligned for double"
+        )));
+    }
+    checked_len(len, 1, name)?;
+    // SAFETY: non-NULL, aligned, length fits isize; readability is the caller's contract.
+    Ok(unsafe { std::slice::from_raw_parts(ptr, len) })
+}
+
+/// Borrows a scalar or handle out-parameter; NULL → `CAGD_ERR_NULL_POINTER`. Write it only
+/// after everything that can fail has succeeded.
+///
+/// # Safety
+/// `ptr` must be NULL or point to a writable `T` valid for `'a`.
+pub(crate) unsafe fn out_ref<'a, T>(ptr: *mut T, name: &str) -> CResult<&'a mut T> {
+    if !ptr.is_aligned() {
+        return Err(Failure::invalid(format!(
+            "argument `{name}` is not aligned for its type"
+        )));
+    }
+    // SAFETY: aligned checked; NULL handled by as_mut; writability is the caller's contract.
+    unsafe { ptr.as_mut() }.ok_or_else(|| Failure::null(name))
+}
+
+/// Names of a buffer output's arguments, for messages.
+pub(crate) struct OutNames {
+    /// The buffer, e.g. `"out"`.
+    pub(crate) out: &'static str,
+    /// Its capacity, e.g. `"out_cap"`.
+    pub(crate) cap: &'static str,
+    /// The size output, e.g. `"out_needed"`.
+    pub(crate) needed: &'static str,
+}
+
+/// The usual names `out` / `out_cap` / `out_needed`.
+pub(crate) const OUT: OutNames = OutNames {
+    out: "out",
+    cap: "out_cap",
+    needed: "out_needed",
+};
+
+/// A checked caller buffer (`out`, `out_cap`, `out_needed`) not yet written.
+pub(crate) struct SliceOut<'a> {
+    out: *mut f64,
+    cap: usize,
+    needed_out: &'a mut usize,
+    names: &'a OutNames,
+}
+
+/// Checks a caller buffer's pointers up front (STYLE §9.7): `needed_out` NULL →
+/// `CAGD_ERR_NULL_POINTER`; `out` NULL with `cap > 0` → `CAGD_ERR_NULL_POINTER`; `out`
+/// misaligned → `CAGD_ERR_INVALID_ARGUMENT`. Nothing is written until [`SliceOut::take`].
+///
+/// # Safety
+/// `needed_out` must be NULL or writable; `out` must be NULL or point to `cap` writable
+/// doubles, both valid for `'a`.
+pub(crate) unsafe fn slice_out<'a>(
+    out: *mut f64,
+    cap: usize,
+    needed_out: *mut usize,
+    names: &'a OutNames,
+) -> CResult<SliceOut<'a>> {
+    // SAFETY: forwarded contract.
+    let needed_out = unsafe { out_ref(needed_out, names.needed) }?;
+    if out.is_null() && cap != 0 {
+        return Err(Failure::new(
+            CagdStatus::ERR_NULL_POINTER,
+            format!(
+                "argument `{}` is NULL but `{}` = {cap} (NULL is allowed only with capacity 0, \
+                 to query the size)",
+                names.out, names.cap
+            ),
+        ));
+    }
+    if !out.is_aligned() {
+        return Err(Failure::invalid(format!(
+            "argument `{}` is not aligned for double",
+            names.out
+        )));
+    }
+    Ok(SliceOut {
+        out,
+        cap,
+        needed_out,
+        names,
+    })
+}
+
+impl<'a> SliceOut<'a> {
+    /// Writes `needed` to `*out_needed` and returns the first `needed` doubles of the
+    /// buffer, or, when `cap < needed`, writes `needed` and fails with
+    /// `CAGD_ERR_BUFFER_TOO_SMALL` (so capacity 0 is a size query). Call it after every
+    /// check that can fail, and fill the returned slice completely.
+    pub(crate) fn take(self, needed: usize) -> CResult<&'a mut [f64]> {
+        *self.needed_out = needed;
+        if self.cap < needed {
+            return Err(Failure::new(
+                CagdStatus::ERR_BUFFER_TOO_SMALL,
+                format!(
+                    "`{}` = {} doubles is too small: {needed} needed (written to `{}`)",
+                    self.names.cap, self.cap, self.names.needed
+                ),
+            ));
+        }
+        if needed == 0 {
+            return Ok(&mut []);
+        }
+        // SAFETY: non-NULL (cap >= needed > 0) and aligned, checked in `slice_out`; `needed
+        // <= cap` writable doubles by the caller's contract; the length fits isize since
+        // the memory exists.
+        Ok(unsafe { std::slice::from_raw_parts_mut(self.out, needed) })
+    }
+
+    /// [`SliceOut::take`] of `data.len()` doubles, then copies `data` in.
+    pub(crate) fn copy_from(self, data: &[f64]) -> CResult<()> {
+        self.take(data.len())?.copy_from_slice(data);
+        Ok(())
+    }
+}
+
+/// Checks that a pointer argument is not NULL (used to reject every NULL before any other
+/// check, so that the status does not depend on argument order).
+pub(crate) fn nonnull<T>(ptr: *const T, name: &str) -> CResult<()> {
+    if ptr.is_null() {
+        Err(Failure::null(name))
+    } else {
+        Ok(())
+    }
+}
+
+/// Borrows a point buffer of `n_points × dim` doubles: `dim == 0` →
+/// `CAGD_ERR_INVALID_ARGUMENT` (as cagd-core's `ZeroDimension`), overflow →
+/// `CAGD_ERR_INVALID_ARGUMENT`, then [`slice_in`].
+///
+/// # Safety
+/// As [`slice_in`] with `len = n_points * dim`.
+pub(crate) unsafe fn points_in<'a>(
+    ptr: *const f64,
+    n_points: usize,
+    dim: usize,
+    name: &str,
+) -> CResult<&'a [f64]> {
+    nonnull(ptr, name)?;
+    if dim == 0 {
+        return Err(cagd_core::Error::ZeroDimension.into());
+    }
+    let len = checked_len(n_points, dim, "n_points * dim")?;
+    // SAFETY: forwarded contract.
+    unsafe { slice_in(ptr, len, name) }
+}
+
+/// Moves a value to the heap and returns the owning raw pointer (a handle); release it with
+/// [`free_handle`].
+pub(crate) fn into_handle<T>(value: T) -> *mut T {
+    Box::into_raw(Box::new(value))
+}
+
+/// Releases a handle made by [`into_handle`]; NULL is a no-op.
+///
+/// # Safety
+/// `ptr` must be NULL or a pointer returned by [`into_handle`] for the same `T`, not
+/// released before.
+pub(crate) unsafe fn free_handle<T>(ptr: *mut T) {
+    if !ptr.is_null() {
+        // SAFETY: by the contract, ptr came from Box::into_raw and is released once.
+        drop(unsafe { Box::from_raw(ptr) });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::last_error::last_error_string;
+
+    #[test]
+    fn panic_becomes_status_and_message() {
+        let s = boundary(|| panic!("boom {}", 42));
+        assert_eq!(s, CagdStatus::ERR_PANIC);
+        assert!(last_error_string().contains("boom 42"));
+        assert_eq!(boundary(|| Ok(())), CagdStatus::OK);
+        assert_eq!(last_error_string(), "");
+    }
+
+    #[test]
+    fn core_error_keeps_value_in_message() {
+        let s = boundary(|| {
+            Err(cagd_core::Error::NonPositiveWeight {
+                index: 3,
+                weight: -0.5,
+            }
+            .into())
+        });
+        assert_eq!(s, CagdStatus::ERR_NON_POSITIVE_WEIGHT);
+        assert_eq!(
+            last_error_string(),
+            "weights[3] = -0.5 must be finite and > 0"
+        );
+    }
+
+    /// `copy_from` through `slice_out`, as the entry points use it.
+    fn copy(data: &[f64], out: *mut f64, cap: usize, needed: *mut usize) -> CResult<()> {
+        // SAFETY: the tests pass pointers to locals of the stated sizes, or NULL.
+        unsafe { slice_out(out, cap, needed, &OUT) }?.copy_from(data)
+    }
+
+    #[test]
+    fn slice_out_size_query_and_short_buffer() {
+        let data = [1.0, 2.0, 3.0];
+        let mut needed = 0usize;
+        let r = copy(&data, std::ptr::null_mut(), 0, &mut needed);
+        assert_eq!(r.unwrap_err().status, CagdStatus::ERR_BUFFER_TOO_SMALL);
+        assert_eq!(needed, 3);
+        let mut buf = [9.0; 2];
+        needed = 0;
+        let r = copy(&data, buf.as_mut_ptr(), 2, &mut needed);
+        assert_eq!(r.unwrap_err().status, CagdStatus::ERR_BUFFER_TOO_SMALL);
+        assert_eq!((needed, buf), (3, [9.0, 9.0]));
+        let mut buf = [9.0; 4];
+        copy(&data, buf.as_mut_ptr(), 4, &mut needed).unwrap();
+        assert_eq!(buf, [1.0, 2.0, 3.0, 9.0]);
+        needed = 7;
+        let r = copy(&data, std::ptr::null_mut(), 4, &mut needed);
+        assert_eq!(r.unwrap_err().status, CagdStatus::ERR_NULL_POINTER);
+        assert_eq!(needed, 7, "nothing written on a NULL buffer");
+        let r = copy(&data, buf.as_mut_ptr(), 4, std::ptr::null_mut());
+        assert_eq!(r.unwrap_err().status, CagdStatus::ERR_NULL_POINTER);
+    }
+
+    #[test]
+    fn overflowing_length_is_invalid() {
+        assert_eq!(
+            checked_len(usize::MAX, 2, "points").unwrap_err().status,
+            CagdStatus::ERR_INVALID_ARGUMENT
+        );
+        assert_eq!(checked_len(4, 3, "points"), Ok(12));
+    }
+}

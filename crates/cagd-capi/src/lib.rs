@@ -1,0 +1,93 @@
+//! # cagd-capi
+//!
+//! The C ABI of cagd (DESIGN.md, "C ABI conventions"; STYLE §9.4–9.10). The header
+//! `include/cagd.h` is generated from this crate by cbindgen, committed, and checked fresh by
+//! the test `header_is_fresh` (`CAGD_BLESS=1 cargo test -p cagd-capi --test header`
+//! rewrites it).
+//!
+//! Conventions, in short:
+//! - functions are `cagd_<noun>_<verb>`, return a `CagdStatus` (`CAGD_OK = 0`) and write
+//!   results through out-pointers, which are written only on `CAGD_OK` (except
+//!   `*out_needed`, also written on `CAGD_ERR_BUFFER_TOO_SMALL`);
+//! - objects are opaque, immutable handles made by `cagd_<noun>_new*` or by an algorithm,
+//!   released by the NULL-safe `cagd_<noun>_free`;
+//! - arrays are flat row-major doubles (`points[i * dim + k]`); inputs are borrowed and
+//!   copied; outputs go to caller buffers with a capacity, and capacity 0 asks the size;
+//! - a NULL pointer gives `CAGD_ERR_NULL_POINTER`, a panic `CAGD_ERR_PANIC`, never a crash;
+//!   `cagd_last_error_message()` tells what was wrong, with the value.
+//!
+//! ```
+//! # #![allow(unsafe_code, reason = "the example calls the C ABI")]
+//! use cagd_capi::*;
+//! let pts = [0.0, 0.0, 1.0, 2.0, 2.0, 0.0];
+//! let mut curve = std::ptr::null_mut();
+//! let (mut p, mut needed) = ([0.0; 2], 0);
+//! // SAFETY: valid pointers of the documented sizes; the handle is freed once.
+//! unsafe {
+//!     assert_eq!(cagd_curve_new(pts.as_ptr(), 3, 2, &mut curve), CagdStatus::OK);
+//!     assert_eq!(cagd_curve_eval(curve, 0.5, p.as_mut_ptr(), 2, &mut needed), CagdStatus::OK);
+//!     cagd_curve_free(curve);
+//! }
+//! assert_eq!((p, needed), ([1.0, 1.0], 2));
+//! ```
+//!
+//! ## Supported range and accuracy
+//!
+//! That of cagd-core (degrees `0..=64`, any `dim >= 1`); the C layer adds no numerics, it
+//! only copies. Every entry point runs inside a panic boundary; the release profile keeps
+//! `panic = "unwind"` so that the boundary works.
+
+#[allow(unsafe_code, reason = "raw-pointer helpers of the C boundary")]
+mod boundary;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod curve;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod curve_ops;
+#[allow(
+    unsafe_code,
+    reason = "C entry points (no_mangle) returning static strings"
+)]
+mod last_error;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod reduce;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod reduce_options;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod report;
+#[allow(
+    unsafe_code,
+    reason = "C entry points (no_mangle) returning static strings"
+)]
+mod status;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod tensor_patch;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod tri_patch;
+mod version;
+
+pub use curve::{
+    CagdCurve, cagd_curve_degree, cagd_curve_dim, cagd_curve_free, cagd_curve_is_rational,
+    cagd_curve_new, cagd_curve_new_rational, cagd_curve_points, cagd_curve_weights,
+};
+pub use curve_ops::{
+    cagd_curve_elevate, cagd_curve_eval, cagd_curve_eval_many, cagd_curve_segment,
+    cagd_curve_subdivide,
+};
+pub use last_error::{cagd_last_error_message, last_error_string};
+pub use reduce::{cagd_curve_reduce, cagd_curve_reduce_batch};
+pub use reduce_options::{
+    CagdErrorSpace, CagdReduceMethod, CagdReduceOptions, cagd_reduce_options_init,
+};
+pub use report::{
+    CagdReport, cagd_report_bound, cagd_report_free, cagd_report_max_error, cagd_report_method,
+    cagd_report_space,
+};
+pub use status::{CagdStatus, cagd_status_name, status_of_core};
+pub use tensor_patch::{
+    CagdTensorPatch, cagd_tensorpatch_free, cagd_tensorpatch_new, cagd_tensorpatch_points,
+    cagd_tensorpatch_shape,
+};
+pub use tri_patch::{
+    CagdTriPatch, cagd_tripatch_free, cagd_tripatch_new, cagd_tripatch_points, cagd_tripatch_shape,
+};
+pub use version::{CAGD_VERSION_MAJOR, CAGD_VERSION_MINOR, CAGD_VERSION_PATCH};

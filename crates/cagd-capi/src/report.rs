@@ -1,0 +1,204 @@
+//! `CagdReport`: what a reduction did and how far the result is from the input.
+
+use cagd_reduce::{ErrorSpace, Report};
+
+use crate::boundary::{
+    CResult, Failure, boundary, boundary_void, free_handle, handle_ref, out_ref,
+};
+use crate::reduce_options::CagdErrorSpace;
+use crate::status::CagdStatus;
+
+/// Opaque handle to the report of a reduction: the method, the degrees, the certified
+/// error bound, and (on request) the measured error. Immutable; release with
+/// `cagd_report_free`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CagdReport {
+    pub(crate) report: Report,
+    /// The `CagdReduceMethod` code that was asked for.
+    pub(crate) method: i32,
+}
+
+impl CagdReport {
+    /// The report behind the handle (for Rust callers of this crate).
+    pub fn as_report(&self) -> &Report {
+        &self.report
+    }
+}
+
+/// `CAGD_ERR_NOT_AVAILABLE` for an absent value.
+fn available(value: Option<f64>, what: &str) -> CResult<f64> {
+    value.ok_or_else(|| Failure::new(CagdStatus::ERR_NOT_AVAILABLE, what.to_owned()))
+}
+
+/// Releases a report. NULL is accepted and ignored (freeing NULL twice is fine); a
+/// non-NULL handle must be released exactly once and not used afterwards.
+///
+/// Parameters:
+/// - `report` (in, consumed): a `CagdReport **` output of `cagd_curve_reduce`, or NULL.
+///
+/// Does not change `cagd_last_error_message()`.
+///
+/// # Safety
+/// `report` must be NULL or a live handle created by cagd that is not used afterwards.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cagd_report_free(report: *mut CagdReport) {
+    // SAFETY: the caller's contract (see # Safety).
+    boundary_void(|| unsafe { free_handle(report) });
+}
+
+/// Reads the method and the degrees of a reduction.
+///
+/// Parameters:
+/// - `report` (in): the report.
+/// - `method_out` (out): on `CAGD_OK`, the `CagdReduceMethod` code that was used.
+/// - `degree_from_out` (out): on `CAGD_OK`, the source degree `n`.
+/// - `degree_to_out` (out): on `CAGD_OK`, the target degree `m`.
+///
+/// Returns:
+/// - `CAGD_OK`: the three outputs are written.
+/// - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
+/// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+/// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+///
+/// # Safety
+/// `report` must be NULL or a live report handle; the outputs NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cagd_report_method(
+    report: *const CagdReport,
+    method_out: *mut i32,
+    degree_from_out: *mut usize,
+    degree_to_out: *mut usize,
+) -> CagdStatus {
+    boundary(|| {
+        // SAFETY: the caller's contract (see # Safety).
+        let r = unsafe { handle_ref(report, "report") }?;
+        // SAFETY: as above.
+        let (m, from, to) = unsafe {
+            (
+                out_ref(method_out, "method_out")?,
+                out_ref(degree_from_out, "degree_from_out")?,
+                out_ref(degree_to_out, "degree_to_out")?,
+            )
+        };
+        (*m, *from, *to) = (r.method, r.report.degree_from, r.report.degree_to);
+        Ok(())
+    })
+}
+
+/// Reads the certified upper bound of the reduction error `max_t |P(t) - Q(t)|` (in
+/// model units, in the space given by `cagd_report_space`; `f64` rounding included): the
+/// true error never exceeds it.
+///
+/// Parameters:
+/// - `report` (in): the report.
+/// - `bound_out` (out): on `CAGD_OK`, the bound (finite, `>= 0`).
+///
+/// Returns:
+/// - `CAGD_OK`: `*bound_out` is written.
+/// - `CAGD_ERR_NULL_POINTER`: `report` or `bound_out` is NULL.
+/// - `CAGD_ERR_NOT_AVAILABLE`: no bound could be formed for this reduction.
+/// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+/// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+///
+/// # Safety
+/// `report` must be NULL or a live report handle; `bound_out` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cagd_report_bound(
+    report: *const CagdReport,
+    bound_out: *mut f64,
+) -> CagdStatus {
+    boundary(|| {
+        // SAFETY: the caller's contract (see # Safety).
+        let r = unsafe { handle_ref(report, "report") }?;
+        // SAFETY: as above.
+        let out = unsafe { out_ref(bound_out, "bound_out") }?;
+        *out = available(
+            r.report.error_bound,
+            "no certified bound for this reduction",
+        )?;
+        Ok(())
+    })
+}
+
+/// Reads the error measured by dense sampling (`max_t |P(t) - Q(t)|` at 4001 parameters
+/// plus local refinement, in the space given by `cagd_report_space`), available when the
+/// reduction ran with `opts->measure = true`. Never above the certified bound.
+///
+/// Parameters:
+/// - `report` (in): the report.
+/// - `error_out` (out): on `CAGD_OK`, the measured error (`>= 0`).
+///
+/// Returns:
+/// - `CAGD_OK`: `*error_out` is written.
+/// - `CAGD_ERR_NULL_POINTER`: `report` or `error_out` is NULL.
+/// - `CAGD_ERR_NOT_AVAILABLE`: the reduction ran with `measure = false`.
+/// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+/// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+///
+/// # Safety
+/// `report` must be NULL or a live report handle; `error_out` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cagd_report_max_error(
+    report: *const CagdReport,
+    error_out: *mut f64,
+) -> CagdStatus {
+    boundary(|| {
+        // SAFETY: the caller's contract (see # Safety).
+        let r = unsafe { handle_ref(report, "report") }?;
+        // SAFETY: as above.
+        let out = unsafe { out_ref(error_out, "error_out") }?;
+        *out = available(
+            r.report.max_error,
+            "the error was not measured: set CagdReduceOptions.measure = true",
+        )?;
+        Ok(())
+    })
+}
+
+/// Reads the space of the report's error numbers, and for a rational curve the certified
+/// bound in homogeneous space (from which the Euclidean one is derived).
+///
+/// Parameters:
+/// - `report` (in): the report.
+/// - `space_out` (out): on `CAGD_OK`, the `CagdErrorSpace` code of `cagd_report_bound`
+///   and `cagd_report_max_error`.
+/// - `homogeneous_bound_out` (out): on `CAGD_OK`, the homogeneous bound for a rational
+///   input, or the Euclidean bound for a polynomial one (the two spaces coincide).
+///
+/// Returns:
+/// - `CAGD_OK`: both outputs are written.
+/// - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
+/// - `CAGD_ERR_NOT_AVAILABLE`: no bound could be formed for this reduction.
+/// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+/// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+///
+/// # Safety
+/// `report` must be NULL or a live report handle; the outputs NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cagd_report_space(
+    report: *const CagdReport,
+    space_out: *mut i32,
+    homogeneous_bound_out: *mut f64,
+) -> CagdStatus {
+    boundary(|| {
+        // SAFETY: the caller's contract (see # Safety).
+        let r = unsafe { handle_ref(report, "report") }?;
+        // SAFETY: as above.
+        let (s, h) = unsafe {
+            (
+                out_ref(space_out, "space_out")?,
+                out_ref(homogeneous_bound_out, "homogeneous_bound_out")?,
+            )
+        };
+        let hb = available(
+            r.report.homogeneous_bound.or(r.report.error_bound),
+            "no certified bound for this reduction",
+        )?;
+        let space = match r.report.space {
+            ErrorSpace::Homogeneous => CagdErrorSpace::SPACE_HOMOGENEOUS,
+            ErrorSpace::Euclidean => CagdErrorSpace::SPACE_EUCLIDEAN,
+        };
+        (*s, *h) = (space as i32, hb);
+        Ok(())
+    })
+}

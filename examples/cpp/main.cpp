@@ -1,0 +1,73 @@
+// Example: a kernel that only accepts cubics receives a degree-7 curve and reduces it,
+// keeping position and tangent at both ends (so joints stay C1), with a certified bound.
+// Exits 0 when every check holds. Built and run by .ci/capi-checks.sh against
+// target/release/libcagd_capi.a.
+#include <cmath>
+#include <cstdio>
+
+#include "cagd.hpp"
+
+int main() {
+    try {
+        // The degree-7 curve of the spec vector hermite-n7-m3.
+        const std::vector<double> p7 = {0, 0, 1, 3, 3, 4, 5, 1, 6, 5, 8, 2, 9, 6, 11, 0};
+        const cagd::Curve input = cagd::Curve::polynomial(p7, 2);
+
+        CagdReduceOptions opts = cagd::default_options();
+        opts.method = CAGD_METHOD_CONSTRAINED_CHEBYSHEV;
+        opts.target = 3;
+        opts.r = 1;  // keep position and first derivative at t = 0
+        opts.p = 1;  // and at t = 1
+        opts.measure = true;
+        auto [cubic, report] = input.reduce(opts);
+
+        const std::vector<double> q = cubic.points();
+        std::printf("reduced degree %zu -> %zu:", input.degree(), cubic.degree());
+        for (std::size_t i = 0; i < q.size(); i += 2) std::printf(" (%g, %g)", q[i], q[i + 1]);
+        double measured = 0.0;
+        const bool have = report.max_error(measured);
+        std::printf("\ncertified bound %.6g, measured error %.6g\n", report.bound(), measured);
+
+        // hermite-n7-m3: Q = (0,0) (7/3,7) (19/3,14) (11,0); spec tolerance 1e-12 * 14.
+        const double expected[8] = {0, 0, 7.0 / 3, 7, 19.0 / 3, 14, 11, 0};
+        for (std::size_t k = 0; k < 8; ++k) {
+            if (std::fabs(q[k] - expected[k]) > 1e-12 * 14) {
+                std::fprintf(stderr, "Q[%zu] = %.17g, expected %.17g\n", k, q[k], expected[k]);
+                return 1;
+            }
+        }
+        if (!have || measured > report.bound()) {
+            std::fprintf(stderr, "measured error above the certified bound\n");
+            return 1;
+        }
+
+        // A rational curve survives elevation and reduction back.
+        const double s = std::sqrt(0.5);
+        const cagd::Curve arc = cagd::Curve::rational({1, 0, 1, 1, 0, 1}, {1, s, 1}, 2);
+        CagdReduceOptions back = cagd::default_options();
+        back.target = 2;
+        auto [arc2, arc_report] = arc.elevate(4).reduce(back);
+        const std::vector<double> m = arc2.eval(0.5);
+        if (std::fabs(std::hypot(m[0], m[1]) - 1.0) > 1e-13) {
+            std::fprintf(stderr, "arc left the unit circle\n");
+            return 1;
+        }
+
+        // Errors arrive as exceptions with the status and the message.
+        try {
+            opts.target = 7;
+            (void)input.reduce(opts);
+            std::fprintf(stderr, "reducing to the same degree did not fail\n");
+            return 1;
+        } catch (const cagd::Error &e) {
+            if (e.status() != CAGD_ERR_BAD_DEGREE_PAIR) throw;
+            std::printf("expected failure: %s\n", e.what());
+        }
+        std::printf("ok (cagd %d.%d.%d)\n", CAGD_VERSION_MAJOR, CAGD_VERSION_MINOR,
+                    CAGD_VERSION_PATCH);
+        return 0;
+    } catch (const std::exception &e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return 1;
+    }
+}

@@ -1,0 +1,53 @@
+//! Compiles the C tests (`c/*.c`, C11, warnings as errors) and one C++17 translation unit
+//! (`cpp/*.cpp`) against the committed `include/cagd.h` (STYLE §9.10). The header is not
+//! generated here: a build script cannot rely on another crate's build output, and the
+//! header's freshness is checked by cagd-capi's `header_is_fresh` test.
+
+use std::path::{Path, PathBuf};
+
+fn sources(dir: &Path, ext: &str) -> Vec<PathBuf> {
+    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
+        .unwrap_or_else(|e| panic!("cannot read {}: {e}", dir.display()))
+        .map(|entry| entry.expect("directory entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == ext))
+        .collect();
+    files.sort();
+    files
+}
+
+fn main() {
+    let here = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").expect("set by cargo"));
+    let include = here.join("../../include");
+    println!("cargo:rerun-if-changed=c");
+    println!("cargo:rerun-if-changed=cpp");
+    println!(
+        "cargo:rerun-if-changed={}",
+        include.join("cagd.h").display()
+    );
+
+    let c_files = sources(&here.join("c"), "c");
+    for f in sources(&here.join("c"), "h").iter().chain(&c_files) {
+        println!("cargo:rerun-if-changed={}", f.display());
+    }
+    cc::Build::new()
+        .files(&c_files)
+        .include(&include)
+        .std("c11")
+        .flag("-Wall")
+        .flag("-Wextra")
+        .flag("-Wpedantic")
+        .flag("-Werror")
+        .compile("cagd_ctests");
+
+    let cpp_files = sources(&here.join("cpp"), "cpp");
+    cc::Build::new()
+        .cpp(true)
+        .files(&cpp_files)
+        .include(&include)
+        .std("c++17")
+        .flag("-Wall")
+        .flag("-Wextra")
+        .flag("-Wpedantic")
+        .flag("-Werror")
+        .compile("cagd_cpptests");
+}

@@ -1,0 +1,118 @@
+//! The C and C++ tests of the cagd C ABI (STYLE §9.10). `build.rs` compiles `c/*.c` (C11)
+//! and `cpp/*.cpp` (C++17) against `include/cagd.h`; each `int cagd_ctest_<name>(void)`
+//! becomes the Rust test `<name>` here, which passes when the C function returns 0 (on
+//! failure the C code prints the expression, the status and the message to stderr).
+//! `every_c_test_is_wired` fails when a C test function is not listed below.
+
+// Without a use of the library, the linker drops it and the C objects' `cagd_*`
+// references are undefined (checked: rust-lld reports each of them).
+use cagd_capi as _;
+
+/// Declares each C test and the Rust test that runs it, and the list of wired names.
+macro_rules! c_tests {
+    ($($name:ident),* $(,)?) => {
+        /// Names of the wired C tests (without the `cagd_ctest_` prefix).
+        #[cfg(test)]
+        const WIRED: &[&str] = &[$(stringify!($name)),*];
+
+        #[cfg(test)]
+        #[allow(unsafe_code, reason = "calls the C test functions")]
+        mod c {
+            $(
+                #[test]
+                fn $name() {
+                    unsafe extern "C" {
+                        #[link_name = concat!("cagd_ctest_", stringify!($name))]
+                        fn run() -> i32;
+                    }
+                    // SAFETY: the C test takes no arguments, uses only its own memory and
+                    // the cagd C ABI, and returns an int.
+                    let rc = unsafe { run() };
+                    assert_eq!(
+                        rc, 0,
+                        "C test cagd_ctest_{} failed; see its stderr above",
+                        stringify!($name)
+                    );
+                }
+            )*
+        }
+    };
+}
+
+c_tests![
+    // c/status.c
+    status_names,
+    last_error_message,
+    // c/curve.c
+    curve_roundtrip,
+    curve_eval_many,
+    curve_rational_circle,
+    curve_elevate_subdivide_segment,
+    // c/curve_bad_input.c
+    curve_new_bad_input,
+    curve_accessors_bad_input,
+    curve_ops_bad_input,
+    // c/patch.c
+    tensorpatch_roundtrip,
+    tensorpatch_bad_input,
+    tripatch_roundtrip,
+    tripatch_bad_input,
+    // c/reduce.c
+    reduce_forrest_1,
+    reduce_ginv_n7_m3_free,
+    reduce_hermite_n7_m3,
+    reduce_batch,
+    reduce_rational_roundtrip,
+    // c/reduce_bad_input.c
+    reduce_bad_input,
+    report_accessors_bad_input,
+    reduce_batch_bad_input,
+    // cpp/header_compiles.cpp
+    cpp_header,
+];
+
+#[cfg(test)]
+mod wiring {
+    use std::path::PathBuf;
+
+    /// The `cagd_ctest_<name>` functions defined in the C and C++ sources.
+    fn defined() -> Vec<String> {
+        let here = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+        let mut names = Vec::new();
+        for (dir, ext) in [("c", "c"), ("cpp", "cpp")] {
+            for entry in std::fs::read_dir(here.join(dir)).expect("source dir") {
+                let path = entry.expect("entry").path();
+                if path.extension().is_none_or(|e| e != ext) {
+                    continue;
+                }
+                let text = std::fs::read_to_string(&path).expect("source file");
+                for line in text.lines() {
+                    // `int cagd_ctest_x(void) {`, optionally after `extern "C" ` in C++.
+                    let Some((_, rest)) = line.split_once("int cagd_ctest_") else {
+                        continue;
+                    };
+                    if let Some(name) = rest.strip_suffix("(void) {") {
+                        names.push(name.to_owned());
+                    }
+                }
+            }
+        }
+        names.sort();
+        names
+    }
+
+    #[test]
+    fn every_c_test_is_wired() {
+        let defined = defined();
+        assert!(
+            defined.len() >= 10,
+            "found only {defined:?}; parser broken?"
+        );
+        let mut wired: Vec<String> = super::WIRED.iter().map(|s| (*s).to_owned()).collect();
+        wired.sort();
+        assert_eq!(
+            defined, wired,
+            "C tests defined (left) vs wired in src/lib.rs (right)"
+        );
+    }
+}
