@@ -65,7 +65,8 @@ pub struct PiecewiseReduction {
     pub report: PiecewiseReport,
 }
 
-/// Share of the tolerance given to the pieces; the rest (`1/64`) absorbs the merge.
+/// Share of the tolerance given to the pieces; the rest (at least `1/64`) absorbs the
+/// merge.
 pub(crate) const PIECE_SHARE: f64 = 63.0 / 64.0;
 
 /// Merges `pieces` into a `C^k` spline and certifies it: the returned bound is
@@ -73,7 +74,6 @@ pub(crate) const PIECE_SHARE: f64 = 63.0 / 64.0;
 /// segment on its interval (control-point distance, a convex-hull bound, plus an allowance
 /// for the rounding of the extraction).
 pub(crate) fn assemble(
-    original: &BezierCurve,
     pieces: Vec<ReducedPiece>,
     k: usize,
     tolerance: f64,
@@ -81,14 +81,26 @@ pub(crate) fn assemble(
     let curves: Vec<BezierCurve> = pieces.iter().map(|p| p.curve.clone()).collect();
     let mut breaks: Vec<f64> = pieces.iter().map(|p| p.start).collect();
     breaks.push(pieces.last().map_or(1.0, |p| p.end));
-    // The merge may move the curve by up to 1.5 merge_tol (C0 averaging + knot removal);
-    // for rational curves that is in homogeneous space, scaled to model units below.
-    let scale = original.weights().map_or(1.0, |w| {
-        let wmin = w.iter().copied().fold(f64::INFINITY, f64::min);
-        (1.0 + max_norm(original.points(), original.dim())) / wmin
-    });
-    let merge_tol = (1.0 - PIECE_SHARE) / 2.0 * tolerance / scale.max(1.0);
-    let spline = BSplineCurve::from_beziers(&curves, &breaks, k, merge_tol)?;
+    // What the merge may move: the slack left by the pieces (at least delta / 64). Each
+    // interior knot is removed `k` times with that budget (a C^k check, not a sum over the
+    // knots as in `from_beziers`): what the merge really moved is measured below, piece by
+    // piece, and added to the piece's bound.
+    let pieces_bound = pieces.iter().map(|p| p.error_bound).fold(0.0, f64::max);
+    let slack = (tolerance - pieces_bound).max((1.0 - PIECE_SHARE) * tolerance);
+    let mut spline = BSplineCurve::from_beziers(&curves, &breaks, 0, slack)?;
+    if k > 0 {
+        for &b in &breaks[1..breaks.len() - 1] {
+            let r = spline.remove_knot(b, k, slack)?;
+            if r.removed != k {
+                return Err(Error::ConditionNotMet {
+                    eq: "001 §4.1",
+                    why: "the reduced pieces do not join C^k within the tolerance (rounding \
+                          of the joins above the tolerance)",
+                });
+            }
+            spline = r.curve;
+        }
+    }
     let segments = spline.to_beziers()?;
     if segments.len() != pieces.len() {
         return Err(Error::LengthMismatch {
