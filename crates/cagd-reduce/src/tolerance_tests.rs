@@ -349,3 +349,35 @@ fn errors() {
     ));
     assert!(alg(Method::Perturb, 0).is_ok());
 }
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+
+    /// Law: for any curve, method with C^k ends and tolerance, the sampled error of the
+    /// spline is below its certified bound, the bound below the tolerance, and the joins
+    /// are C^k (coordinates in [-10, 10]; the tolerance is relative to that size).
+    #[test]
+    fn law_bound_meets_tolerance(
+        pts in cagd_testkit::points(9, 2),
+        w in cagd_testkit::weights(9),
+        rational in proptest::bool::ANY,
+        e in 2i32..9,
+        case in 0usize..4,
+    ) {
+        let curve = if rational {
+            BezierCurve::new_rational(pts, w, 2).unwrap()
+        } else {
+            BezierCurve::new(pts, 2).unwrap()
+        };
+        let (method, m, k) = [
+            (Method::Perturb, 4, 0),
+            (Method::L2 { r: 1, p: 1 }, 4, 1),
+            (Method::ConstrainedChebyshev { r: 1, p: 1 }, 3, 1),
+            (Method::ConstrainedChebyshev { r: 2, p: 2 }, 5, 2),
+        ][case];
+        let tol = 10f64.powi(1 - e);
+        let opts = ToleranceOptions { measure: true, ..ToleranceOptions::new(method, m, tol, k) };
+        let red = reduce_to_tolerance(&curve, &opts).unwrap();
+        check_result(&red, &format!("{} k={k} tol={tol:e}", method.name()));
+    }
+}
