@@ -77,7 +77,7 @@ fn perturbation_error(k: usize, norm_f: f64) -> f64 {
 /// ([`ReducedPiece::error_bound`], `<=` the total), from which
 /// [`crate::PiecewiseReport::error_bound`] is formed. The joins are C0 (exactly: the
 /// perturbation keeps the end points). Reproduces the vector `subdiv-reduce-9to4-0.01`
-/// (intervals exactly, points to `1e-12`).
+/// (intervals exactly, points and certified total within the vector's `1e-9`).
 ///
 /// `opts.method` must be [`Method::Perturb`] and `opts.continuity` must be `0`;
 /// `opts.measure` and `opts.max_depth` (total depth over all steps) apply.
