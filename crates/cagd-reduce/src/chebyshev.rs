@@ -1,0 +1,163 @@
+//! Chebyshev-based reductions in exact rationals: Bernstein <-> Chebyshev conversion,
+//! Watkins–Worsey truncation, and the constrained Chebyshev reduction of seed 000 §14.5
+//! (Theorem 14.5.2 and Corollary 14.5.2 with the SPEC-reduce §7 corrections).
+//!
+//! Bernstein -> Chebyshev goes through three exact triangular closed forms (Bernstein ->
+//! power in `t`, `t = (x+1)/2`, `x^s = 2^(1-s) sum_j C(s,j) T_{s-2j}`), so no matrix is
+//! inverted; Chebyshev -> Bernstein is the closed form of Lemma 14.5.3.
+
+use num_traits::{One, Zero};
+
+use crate::ends::{auxiliary, end_points};
+use crate::exact::{Q, RatMat, Row, binom_q, idx, pow2, to_i};
+use crate::one_step::up;
+
+/// `(N+1) x (N+1)` matrix: row `k` gives the Chebyshev coefficient of `T_k(2t-1)` of the
+/// degree-`N` Bézier polynomial with the given Bernstein coefficients.
+pub(crate) fn bernstein_to_chebyshev(nn: usize) -> RatMat {
+    let ni = to_i(nn);
+    // Power basis in t: a_l = C(N,l) sum_i (-1)^(l-i) C(l,i) P_i.
+    let mut pow_t = RatMat::zeros(nn + 1, nn + 1);
+    for l in 0..=ni {
+        for i in 0..=l {
+            let s = binom_q(ni, l) * binom_q(l, i);
+            *pow_t.at_mut(idx(l), idx(i)) = if (l - i) % 2 == 0 { s } else { -s };
+        }
+    }
+    // t^l = 2^-l sum_s C(l,s) x^s.
+    let mut pow_x = RatMat::zeros(nn + 1, nn + 1);
+    for l in 0..=ni {
+        for s in 0..=l {
+            *pow_x.at_mut(idx(s), idx(l)) = binom_q(l, s) * pow2(-l);
+        }
+    }
+    // x^s = 2^(1-s) sum_{j < s/2} C(s,j) T_{s-2j} + [s even] 2^-s C(s,s/2) T_0.
+    let mut cheb = RatMat::zeros(nn + 1, nn + 1);
+    for s in 0..=ni {
+        if s == 0 {
+            *cheb.at_mut(0, 0) = Q::one();
+            continue;
+        }
+        for j in 0..=s / 2 {
+            let c = if 2 * j == s {
+                binom_q(s, j) * pow2(-s)
+            } else {
+                binom_q(s, j) * pow2(1 - s)
+            };
+            *cheb.at_mut(idx(s - 2 * j), idx(s)) += c;
+        }
+    }
+    cheb.mul(&pow_x).mul(&pow_t)
+}
+
+/// `(M+1) x (M+1)` matrix mapping Chebyshev coefficients to degree-`M` Bernstein
+/// coefficients: entry `(j, k)` is `A_kj = sum_i (-1)^(k+i) C(2k,2i) C(M-k,j-i) / C(M,j)`
+/// (Lemma 14.5.3 as corrected in SPEC-reduce §7).
+pub(crate) fn chebyshev_to_bernstein(mm: usize) -> RatMat {
+    let mi = to_i(mm);
+    let mut a = RatMat::zeros(mm + 1, mm + 1);
+    for k in 0..=mi {
+        for j in 0..=mi {
+            let mut acc = Q::zero();
+            for i in (j + k - mi).max(0)..=j.min(k) {
+                let v = binom_q(2 * k, 2 * i) * binom_q(mi - k, j - i);
+                if (k + i) % 2 == 0 {
+                    acc += v;
+                } else {
+                    acc -= v;
+                }
+            }
+            *a.at_mut(idx(j), idx(k)) = acc / binom_q(mi, j);
+        }
+    }
+    a
+}
+
+/// Watkins–Worsey: Chebyshev coefficients of the degree-`n` input, keep `k = 0..=m`,
+/// back to degree-`m` Bernstein. Bound terms `||c_k||`, `k > m` (`|T_k| <= 1`).
+pub(crate) fn truncation(n: usize, m: usize) -> (RatMat, Vec<(f64, Row)>) {
+    let b2c = bernstein_to_chebyshev(n);
+    let c2b = chebyshev_to_bernstein(m);
+    let kept = RatMat::from_rows((0..=m).map(|k| b2c.row(k).to_vec()).collect());
+    let terms = (m + 1..=n).map(|k| (1.0, b2c.row(k).to_vec())).collect();
+    (c2b.mul(&kept), terms)
+}
+
+/// `x^x` for a small non-negative integer (`0^0 = 1`), exact.
+fn self_pow(x: i64) -> Q {
+    let mut acc = Q::one();
+    for _ in 0..x {
+        acc *= Q::from_integer(x.into());
+    }
+    acc
+}
+
+/// Seed 000 §14.5, Theorem 14.5.2 (`r + p + 1 < m`) or Corollary 14.5.2 (`m = r + p + 1`):
+/// the exact `(m+1) x (n+1)` operator and its bound terms
+/// `(p+1)^(p+1) (r+1)^(r+1) / (p+r+2)^(p+r+2) * ||P^III_k||`, `k = M+1..=N`.
+pub(crate) fn constrained(n: usize, m: usize, r: i32, p: i32) -> (RatMat, Vec<(f64, Row)>) {
+    let (left, right) = end_points(n, m, r, p);
+    let (ni, mi, ri, pi) = (to_i(n), to_i(m), i64::from(r), i64::from(p));
+    let mut rows: Vec<Row> = left.clone();
+    let mut terms = Vec::new();
+    if ri + pi + 1 < mi {
+        let aux = auxiliary(n, m, r, p, &left, &right);
+        let big_n = ni - (ri + pi + 2);
+        let big_m = mi - (ri + pi + 2);
+        // P^II_i = P^I_{r+1+i} C(n, r+1+i) / C(N, i)   (14.5.14)
+        let p2 = RatMat::from_rows(
+            (0..=big_n)
+                .map(|i| {
+                    let f = binom_q(ni, ri + 1 + i) / binom_q(big_n, i);
+                    aux[idx(i)].iter().map(|x| x * &f).collect()
+                })
+                .collect(),
+        );
+        let b2c = bernstein_to_chebyshev(idx(big_n));
+        // P^III = (B->Cheb) P^II   (14.5.15)
+        let p3 = b2c.mul(&p2);
+        let kept = RatMat::from_rows((0..=big_m).map(|k| p3.row(idx(k)).to_vec()).collect());
+        let rr = chebyshev_to_bernstein(idx(big_m)).mul(&kept);
+        // Q_i = R_{i-r-1} C(M, i-r-1) / C(m, i)   (14.5.16)
+        for i in (ri + 1)..=(mi - pi - 1) {
+            let f = binom_q(big_m, i - ri - 1) / binom_q(mi, i);
+            rows.push(rr.row(idx(i - ri - 1)).iter().map(|x| x * &f).collect());
+        }
+        let factor = self_pow(pi + 1) * self_pow(ri + 1) / self_pow(pi + ri + 2);
+        let coef = up(&factor);
+        for k in (big_m + 1)..=big_n {
+            terms.push((coef, p3.row(idx(k)).to_vec()));
+        }
+    }
+    rows.extend(right);
+    (RatMat::from_rows(rows), terms)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn conversions_are_inverse() {
+        for nn in [0, 1, 2, 5, 9] {
+            let prod = chebyshev_to_bernstein(nn).mul(&bernstein_to_chebyshev(nn));
+            assert_eq!(prod, RatMat::identity(nn + 1), "N = {nn}");
+        }
+    }
+
+    #[test]
+    fn chebyshev_bernstein_coefficients_closed_form() {
+        // SPEC-reduce §3: T_k(2t-1) = sum_i (-1)^(k-i) C(2k,2i)/C(k,i) B_i^k(t).
+        for k in 0..7usize {
+            let a = chebyshev_to_bernstein(k);
+            for i in 0..=k {
+                let (ki, ii) = (to_i(k), to_i(i));
+                let mut e = binom_q(2 * ki, 2 * ii) / binom_q(ki, ii);
+                if (ki - ii) % 2 == 1 {
+                    e = -e;
+                }
+                assert_eq!(*a.at(i, k), e);
+            }
+        }
+    }
+}

@@ -1,0 +1,288 @@
+//! Exact rational matrices: every reduction operator of this crate is computed here in
+//! `BigRational` arithmetic and rounded to `f64` once (SPEC-reduce §11: "closed forms in
+//! exact integer/rational arithmetic; evaluate in f64 only at the end"). Exact arithmetic has
+//! no conditioning problem, so no normal equations are ever formed in floating point.
+
+use cagd_core::{Error, Result, binomial};
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+
+/// Exact rational number.
+pub(crate) type Q = BigRational;
+
+/// `C(n, k)` as an exact rational (`0` when `k > n` or `k < 0`).
+pub(crate) fn binom_q(n: i64, k: i64) -> Q {
+    if n < 0 || k < 0 || k > n {
+        return Q::zero();
+    }
+    // n <= 2 * MAX_DEGREE + 2 everywhere in this crate: binomial() is exact.
+    #[allow(clippy::cast_possible_truncation, reason = "0 <= k <= n <= 130")]
+    let b = binomial(n as usize, k as usize);
+    Q::from_integer(BigInt::from(b))
+}
+
+/// `a / b` for small integers.
+pub(crate) fn frac(a: i64, b: i64) -> Q {
+    Q::new(BigInt::from(a), BigInt::from(b))
+}
+
+/// `2^e` for `e` of any sign.
+pub(crate) fn pow2(e: i64) -> Q {
+    let p = BigInt::one() << e.unsigned_abs();
+    if e >= 0 {
+        Q::from_integer(p)
+    } else {
+        Q::new(BigInt::one(), p)
+    }
+}
+
+/// A dense row-major matrix of exact rationals.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct RatMat {
+    pub(crate) rows: usize,
+    pub(crate) cols: usize,
+    pub(crate) data: Vec<Q>,
+}
+
+impl RatMat {
+    /// The zero matrix.
+    pub(crate) fn zeros(rows: usize, cols: usize) -> Self {
+        Self {
+            rows,
+            cols,
+            data: vec![Q::zero(); rows * cols],
+        }
+    }
+
+    /// The identity.
+    pub(crate) fn identity(n: usize) -> Self {
+        let mut m = Self::zeros(n, n);
+        for i in 0..n {
+            m.data[i * n + i] = Q::one();
+        }
+        m
+    }
+
+    /// Entry `(i, j)`.
+    pub(crate) fn at(&self, i: usize, j: usize) -> &Q {
+        &self.data[i * self.cols + j]
+    }
+
+    /// Mutable entry `(i, j)`.
+    pub(crate) fn at_mut(&mut self, i: usize, j: usize) -> &mut Q {
+        &mut self.data[i * self.cols + j]
+    }
+
+    /// Row `i` as a slice.
+    pub(crate) fn row(&self, i: usize) -> &[Q] {
+        &self.data[i * self.cols..(i + 1) * self.cols]
+    }
+
+    /// Builds a matrix from rows of equal length.
+    pub(crate) fn from_rows(rows: Vec<Vec<Q>>) -> Self {
+        let r = rows.len();
+        let c = rows.first().map_or(0, Vec::len);
+        debug_assert!(rows.iter().all(|x| x.len() == c));
+        Self {
+            rows: r,
+            cols: c,
+            data: rows.into_iter().flatten().collect(),
+        }
+    }
+
+    /// `self * other` (skipping zero entries, which are frequent in banded operators).
+    pub(crate) fn mul(&self, other: &RatMat) -> RatMat {
+        debug_assert_eq!(self.cols, other.rows);
+        let mut out = RatMat::zeros(self.rows, other.cols);
+        for i in 0..self.rows {
+            for k in 0..self.cols {
+                let a = self.at(i, k);
+                if a.is_zero() {
+                    continue;
+                }
+                for j in 0..other.cols {
+                    let b = other.at(k, j);
+                    if !b.is_zero() {
+                        *out.at_mut(i, j) += a * b;
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// The transpose.
+    pub(crate) fn transpose(&self) -> RatMat {
+        let mut t = RatMat::zeros(self.cols, self.rows);
+        for i in 0..self.rows {
+            for j in 0..self.cols {
+                *t.at_mut(j, i) = self.at(i, j).clone();
+            }
+        }
+        t
+    }
+
+    /// Solves `self X = rhs` exactly (Gauss–Jordan with the first non-zero pivot).
+    ///
+    /// # Errors
+    /// [`Error::Singular`] when `self` is singular (never for the SPD systems of this crate).
+    pub(crate) fn solve(&self, rhs: &RatMat, what: &'static str) -> Result<RatMat> {
+        debug_assert!(self.rows == self.cols && rhs.rows == self.rows);
+        let n = self.rows;
+        let mut a = self.clone();
+        let mut b = rhs.clone();
+        for col in 0..n {
+            let piv = (col..n)
+                .find(|&r| !a.at(r, col).is_zero())
+                .ok_or(Error::Singular { what })?;
+            if piv != col {
+                for j in 0..n {
+                    a.data.swap(piv * n + j, col * n + j);
+                }
+                for j in 0..b.cols {
+                    b.data.swap(piv * b.cols + j, col * b.cols + j);
+                }
+            }
+            let inv = a.at(col, col).recip();
+            for j in 0..n {
+                let v = a.at(col, j) * &inv;
+                *a.at_mut(col, j) = v;
+            }
+            for j in 0..b.cols {
+                let v = b.at(col, j) * &inv;
+                *b.at_mut(col, j) = v;
+            }
+            for r in 0..n {
+                if r == col || a.at(r, col).is_zero() {
+                    continue;
+                }
+                let f = a.at(r, col).clone();
+                for j in col..n {
+                    let v = a.at(col, j) * &f;
+                    *a.at_mut(r, j) -= v;
+                }
+                for j in 0..b.cols {
+                    let v = b.at(col, j) * &f;
+                    *b.at_mut(r, j) -= v;
+                }
+            }
+        }
+        Ok(b)
+    }
+
+    /// Every entry rounded once to the nearest `f64`, row-major.
+    pub(crate) fn to_f64(&self) -> Vec<f64> {
+        self.data.iter().map(q_to_f64).collect()
+    }
+
+    /// `max_i sum_j |a_ij|` (the infinity norm), rounded up generously.
+    pub(crate) fn inf_norm(&self) -> f64 {
+        (0..self.rows)
+            .map(|i| self.row(i).iter().map(|x| q_to_f64(&x.abs())).sum::<f64>())
+            .fold(0.0, f64::max)
+            * (1.0 + 1e-12)
+    }
+}
+
+/// A row vector of exact rationals: a linear functional of the input control points.
+pub(crate) type Row = Vec<Q>;
+
+/// The unit row `e_i` of length `len`.
+pub(crate) fn unit(len: usize, i: usize) -> Row {
+    let mut r = vec![Q::zero(); len];
+    r[i] = Q::one();
+    r
+}
+
+/// `a x + b y`.
+pub(crate) fn lin2(a: &Q, x: &[Q], b: &Q, y: &[Q]) -> Row {
+    x.iter().zip(y).map(|(u, v)| a * u + b * v).collect()
+}
+
+/// `y += a x`.
+pub(crate) fn axpy(y: &mut [Q], a: &Q, x: &[Q]) {
+    if a.is_zero() {
+        return;
+    }
+    for (u, v) in y.iter_mut().zip(x) {
+        if !v.is_zero() {
+            *u += a * v;
+        }
+    }
+}
+
+/// `a x`.
+pub(crate) fn scaled(a: &Q, x: &[Q]) -> Row {
+    x.iter().map(|u| a * u).collect()
+}
+
+/// `sum_j g_j S_j` for a row `g` and the rows `S_j` of a matrix: the functional `g` of
+/// intermediate points expressed in the input points.
+pub(crate) fn row_times(g: &[Q], s: &RatMat) -> Row {
+    let mut out = vec![Q::zero(); s.cols];
+    for (j, gj) in g.iter().enumerate() {
+        axpy(&mut out, gj, s.row(j));
+    }
+    out
+}
+
+/// An exact rational rounded to `f64` (to nearest, up to the library's conversion).
+pub(crate) fn q_to_f64(x: &Q) -> f64 {
+    x.to_f64().unwrap_or(f64::NAN)
+}
+
+/// The elevation matrix from degree `m` to degree `n >= m`, `(n+1) x (m+1)`,
+/// `a_ij = C(m,j) C(n-m,i-j) / C(n,i)` (SPEC-reduce §0; seed 000 eq. 14.4.4 in closed form).
+pub(crate) fn elevation(m: usize, n: usize) -> RatMat {
+    let mut a = RatMat::zeros(n + 1, m + 1);
+    let (mi, ni) = (to_i(m), to_i(n));
+    for i in 0..=ni {
+        for j in 0..=mi {
+            if i >= j && i - j <= ni - mi {
+                *a.at_mut(idx(i), idx(j)) =
+                    binom_q(mi, j) * binom_q(ni - mi, i - j) / binom_q(ni, i);
+            }
+        }
+    }
+    a
+}
+
+/// `usize -> i64` for degrees (all <= 130).
+pub(crate) fn to_i(x: usize) -> i64 {
+    i64::try_from(x).unwrap_or(i64::MAX)
+}
+
+/// `i64 -> usize` for indices known to be non-negative.
+pub(crate) fn idx(x: i64) -> usize {
+    debug_assert!(x >= 0);
+    usize::try_from(x).unwrap_or(0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn solve_and_elevation() {
+        let e = elevation(1, 3);
+        // Rows of the elevation matrix sum to one.
+        for i in 0..4 {
+            let s: Q = e.row(i).iter().sum();
+            assert_eq!(s, Q::one());
+        }
+        let a = RatMat::from_rows(vec![
+            vec![frac(2, 1), frac(1, 1)],
+            vec![frac(1, 1), frac(3, 1)],
+        ]);
+        let x = a.solve(&RatMat::identity(2), "test").unwrap();
+        assert_eq!(a.mul(&x), RatMat::identity(2));
+        let s = RatMat::from_rows(vec![
+            vec![frac(1, 1), frac(2, 1)],
+            vec![frac(2, 1), frac(4, 1)],
+        ]);
+        assert!(s.solve(&RatMat::identity(2), "test").is_err());
+        assert_eq!(pow2(-3), frac(1, 8));
+        assert_eq!(binom_q(5, 7), Q::zero());
+    }
+}
