@@ -59,23 +59,26 @@ const W: f64 = 480.0;
 const H: f64 = 360.0;
 const M: f64 = 28.0;
 
-/// Renders panels side by side into one SVG document.
-pub(crate) fn render(panels: &[Panel]) -> String {
-    let total_w = W * panels.len().max(1) as f64;
+/// Renders rows of panels (side by side within a row) into one SVG document.
+pub(crate) fn render(rows: &[Vec<Panel>]) -> String {
+    let cols = rows.iter().map(Vec::len).max().unwrap_or(1).max(1);
+    let (total_w, total_h) = (W * cols as f64, H * rows.len().max(1) as f64);
     let mut s = String::new();
     let _ = writeln!(
         s,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{total_w}" height="{H}" viewBox="0 0 {total_w} {H}" font-family="sans-serif" font-size="12">"#
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{total_w}" height="{total_h}" viewBox="0 0 {total_w} {total_h}" font-family="sans-serif" font-size="12">"#
     );
     let _ = writeln!(s, r#"<rect width="100%" height="100%" fill="white"/>"#);
-    for (k, panel) in panels.iter().enumerate() {
-        render_panel(&mut s, panel, k as f64 * W);
+    for (r, row) in rows.iter().enumerate() {
+        for (k, panel) in row.iter().enumerate() {
+            render_panel(&mut s, panel, k as f64 * W, r as f64 * H);
+        }
     }
     s.push_str("</svg>\n");
     s
 }
 
-fn render_panel(s: &mut String, panel: &Panel, x0: f64) {
+fn render_panel(s: &mut String, panel: &Panel, x0: f64, y0: f64) {
     let all = panel.lines.iter().flat_map(|l| l.points.iter());
     let (mut lo_x, mut hi_x, mut lo_y, mut hi_y) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
     for &(x, y) in all {
@@ -95,11 +98,12 @@ fn render_panel(s: &mut String, panel: &Panel, x0: f64) {
         sx = k;
         sy = k;
     }
-    let map = |(x, y): (f64, f64)| (x0 + M + (x - lo_x) * sx, H - M - (y - lo_y) * sy);
+    let map = |(x, y): (f64, f64)| (x0 + M + (x - lo_x) * sx, y0 + H - M - (y - lo_y) * sy);
     let _ = writeln!(
         s,
-        r#"<text x="{}" y="16" fill="black">{}</text>"#,
+        r#"<text x="{}" y="{}" fill="black">{}</text>"#,
         x0 + M,
+        y0 + 16.0,
         escape(&panel.title)
     );
     if !panel.equal_aspect {
@@ -107,7 +111,7 @@ fn render_panel(s: &mut String, panel: &Panel, x0: f64) {
             s,
             r##"<text x="{}" y="{}" fill="#555">max {:.3e}</text>"##,
             x0 + M,
-            H - 8.0,
+            y0 + H - 8.0,
             hi_y
         );
     }
@@ -164,7 +168,7 @@ mod tests {
         };
         p.line(vec![(0.0, 0.0), (1.0, 1.0)], "black", 1.5);
         p.polygon(vec![(0.0, 0.0), (1.0, 0.0)], "gray");
-        let svg = render(&[p]);
+        let svg = render(&[vec![p]]);
         assert!(svg.starts_with("<svg"));
         assert!(svg.contains("a &lt;b&gt;"));
         assert_eq!(svg.matches("<polyline").count(), 2);
