@@ -1,7 +1,7 @@
 //! Pictures of a reduction: original and result with their control polygons, and the error
 //! `|P(t) - Q(t)|` along the parameter.
 
-use cagd_core::BezierCurve;
+use cagd_core::{BSplineCurve, BezierCurve};
 
 use crate::shape::Shape;
 use crate::svg::{Panel, project};
@@ -63,6 +63,59 @@ pub(crate) fn curve_panels(
 pub(crate) fn panels(title: &str, input: &Shape, output: &Shape) -> Vec<Panel> {
     match (input, output) {
         (Shape::Bezier(a), Shape::Bezier(b)) => curve_panels(title, a, b).to_vec(),
+        (Shape::Bezier(a), Shape::BSpline(b)) => spline_panels(title, a, b).to_vec(),
         _ => Vec::new(),
     }
+}
+
+/// Two panels for a reduction to a tolerance: the original and the degree-m B-spline (with
+/// its control polygon and the piece breaks), and the error along the parameter.
+pub(crate) fn spline_panels(
+    title: &str,
+    original: &BezierCurve,
+    result: &BSplineCurve,
+) -> [Panel; 2] {
+    let eval = |t: f64| result.eval(t).unwrap_or_else(|_| vec![0.0; result.dim()]);
+    let mut geo = Panel {
+        title: format!(
+            "{title}: degree {} (black) -> degree-{} B-spline (red)",
+            original.degree(),
+            result.degree()
+        ),
+        equal_aspect: true,
+        ..Panel::default()
+    };
+    geo.polygon(polygon(original), "#888888");
+    geo.polygon(
+        result.points().chunks(result.dim()).map(project).collect(),
+        "#e08080",
+    );
+    geo.line(curve_line(original), "black", 1.6);
+    geo.line(
+        (0..=4 * SAMPLES)
+            .map(|i| project(&eval(i as f64 / (4 * SAMPLES) as f64)))
+            .collect(),
+        "#d01010",
+        1.2,
+    );
+    let mut err = Panel {
+        title: "error |P(t) - S(t)| over t in [0, 1]".into(),
+        equal_aspect: false,
+        ..Panel::default()
+    };
+    let pts = (0..=4 * SAMPLES)
+        .map(|i| {
+            let t = i as f64 / (4 * SAMPLES) as f64;
+            let (p, q) = (original.eval(t), eval(t));
+            let d = p
+                .iter()
+                .zip(&q)
+                .map(|(a, b)| (a - b) * (a - b))
+                .sum::<f64>()
+                .sqrt();
+            (t, d)
+        })
+        .collect();
+    err.line(pts, "#1050c0", 1.2);
+    [geo, err]
 }

@@ -184,3 +184,54 @@ fn demo_writes_table_and_pictures() {
     assert!(svgs >= 5, "{svgs} pictures");
     std::fs::remove_dir_all(&dir).expect("cleanup");
 }
+
+#[test]
+fn reduction_to_a_tolerance_gives_a_bspline_within_tolerance() {
+    let p = json!([
+        [0, 0],
+        [1, 4],
+        [2, 6],
+        [4, 7],
+        [6, 5],
+        [7, 2],
+        [9, 1],
+        [11, 3],
+        [12, 6],
+        [14, 7],
+        [16, 4]
+    ]);
+    for (tol, k) in [("1e-2", "0"), ("1e-4", "1"), ("1e-6", "1")] {
+        let out = json_out(&cagd(
+            &["reduce", "--to", "3", "--tol", tol, "--continuity", k],
+            &bezier(&p),
+        ));
+        assert_eq!(out["type"], "bspline");
+        assert_eq!(out["degree"], 3);
+        let r = &out["report"];
+        let t: f64 = tol.parse().expect("number");
+        let (bound, measured) = (
+            r["error_bound"].as_f64().expect("bound"),
+            r["max_error"].as_f64().expect("measured"),
+        );
+        assert!(measured <= bound && bound <= t, "{tol}: {measured} {bound}");
+        // Interior knots have multiplicity m - k.
+        let knots = flat(&out["knots"]);
+        let kk: usize = k.parse().expect("k");
+        let interior: Vec<f64> = knots
+            .iter()
+            .copied()
+            .filter(|x| *x > 0.0 && *x < 1.0)
+            .collect();
+        assert_eq!(
+            interior.len(),
+            (r["pieces"].as_u64().expect("pieces") as usize - 1) * (3 - kk)
+        );
+    }
+    // Continuity 3 for a cubic is impossible and says so.
+    let o = cagd(
+        &["reduce", "--to", "3", "--tol", "1e-3", "--continuity", "3"],
+        &bezier(&p),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).starts_with("cagd: input: "));
+}
