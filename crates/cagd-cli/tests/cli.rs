@@ -224,7 +224,7 @@ fn reduction_to_a_tolerance_gives_a_bspline_within_tolerance() {
             .collect();
         assert_eq!(
             interior.len(),
-            (r["pieces"].as_u64().expect("pieces") as usize - 1) * (3 - kk)
+            (usize::try_from(r["pieces"].as_u64().expect("pieces")).expect("small") - 1) * (3 - kk)
         );
     }
     // Continuity 3 for a cubic is impossible and says so.
