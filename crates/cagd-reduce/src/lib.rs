@@ -76,6 +76,12 @@ mod measure;
 mod method;
 mod one_step;
 mod operator;
+mod patch_exact;
+mod patch_report;
+mod patch_tensor;
+mod patch_tensor_curves;
+mod patch_tri;
+mod patch_tri_l2;
 mod reduce;
 mod wn_table;
 
@@ -86,5 +92,11 @@ pub use g1::reduce_g1_optimal;
 pub use measure::{SAMPLES, max_deviation};
 pub use method::Method;
 pub use operator::{Operator, operator};
+pub use patch_report::{
+    PatchConstraint, PatchOptions, PatchReduction, PatchReport, TensorMethod, TensorPiece,
+    TriMethod, TriOptions, TriPiece, TriReduction,
+};
+pub use patch_tensor::reduce_tensor;
+pub use patch_tri::{reduce_triangle, tri_perturbation_matrix};
 pub use reduce::{ErrorSpace, ReduceOptions, Reduction, Report, reduce, reduce_with};
 pub use wn_table::perturbation_error_factor;
