@@ -80,6 +80,7 @@ mod patch_exact;
 mod patch_report;
 mod patch_tensor;
 mod patch_tensor_curves;
+mod patch_tolerance;
 mod patch_tri;
 mod patch_tri_l2;
 mod reduce;
@@ -97,6 +98,9 @@ pub use patch_report::{
     TriMethod, TriOptions, TriPiece, TriReduction,
 };
 pub use patch_tensor::reduce_tensor;
+pub use patch_tolerance::{
+    MAX_SUBDIVISION_LEVEL, reduce_tensor_to_tolerance, reduce_triangle_to_tolerance,
+};
 pub use patch_tri::{reduce_triangle, tri_perturbation_matrix};
 pub use reduce::{ErrorSpace, ReduceOptions, Reduction, Report, reduce, reduce_with};
 pub use wn_table::perturbation_error_factor;

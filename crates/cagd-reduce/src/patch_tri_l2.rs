@@ -192,3 +192,45 @@ mod tests {
         }
     }
 }
+
+#[cfg(test)]
+mod optimality {
+    use super::*;
+    use num_traits::ToPrimitive;
+
+    /// The L2 residual `P - Q` is orthogonal to every free basis function of degree `m`:
+    /// `sum_ij ∫ B^n_ij B^m_kl (P - E Q)_ij = 0` (the normal equations), per coordinate.
+    #[test]
+    fn residual_is_orthogonal_to_the_free_basis() {
+        let (n, m) = (6, 3);
+        let pts: Vec<f64> = (0..tri_count(n))
+            .map(|i| ((i * 31 % 13) as f64) - 6.0)
+            .collect();
+        let t = TriPatch::new(pts, n, 1).unwrap();
+        for (kind, c) in [
+            (0u8, PatchConstraint::None),
+            (1, PatchConstraint::Corners),
+            (
+                2,
+                PatchConstraint::Boundary(crate::Method::L2 { r: 0, p: 0 }),
+            ),
+        ] {
+            let q = reduce_l2(&t, m, c).unwrap();
+            let e = q.elevate(n - m).unwrap();
+            let fixed = fixed_set(m, kind);
+            for (s, kl) in indices(m).into_iter().enumerate() {
+                if fixed.contains(&s) {
+                    continue;
+                }
+                let dot: f64 = indices(n)
+                    .into_iter()
+                    .enumerate()
+                    .map(|(r, ij)| {
+                        gram_entry(n, ij, m, kl).to_f64().unwrap() * (t.points()[r] - e.points()[r])
+                    })
+                    .sum();
+                assert!(dot.abs() < 1e-14, "kind {kind}, {kl:?}: {dot}");
+            }
+        }
+    }
+}
