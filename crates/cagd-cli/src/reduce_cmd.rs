@@ -9,6 +9,7 @@ use serde_json::{Value, json};
 
 use crate::args::ReduceArgs;
 use crate::methods::{Plan, plan};
+use crate::patch_cmd::{tensor_method, tri_method};
 use crate::shape::Shape;
 
 /// The default method when `--method` is not given: the L2-optimal reduction with the end
@@ -158,10 +159,35 @@ pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<O
                     message: "B-spline reduction is not available in this build".into(),
                 });
             }
-            Shape::Tensor(_) | Shape::Triangle(_) => {
-                return Err(Failure {
-                    path: path.clone(),
-                    message: "patch reduction is not available in this build".into(),
+            Shape::Tensor(p) => {
+                let target = (args.to.0, args.to.1.unwrap_or(args.to.0));
+                let method = tensor_method(name, how).map_err(|message| Failure {
+                    path: "--method".into(),
+                    message,
+                })?;
+                let (json, result) =
+                    crate::patch_cmd::tensor(p, target, method, args.tol).map_err(fail)?;
+                out.push(Output {
+                    json,
+                    pair: result.map(|r| (shape.clone(), r)),
+                });
+            }
+            Shape::Triangle(t) => {
+                if args.to.1.is_some_and(|n| n != args.to.0) {
+                    return Err(Failure {
+                        path: "--to".into(),
+                        message: "a triangular patch has one degree: give --to M".into(),
+                    });
+                }
+                let method = tri_method(name, how).map_err(|message| Failure {
+                    path: "--method".into(),
+                    message,
+                })?;
+                let (json, result) =
+                    crate::patch_cmd::triangle(t, args.to.0, method, args.tol).map_err(fail)?;
+                out.push(Output {
+                    json,
+                    pair: result.map(|r| (shape.clone(), r)),
                 });
             }
         }
