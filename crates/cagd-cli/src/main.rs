@@ -6,6 +6,7 @@
 
 mod args;
 mod demo;
+mod demo_patches;
 mod input;
 mod methods;
 mod patch_cmd;
