@@ -128,7 +128,7 @@ pub use batch::reduce_batch;
 pub use cagd_core::{Error, Result};
 pub use exact_degree::{DEFAULT_REL_TOL, exact_degree, reduce_exact};
 pub use g1::reduce_g1_optimal;
-pub use measure::{SAMPLES, max_deviation};
+pub use measure::max_deviation;
 pub use method::Method;
 pub use operator::{Operator, operator};
 pub use patch_report::{
