@@ -104,6 +104,7 @@ mod ends;
 mod exact;
 mod exact_degree;
 mod g1;
+mod hull;
 mod least_squares;
 mod measure;
 mod method;
