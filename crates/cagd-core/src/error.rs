@@ -63,7 +63,7 @@ pub enum Error {
         /// The offending value.
         value: f64,
     },
-    /// The knot vector decreases at `index` (knots[index] < knots[index - 1]).
+    /// The knot vector decreases at `index` (`knots[index] < knots[index - 1]`).
     #[error("knots[{index}] is smaller than knots[{}]: the knot vector must be non-decreasing", .index - 1)]
     KnotsNotNondecreasing {
         /// First index at which the vector decreases.
