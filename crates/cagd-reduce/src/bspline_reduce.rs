@@ -280,13 +280,15 @@ pub fn reduce_bspline(curve: &BSplineCurve, opts: &BSplineOptions) -> Result<BSp
         .iter()
         .map(|x| (x.a, x.order.max(0) as usize))
         .collect();
-    let structural = local
-        .remove_joint_copies(merged, &joints, opts.tolerance)?
-        .ok_or(Error::ConditionNotMet {
+    let mut raw = crate::bspline_knots::Raw::new(&merged);
+    if !local.remove_joint_copies(&mut raw, &joints, opts.tolerance)? {
+        return Err(Error::ConditionNotMet {
             eq: "tolerance",
             why: "the C^k joints could not be stored with multiplicity m - k (rounding)",
-        })?;
-    let curve_out = local.remove_greedily(structural, opts.tolerance)?;
+        });
+    }
+    local.remove_greedily(&mut raw, opts.tolerance)?;
+    let curve_out = raw.into_curve()?;
     let error_bound = local.max_bound();
     let max_error = if opts.measure {
         Some(spline_max_deviation(curve, &curve_out)?)
