@@ -13,6 +13,7 @@ mod patch_cmd;
 mod picture;
 mod reduce_cmd;
 mod shape;
+mod spline_cmd;
 mod svg;
 
 use std::io::{Read, Write};
