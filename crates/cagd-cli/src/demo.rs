@@ -183,6 +183,7 @@ pub(crate) fn run(out: &Path) -> Result<(), String> {
         let _ = writeln!(table, "{:<22} pictures: {}", "", file.display());
     }
     crate::demo_patches::run(out, &mut table)?;
+    crate::demo_splines::run(out, &mut table)?;
     print!("{table}");
     Ok(())
 }

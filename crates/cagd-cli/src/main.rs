@@ -7,6 +7,7 @@
 mod args;
 mod demo;
 mod demo_patches;
+mod demo_splines;
 mod input;
 mod methods;
 mod patch_cmd;
