@@ -23,9 +23,20 @@ pub(crate) struct Failure {
     pub(crate) message: String,
 }
 
+/// The method's parameters, when it has any: `l1`, `l2` of the G1 perturbation (the optimal
+/// ones for `perturbation-g1`), `r`, `p` of the end-constrained methods.
+pub(crate) fn method_params(m: &Method) -> Value {
+    match *m {
+        Method::PerturbG1 { l1, l2 } => json!({"l1": l1, "l2": l2}),
+        Method::L2 { r, p } | Method::ConstrainedChebyshev { r, p } => json!({"r": r, "p": p}),
+        _ => Value::Null,
+    }
+}
+
 /// The report in the JSON form of the command (fields only ever added).
 pub(crate) fn report_json(r: &Report) -> Value {
     json!({
+        "method_params": method_params(&r.method),
         "method": r.method.name(),
         "degree_from": r.degree_from,
         "degree_to": r.degree_to,
