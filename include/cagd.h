@@ -246,11 +246,28 @@ typedef int32_t CagdErrorSpace;
 #endif // __cplusplus
 
 /**
+ * Opaque handle to a B-spline curve of degree `p` (`0..=64`) with `n_points >= p + 1`
+ * control points of `dim >= 1` coordinates and a full knot vector of
+ * `n_points + p + 1` non-decreasing knots (clamped or not; the domain is
+ * `[knots[p], knots[n_points]]`), polynomial or NURBS (Euclidean points plus positive
+ * weights). Immutable once created; release with `cagd_bspline_free`.
+ */
+typedef struct CagdBSpline CagdBSpline;
+
+/**
  * Opaque handle to a Bézier curve of degree `n` (`n + 1` control points of `dim`
  * coordinates, `0 <= n <= 64`, `dim >= 1`), polynomial or rational (Euclidean points plus
  * positive weights). Immutable once created; release with `cagd_curve_free`.
  */
 typedef struct CagdCurve CagdCurve;
+
+/**
+ * Opaque handle to an ordered list of Bézier curves, each the piece of a whole on a
+ * parameter interval `[a_i, b_i]` (`piece_i(s) = whole(a_i + s (b_i - a_i))`,
+ * `s` in `[0, 1]`), made by `cagd_bspline_to_beziers` or a piecewise reduction.
+ * Immutable; release with `cagd_curvelist_free`.
+ */
+typedef struct CagdCurveList CagdCurveList;
 
 /**
  * Opaque handle to the report of a reduction: the method, the degrees, the certified
@@ -279,11 +296,27 @@ typedef struct CagdTriPatch CagdTriPatch;
 /**
  * How to reduce: a plain struct the caller owns. Fill it with
  * `cagd_reduce_options_init`, then change the fields you need.
+ *
+ * Versioning rule: the first field, `struct_size`, is set by `cagd_reduce_options_init`
+ * to `sizeof(CagdReduceOptions)` of the header the caller was compiled with. Every
+ * function taking options reads it first and fails with `CAGD_ERR_INVALID_ARGUMENT` when
+ * it is smaller than the size of this first version of the struct (so a struct that was
+ * not initialised is most likely caught). Later versions only append fields; a library
+ * reads at most the fields it knows, and the fields a smaller (older) struct lacks take
+ * their defaults, so a program compiled against an older header keeps working. Never set
+ * `struct_size` by hand to anything but `sizeof(CagdReduceOptions)`.
  */
 typedef struct CagdReduceOptions {
   /**
+   * `sizeof(CagdReduceOptions)` in bytes, set by `cagd_reduce_options_init` (see the
+   * versioning rule above).
+   */
+  size_t struct_size;
+  /**
    * A `CagdReduceMethod` value (an `int32_t`, so that any value a caller stores is
-   * checked rather than undefined). Default `CAGD_METHOD_CONSTRAINED_CHEBYSHEV`.
+   * checked rather than undefined). Default `CAGD_METHOD_L2` (with `r = p = 0`: the end
+   * points are interpolated; among the end-interpolating methods it had the smallest
+   * errors in our measurements).
    */
   int32_t method;
   /**
@@ -309,8 +342,8 @@ typedef struct CagdReduceOptions {
    */
   double l2;
   /**
-   * Also measure the error by dense sampling (costs about 8000 evaluations). Default
-   * false.
+   * Also measure the error by dense sampling (costs about 8000 evaluations per piece).
+   * Default false.
    */
   bool measure;
   /**
@@ -318,11 +351,436 @@ typedef struct CagdReduceOptions {
    * `CAGD_SPACE_EUCLIDEAN`.
    */
   int32_t space;
+  /**
+   * Reduction to a tolerance only: the tolerance `delta` (model units, Euclidean) the
+   * certified error bound must meet; finite and `> 0`. Default 0, which is rejected
+   * (`CAGD_ERR_INVALID_ARGUMENT`): a tolerance depends on the model's size, so the
+   * caller must choose it.
+   */
+  double tolerance;
+  /**
+   * Reduction to a tolerance only: the order `k` of parametric continuity `C^k` at the
+   * joins of the pieces (interior knots of multiplicity `target - k`); needs
+   * `k < target` and a method that keeps derivatives up to order `k` at both ends
+   * (e.g. `CAGD_METHOD_L2` with `r = p = k`). Default 0 (`C^0`).
+   */
+  size_t continuity;
+  /**
+   * Reduction to a tolerance only: the deepest midpoint-subdivision level allowed
+   * (pieces of length `2^-max_depth` of the parameter range). Default 30.
+   */
+  size_t max_depth;
 } CagdReduceOptions;
 
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/**
+ * Creates a polynomial B-spline curve
+ * `C(t) = sum_i N_{i,degree}(t) P_i`, `t` in `[knots[degree], knots[n_points]]`.
+ *
+ * Parameters:
+ * - `degree` (in): the degree `p`, `0..=64`.
+ * - `knots` (in): `n_knots` doubles, non-decreasing, finite, each value at most
+ *   `degree + 1` times, with `knots[degree] < knots[n_points]`. Borrowed and copied.
+ * - `n_knots` (in): must equal `n_points + degree + 1` (checked, not assumed).
+ * - `points` (in): `n_points * dim` doubles, row-major: coordinate k of control point i
+ *   at `points[i * dim + k]`. Borrowed and copied.
+ * - `n_points` (in): number of control points, `>= degree + 1`.
+ * - `dim` (in): coordinates per point, `>= 1`.
+ * - `spline_out` (out): on `CAGD_OK`, a new handle owned by the caller, to be released
+ *   with `cagd_bspline_free` exactly once. Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*spline_out` holds the new spline.
+ * - `CAGD_ERR_NULL_POINTER`: `knots`, `points` or `spline_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, `n_points * dim` overflows, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_points == 0` or `n_points < degree + 1`.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
+ * - `CAGD_ERR_NON_FINITE`: a coordinate or a knot is NaN or infinite.
+ * - `CAGD_ERR_BAD_KNOTS`: `n_knots != n_points + degree + 1`, the knots decrease
+ *   somewhere (the message gives the index), or the domain is empty.
+ * - `CAGD_ERR_MULTIPLICITY`: a knot value appears more than `degree + 1` times.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `knots` must be NULL or point to `n_knots` readable doubles, `points` NULL or
+ * `n_points * dim` readable doubles; `spline_out` NULL or writable.
+ */
+CagdStatus cagd_bspline_new(size_t degree,
+                            const double *knots,
+                            size_t n_knots,
+                            const double *points,
+                            size_t n_points,
+                            size_t dim,
+                            struct CagdBSpline **spline_out);
+
+/**
+ * Creates a NURBS curve from Euclidean control points and weights:
+ * `C(t) = sum_i N_{i,p}(t) w_i P_i / sum_i N_{i,p}(t) w_i`.
+ *
+ * Parameters:
+ * - `degree` (in): the degree `p`, `0..=64`.
+ * - `knots` (in): `n_knots` doubles, as in `cagd_bspline_new`. Borrowed and copied.
+ * - `n_knots` (in): must equal `n_points + degree + 1`.
+ * - `points` (in): `n_points * dim` doubles, row-major, Euclidean (not multiplied by the
+ *   weights). Borrowed and copied.
+ * - `weights` (in): `n_points` doubles, each finite and `> 0`. Borrowed and copied.
+ * - `n_points` (in): number of control points, `>= degree + 1`.
+ * - `dim` (in): coordinates per point, `>= 1`.
+ * - `spline_out` (out): on `CAGD_OK`, a new handle owned by the caller (release with
+ *   `cagd_bspline_free`). Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*spline_out` holds the new spline.
+ * - `CAGD_ERR_NULL_POINTER`: `knots`, `points`, `weights` or `spline_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, `n_points * dim` overflows, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_points == 0` or `n_points < degree + 1`.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
+ * - `CAGD_ERR_NON_FINITE`: a coordinate or a knot is NaN or infinite.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0`, NaN or infinite (the message
+ *   gives its index and value).
+ * - `CAGD_ERR_BAD_KNOTS`: wrong `n_knots`, decreasing knots, or an empty domain.
+ * - `CAGD_ERR_MULTIPLICITY`: a knot value appears more than `degree + 1` times.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `knots` must be NULL or point to `n_knots` readable doubles, `points` NULL or
+ * `n_points * dim` readable doubles, `weights` NULL or `n_points` readable doubles;
+ * `spline_out` NULL or writable.
+ */
+CagdStatus cagd_bspline_new_rational(size_t degree,
+                                     const double *knots,
+                                     size_t n_knots,
+                                     const double *points,
+                                     const double *weights,
+                                     size_t n_points,
+                                     size_t dim,
+                                     struct CagdBSpline **spline_out);
+
+/**
+ * Releases a spline. NULL is accepted and ignored, so freeing NULL twice is fine; a
+ * non-NULL handle must be released exactly once and not used afterwards.
+ *
+ * Parameters:
+ * - `spline` (in, consumed): a handle from `cagd_bspline_new*` or a `CagdBSpline **`
+ *   output of another function, or NULL.
+ *
+ * Does not change `cagd_last_error_message()`.
+ *
+ * # Safety
+ * `spline` must be NULL or a live handle created by cagd that is not used afterwards.
+ */
+void cagd_bspline_free(struct CagdBSpline *spline);
+
+/**
+ * Reads the degree `p` of a spline (`0..=64`).
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `degree_out` (out): on `CAGD_OK`, the degree.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*degree_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `degree_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `degree_out` NULL or writable.
+ */
+CagdStatus cagd_bspline_degree(const struct CagdBSpline *spline, size_t *degree_out);
+
+/**
+ * Reads the number of coordinates per point of a spline (`>= 1`).
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `dim_out` (out): on `CAGD_OK`, the dimension.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*dim_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `dim_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `dim_out` NULL or writable.
+ */
+CagdStatus cagd_bspline_dim(const struct CagdBSpline *spline, size_t *dim_out);
+
+/**
+ * Reads the number of control points of a spline (`>= degree + 1`); the knot count is
+ * `n_points + degree + 1`.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `n_points_out` (out): on `CAGD_OK`, the number of control points.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*n_points_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `n_points_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `n_points_out` NULL or writable.
+ */
+CagdStatus cagd_bspline_n_points(const struct CagdBSpline *spline, size_t *n_points_out);
+
+/**
+ * Tells whether a spline is rational (NURBS, created with weights).
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `rational_out` (out): on `CAGD_OK`, `true` for a NURBS curve.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*rational_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `rational_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `rational_out` NULL or writable.
+ */
+CagdStatus cagd_bspline_is_rational(const struct CagdBSpline *spline, bool *rational_out);
+
+/**
+ * Reads the parameter domain `[a, b] = [knots[degree], knots[n_points]]` of a spline
+ * (`a < b`).
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `a_out` (out): on `CAGD_OK`, the start of the domain.
+ * - `b_out` (out): on `CAGD_OK`, the end of the domain.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_bspline_domain(const struct CagdBSpline *spline, double *a_out, double *b_out);
+
+/**
+ * Copies the knot vector of a spline (`n_points + degree + 1` doubles, non-decreasing).
+ * Call with `out_cap = 0` (and `out` NULL) to ask the size.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
+ *   `n_points + degree + 1` doubles hold the knots. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
+ *   `n_points + degree + 1`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the knots are in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the count; only `*out_needed` is
+ *   written.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `out` NULL or `out_cap` writable
+ * doubles; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_bspline_knots(const struct CagdBSpline *spline,
+                              double *out,
+                              size_t out_cap,
+                              size_t *out_needed);
+
+/**
+ * Copies the control points of a spline, row-major, Euclidean (for a NURBS curve, not
+ * multiplied by the weights). Call with `out_cap = 0` (and `out` NULL) to ask the size.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `n_points * dim`
+ *   doubles hold the points (`out[i * dim + k]`). May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
+ *   `n_points * dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the points are in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < n_points * dim`; only `*out_needed` is
+ *   written.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `out` NULL or `out_cap` writable
+ * doubles; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_bspline_points(const struct CagdBSpline *spline,
+                               double *out,
+                               size_t out_cap,
+                               size_t *out_needed);
+
+/**
+ * Copies the weights of a spline; a polynomial spline reports `n_points` weights equal
+ * to 1.0 (the same curve as a NURBS one). Call with `out_cap = 0` (and `out` NULL) to
+ * ask the size.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `n_points` doubles
+ *   hold the weights. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, `n_points`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the weights are in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < n_points`; only `*out_needed` is written.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `out` NULL or `out_cap` writable
+ * doubles; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_bspline_weights(const struct CagdBSpline *spline,
+                                double *out,
+                                size_t out_cap,
+                                size_t *out_needed);
+
+/**
+ * Evaluates a spline at one parameter `t` (de Boor; in homogeneous coordinates for a
+ * NURBS curve). `t` in the domain `[a, b]` (`cagd_bspline_domain`) is the curve; at `b`
+ * the last piece is used (so a clamped spline gives its last control point); other finite
+ * `t` extrapolate the first or last piece.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `t` (in): the parameter, finite.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `dim` doubles hold
+ *   the point. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, `dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the point is in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `t` is NaN or infinite, or a pointer is misaligned.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `out` NULL or `out_cap` writable
+ * doubles; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_bspline_eval(const struct CagdBSpline *spline,
+                             double t,
+                             double *out,
+                             size_t out_cap,
+                             size_t *out_needed);
+
+/**
+ * Evaluates the derivatives of orders `0..=order` of a spline at `t` (Euclidean also for
+ * NURBS, by the quotient rule). At an interior knot the derivative from the right is
+ * returned (from the left at the end of the domain); orders above the degree of a
+ * polynomial spline are zero.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `t` (in): the parameter, finite.
+ * - `order` (in): the highest derivative order, `0..=130`.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
+ *   `(order + 1) * dim` doubles hold the derivatives: coordinate k of the derivative of
+ *   order j at `out[j * dim + k]` (order 0 is the point). May be NULL only when
+ *   `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
+ *   `(order + 1) * dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the derivatives are in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `t` is NaN or infinite, `order > 130`, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < (order + 1) * dim`; only `*out_needed` is
+ *   written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `out` NULL or `out_cap` writable
+ * doubles; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_bspline_derivatives(const struct CagdBSpline *spline,
+                                    double t,
+                                    size_t order,
+                                    double *out,
+                                    size_t out_cap,
+                                    size_t *out_needed);
+
+/**
+ * Inserts the knot `t` `times` times (Boehm's algorithm): the same curve on a finer knot
+ * vector, with `times` more control points and knots.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `t` (in): the knot, finite, in the domain `[a, b]`.
+ * - `times` (in): how many times to insert it; the multiplicity of `t` afterwards must be
+ *   at most `degree + 1`. 0 gives a copy.
+ * - `spline_out` (out): on `CAGD_OK`, the refined spline (`n_points + times` control
+ *   points, `n_points + degree + 1 + times` knots), owned by the caller: release with
+ *   `cagd_bspline_free`. Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*spline_out` holds the refined spline.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `spline_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `t` is NaN, infinite or outside the domain, or a pointer
+ *   is misaligned.
+ * - `CAGD_ERR_MULTIPLICITY`: the multiplicity of `t` would exceed `degree + 1`.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `spline_out` NULL or writable.
+ */
+CagdStatus cagd_bspline_insert_knot(const struct CagdBSpline *spline,
+                                    double t,
+                                    size_t times,
+                                    struct CagdBSpline **spline_out);
+
+/**
+ * Splits a spline into its Bézier pieces, one per non-empty knot span of the domain, in
+ * order (rational pieces for a NURBS curve). Piece `i` on `[a_i, b_i]` is the Bézier
+ * curve of degree `degree` with `piece_i(s) = spline(a_i + s (b_i - a_i))`.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `list_out` (out): on `CAGD_OK`, the pieces (read with `cagd_curvelist_count`,
+ *   `cagd_curvelist_get`, `cagd_curvelist_interval`), owned by the caller: release with
+ *   `cagd_curvelist_free`. Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*list_out` holds the pieces.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `list_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: a piece overflows (control points near the `double` range).
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `list_out` NULL or writable.
+ */
+CagdStatus cagd_bspline_to_beziers(const struct CagdBSpline *spline,
+                                   struct CagdCurveList **list_out);
 
 /**
  * Creates a polynomial Bézier curve of degree `n_points - 1`.
@@ -519,6 +977,110 @@ CagdStatus cagd_curve_weights(const struct CagdCurve *curve,
                               size_t *out_needed);
 
 /**
+ * Releases a curve list (not the curves obtained from it with `cagd_curvelist_get`,
+ * which are independent handles). NULL is accepted and ignored; a non-NULL handle must be
+ * released exactly once and not used afterwards.
+ *
+ * Parameters:
+ * - `list` (in, consumed): a `CagdCurveList **` output of a cagd function, or NULL.
+ *
+ * Does not change `cagd_last_error_message()`.
+ *
+ * # Safety
+ * `list` must be NULL or a live handle created by cagd that is not used afterwards.
+ */
+void cagd_curvelist_free(struct CagdCurveList *list);
+
+/**
+ * Reads the number of pieces of a list (`>= 1` for lists made by cagd).
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `count_out` (out): on `CAGD_OK`, the number of pieces.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*count_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `count_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; `count_out` NULL or writable.
+ */
+CagdStatus cagd_curvelist_count(const struct CagdCurveList *list, size_t *count_out);
+
+/**
+ * Copies piece `i` of a list into a new curve handle (parametrised on `[0, 1]`;
+ * rational when the whole is).
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `i` (in): the piece index, `0 <= i < count`, in parameter order.
+ * - `curve_out` (out): on `CAGD_OK`, a new curve handle owned by the caller, independent
+ *   of the list: release it with `cagd_curve_free` (before or after the list). Not
+ *   written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*curve_out` holds the piece.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `curve_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; `curve_out` NULL or writable.
+ */
+CagdStatus cagd_curvelist_get(const struct CagdCurveList *list,
+                              size_t i,
+                              struct CagdCurve **curve_out);
+
+/**
+ * Reads the parameter interval `[a, b]` of piece `i` in the parameter of the whole (the
+ * spline's knots for `cagd_bspline_to_beziers`, `[0, 1]` of the source curve for a
+ * piecewise reduction).
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `i` (in): the piece index, `0 <= i < count`.
+ * - `a_out` (out): on `CAGD_OK`, the start of the interval.
+ * - `b_out` (out): on `CAGD_OK`, the end of the interval (`> a`).
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `list`, `a_out` or `b_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_curvelist_interval(const struct CagdCurveList *list,
+                                   size_t i,
+                                   double *a_out,
+                                   double *b_out);
+
+/**
+ * Reads the certified error bound of piece `i` of a piecewise reduction (Euclidean,
+ * model units: the piece is within this distance of the source on its interval).
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `i` (in): the piece index, `0 <= i < count`.
+ * - `bound_out` (out): on `CAGD_OK`, the bound (finite, `>= 0`).
+ *
+ * Returns:
+ * - `CAGD_OK`: `*bound_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `bound_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the list is not the result of a reduction (e.g. from
+ *   `cagd_bspline_to_beziers`, whose pieces are exact).
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; `bound_out` NULL or writable.
+ */
+CagdStatus cagd_curvelist_bound(const struct CagdCurveList *list, size_t i, double *bound_out);
+
+/**
  * Evaluates a curve at one parameter `t` (de Casteljau; in homogeneous coordinates for a
  * rational curve). `t` in `[0, 1]` is the curve; other finite `t` extrapolate.
  *
@@ -698,7 +1260,9 @@ const char *cagd_last_error_message(void);
  * Returns:
  * - `CAGD_OK`: both outputs are written.
  * - `CAGD_ERR_NULL_POINTER`: `curve`, `opts`, `curve_out` or `report_out` is NULL.
- * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->method` or `opts->space` is not a valid code,
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` is below
+ *   `sizeof(CagdReduceOptions)` (options not made by `cagd_reduce_options_init`),
+ *   `opts->method` or `opts->space` is not a valid code,
  *   `l1` / `l2` of `CAGD_METHOD_PERTURB_G1` are not finite or not `> -1`,
  *   `curve_out` and `report_out` are the same address, or a pointer is misaligned.
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n`, or `target` below the method's minimum
@@ -710,7 +1274,8 @@ const char *cagd_last_error_message(void);
  *
  * # Safety
  * `curve` must be NULL or a live curve handle; `opts` NULL or a readable
- * `CagdReduceOptions`; `curve_out` and `report_out` NULL or writable.
+ * `CagdReduceOptions` of `opts->struct_size` bytes; `curve_out` and `report_out` NULL
+ * or writable.
  */
 CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
                              const struct CagdReduceOptions *opts,
@@ -743,8 +1308,9 @@ CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
  * - `CAGD_OK`: the reduced curves are in `out`.
  * - `CAGD_ERR_NULL_POINTER`: `points`, `opts` or `out_needed` is NULL, or `out` is NULL
  *   with `out_cap > 0`.
- * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a size formula overflows, an invalid
- *   `opts->method` code or `l1` / `l2`, or a pointer is misaligned.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a size formula overflows,
+ *   `opts->struct_size` below `sizeof(CagdReduceOptions)`, an invalid `opts->method` code
+ *   or `l1` / `l2`, or a pointer is misaligned.
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
@@ -769,10 +1335,12 @@ CagdStatus cagd_curve_reduce_batch(const double *points,
                                    size_t *out_needed);
 
 /**
- * Fills `opts` with the defaults: `method = CAGD_METHOD_CONSTRAINED_CHEBYSHEV`,
- * `target = 3`, `r = p = 0` (end points kept), `l1 = l2 = 0`, `measure = false`,
- * `space = CAGD_SPACE_EUCLIDEAN`. Call it before setting fields, so that fields added in
- * later versions get their defaults.
+ * Fills `opts` with the defaults: `struct_size = sizeof(CagdReduceOptions)`,
+ * `method = CAGD_METHOD_L2`, `target = 3`, `r = p = 0` (end points interpolated),
+ * `l1 = l2 = 0`, `measure = false`, `space = CAGD_SPACE_EUCLIDEAN`, `tolerance = 0`
+ * (must be set before a reduction to a tolerance), `continuity = 0`, `max_depth = 30`.
+ * Call it before setting fields, so that `struct_size` is right and fields added in later
+ * versions get their defaults.
  *
  * Parameters:
  * - `opts` (out): the struct to fill (caller-owned, e.g. on the stack).
@@ -1008,6 +1576,124 @@ CagdStatus cagd_tensorpatch_points(const struct CagdTensorPatch *patch,
                                    size_t *out_needed);
 
 /**
+ * Evaluates a tensor-product patch at `(u, v)` (de Casteljau along v in every row, then
+ * along u). `(u, v)` in `[0, 1]^2` is the patch; other finite values extrapolate.
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `u` (in): the first parameter (along `i`), finite.
+ * - `v` (in): the second parameter (along `j`), finite.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `dim` doubles hold
+ *   the point. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, `dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the point is in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `u` or `v` is NaN or infinite, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; `out` NULL or `out_cap` writable doubles;
+ * `out_needed` NULL or writable.
+ */
+CagdStatus cagd_tensorpatch_eval(const struct CagdTensorPatch *patch,
+                                 double u,
+                                 double v,
+                                 double *out,
+                                 size_t out_cap,
+                                 size_t *out_needed);
+
+/**
+ * Elevates a tensor-product patch from degree `(deg_u, deg_v)` to
+ * `(deg_u + r_u, deg_v + r_v)` (curve elevation of every column, then of every row). The
+ * surface is unchanged.
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `r_u` (in): degrees to add in u (0 keeps it).
+ * - `r_v` (in): degrees to add in v (0 keeps it).
+ * - `patch_out` (out): on `CAGD_OK`, the elevated patch
+ *   (`(deg_u + r_u + 1) * (deg_v + r_v + 1) * dim` doubles, read back with
+ *   `cagd_tensorpatch_points`), owned by the caller: release with
+ *   `cagd_tensorpatch_free`. Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*patch_out` holds the elevated patch.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `patch_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `deg_u + r_u > 64` or `deg_v + r_v > 64`.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; `patch_out` NULL or writable.
+ */
+CagdStatus cagd_tensorpatch_elevate(const struct CagdTensorPatch *patch,
+                                    size_t r_u,
+                                    size_t r_v,
+                                    struct CagdTensorPatch **patch_out);
+
+/**
+ * Splits a tensor-product patch at `u = s` into the pieces on `[0, s] x [0, 1]` and
+ * `[s, 1] x [0, 1]`, each reparametrised to `[0, 1]^2` (same degrees; de Casteljau on
+ * every column).
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `s` (in): the split parameter, finite, in `[0, 1]`.
+ * - `first_out` (out): on `CAGD_OK`, the piece on `[0, s]` in u.
+ * - `second_out` (out): on `CAGD_OK`, the piece on `[s, 1]` in u. Both are new handles
+ *   owned by the caller (release each with `cagd_tensorpatch_free`); neither is written
+ *   on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch`, `first_out` or `second_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `s` is NaN, infinite or outside `[0, 1]`, the two
+ *   outputs are the same address, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_tensorpatch_subdivide_u(const struct CagdTensorPatch *patch,
+                                        double s,
+                                        struct CagdTensorPatch **first_out,
+                                        struct CagdTensorPatch **second_out);
+
+/**
+ * Splits a tensor-product patch at `v = s` into the pieces on `[0, 1] x [0, s]` and
+ * `[0, 1] x [s, 1]`, each reparametrised to `[0, 1]^2` (same degrees; de Casteljau on
+ * every row).
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `s` (in): the split parameter, finite, in `[0, 1]`.
+ * - `first_out` (out): on `CAGD_OK`, the piece on `[0, s]` in v.
+ * - `second_out` (out): on `CAGD_OK`, the piece on `[s, 1]` in v. Both are new handles
+ *   owned by the caller (release each with `cagd_tensorpatch_free`); neither is written
+ *   on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch`, `first_out` or `second_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `s` is NaN, infinite or outside `[0, 1]`, the two
+ *   outputs are the same address, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_tensorpatch_subdivide_v(const struct CagdTensorPatch *patch,
+                                        double s,
+                                        struct CagdTensorPatch **first_out,
+                                        struct CagdTensorPatch **second_out);
+
+/**
  * Creates a triangular Bézier patch of degree `degree`.
  *
  * Parameters:
@@ -1103,6 +1789,94 @@ CagdStatus cagd_tripatch_points(const struct CagdTriPatch *patch,
                                 double *out,
                                 size_t out_cap,
                                 size_t *out_needed);
+
+/**
+ * Evaluates a triangular patch at `(u, v)` (triangular de Casteljau at the barycentric
+ * point `(u, v, 1 - u - v)`): `T(u, v) = sum_{i+j<=n} n!/(i! j! k!) u^i v^j w^k T_ij`,
+ * `w = 1 - u - v`, `k = n - i - j`, so `T(0, 0) = T_00`, `T(1, 0) = T_n0`,
+ * `T(0, 1) = T_0n`. `u, v >= 0`, `u + v <= 1` is the patch; other finite values
+ * extrapolate.
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `u` (in): the first parameter (weight of index `i`), finite.
+ * - `v` (in): the second parameter (weight of index `j`), finite.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `dim` doubles hold
+ *   the point. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, `dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the point is in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `u` or `v` is NaN or infinite, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; `out` NULL or `out_cap` writable doubles;
+ * `out_needed` NULL or writable.
+ */
+CagdStatus cagd_tripatch_eval(const struct CagdTriPatch *patch,
+                              double u,
+                              double v,
+                              double *out,
+                              size_t out_cap,
+                              size_t *out_needed);
+
+/**
+ * Elevates a triangular patch from degree `n` to `n + r`. The surface is unchanged.
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `r` (in): degrees to add (0 gives a copy).
+ * - `patch_out` (out): on `CAGD_OK`, the elevated patch
+ *   (`(n + r + 1) * (n + r + 2) / 2 * dim` doubles, read back with
+ *   `cagd_tripatch_points`), owned by the caller: release with `cagd_tripatch_free`. Not
+ *   written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*patch_out` holds the elevated patch.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `patch_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n + r > 64`.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; `patch_out` NULL or writable.
+ */
+CagdStatus cagd_tripatch_elevate(const struct CagdTriPatch *patch,
+                                 size_t r,
+                                 struct CagdTriPatch **patch_out);
+
+/**
+ * Splits a triangular patch into the four midpoint sub-triangles (seed 000 Theorem
+ * 14.3.1, parametrised as SPEC-reduce §5 fixes, local axes parallel to the original):
+ * - `pieces_out[0]`: corner at `(0, 0)`: `(u, v) = (u'/2, v'/2)`;
+ * - `pieces_out[1]`: corner at `(1/2, 0)`: `(u, v) = (1/2 + u'/2, v'/2)`;
+ * - `pieces_out[2]`: corner at `(0, 1/2)`: `(u, v) = (u'/2, 1/2 + v'/2)`;
+ * - `pieces_out[3]`: the middle one: `(u, v) = (1/2 - u'/2, 1/2 - v'/2)`.
+ *
+ * Parameters:
+ * - `patch` (in): the patch, degree `n`.
+ * - `pieces_out` (out): an array of 4 `CagdTriPatch *`; on `CAGD_OK` each holds a new
+ *   degree-`n` patch owned by the caller (release each with `cagd_tripatch_free`).
+ *   Nothing is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: the four pieces are written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `pieces_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; `pieces_out` NULL or an array of 4
+ * writable `CagdTriPatch *`.
+ */
+CagdStatus cagd_tripatch_subdivide_midpoint(const struct CagdTriPatch *patch,
+                                            struct CagdTriPatch **pieces_out);
 
 #ifdef __cplusplus
 }  // extern "C"

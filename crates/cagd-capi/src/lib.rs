@@ -40,7 +40,15 @@
 #[allow(unsafe_code, reason = "raw-pointer helpers of the C boundary")]
 mod boundary;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod bspline;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod bspline_arrays;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod bspline_ops;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod curve;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod curve_list;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod curve_ops;
 #[allow(
@@ -62,12 +70,28 @@ mod status;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod tensor_patch;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod tensor_patch_ops;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod tri_patch;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod tri_patch_ops;
 mod version;
 
+pub use bspline::{
+    CagdBSpline, cagd_bspline_degree, cagd_bspline_dim, cagd_bspline_domain, cagd_bspline_free,
+    cagd_bspline_is_rational, cagd_bspline_n_points, cagd_bspline_new, cagd_bspline_new_rational,
+};
+pub use bspline_arrays::{cagd_bspline_knots, cagd_bspline_points, cagd_bspline_weights};
+pub use bspline_ops::{
+    cagd_bspline_derivatives, cagd_bspline_eval, cagd_bspline_insert_knot, cagd_bspline_to_beziers,
+};
 pub use curve::{
     CagdCurve, cagd_curve_degree, cagd_curve_dim, cagd_curve_free, cagd_curve_is_rational,
     cagd_curve_new, cagd_curve_new_rational, cagd_curve_points, cagd_curve_weights,
+};
+pub use curve_list::{
+    CagdCurveList, cagd_curvelist_bound, cagd_curvelist_count, cagd_curvelist_free,
+    cagd_curvelist_get, cagd_curvelist_interval,
 };
 pub use curve_ops::{
     cagd_curve_elevate, cagd_curve_eval, cagd_curve_eval_many, cagd_curve_segment,
@@ -87,7 +111,14 @@ pub use tensor_patch::{
     CagdTensorPatch, cagd_tensorpatch_free, cagd_tensorpatch_new, cagd_tensorpatch_points,
     cagd_tensorpatch_shape,
 };
+pub use tensor_patch_ops::{
+    cagd_tensorpatch_elevate, cagd_tensorpatch_eval, cagd_tensorpatch_subdivide_u,
+    cagd_tensorpatch_subdivide_v,
+};
 pub use tri_patch::{
     CagdTriPatch, cagd_tripatch_free, cagd_tripatch_new, cagd_tripatch_points, cagd_tripatch_shape,
+};
+pub use tri_patch_ops::{
+    cagd_tripatch_elevate, cagd_tripatch_eval, cagd_tripatch_subdivide_midpoint,
 };
 pub use version::{CAGD_VERSION_MAJOR, CAGD_VERSION_MINOR, CAGD_VERSION_PATCH};

@@ -3,7 +3,7 @@
 
 use cagd_reduce::{ErrorSpace, Method, ReduceOptions};
 
-use crate::boundary::{CResult, Failure, boundary, out_ref};
+use crate::boundary::{CResult, Failure, boundary, nonnull, out_ref};
 use crate::status::CagdStatus;
 
 /// The degree-reduction methods (cagd-reduce `Method`; seed 000 chapter 14 and the
@@ -66,11 +66,25 @@ pub enum CagdErrorSpace {
 
 /// How to reduce: a plain struct the caller owns. Fill it with
 /// `cagd_reduce_options_init`, then change the fields you need.
+///
+/// Versioning rule: the first field, `struct_size`, is set by `cagd_reduce_options_init`
+/// to `sizeof(CagdReduceOptions)` of the header the caller was compiled with. Every
+/// function taking options reads it first and fails with `CAGD_ERR_INVALID_ARGUMENT` when
+/// it is smaller than the size of this first version of the struct (so a struct that was
+/// not initialised is most likely caught). Later versions only append fields; a library
+/// reads at most the fields it knows, and the fields a smaller (older) struct lacks take
+/// their defaults, so a program compiled against an older header keeps working. Never set
+/// `struct_size` by hand to anything but `sizeof(CagdReduceOptions)`.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CagdReduceOptions {
+    /// `sizeof(CagdReduceOptions)` in bytes, set by `cagd_reduce_options_init` (see the
+    /// versioning rule above).
+    pub struct_size: usize,
     /// A `CagdReduceMethod` value (an `int32_t`, so that any value a caller stores is
-    /// checked rather than undefined). Default `CAGD_METHOD_CONSTRAINED_CHEBYSHEV`.
+    /// checked rather than undefined). Default `CAGD_METHOD_L2` (with `r = p = 0`: the end
+    /// points are interpolated; among the end-interpolating methods it had the smallest
+    /// errors in our measurements).
     pub method: i32,
     /// The target degree `m`, below the source degree. Default 3.
     pub target: usize,
@@ -84,18 +98,36 @@ pub struct CagdReduceOptions {
     pub l1: f64,
     /// Tangent scale at t = 1 for `CAGD_METHOD_PERTURB_G1` (finite, `> -1`). Default 0.
     pub l2: f64,
-    /// Also measure the error by dense sampling (costs about 8000 evaluations). Default
-    /// false.
+    /// Also measure the error by dense sampling (costs about 8000 evaluations per piece).
+    /// Default false.
     pub measure: bool,
     /// A `CagdErrorSpace` value: the space of the report's numbers. Default
     /// `CAGD_SPACE_EUCLIDEAN`.
     pub space: i32,
+    /// Reduction to a tolerance only: the tolerance `delta` (model units, Euclidean) the
+    /// certified error bound must meet; finite and `> 0`. Default 0, which is rejected
+    /// (`CAGD_ERR_INVALID_ARGUMENT`): a tolerance depends on the model's size, so the
+    /// caller must choose it.
+    pub tolerance: f64,
+    /// Reduction to a tolerance only: the order `k` of parametric continuity `C^k` at the
+    /// joins of the pieces (interior knots of multiplicity `target - k`); needs
+    /// `k < target` and a method that keeps derivatives up to order `k` at both ends
+    /// (e.g. `CAGD_METHOD_L2` with `r = p = k`). Default 0 (`C^0`).
+    pub continuity: usize,
+    /// Reduction to a tolerance only: the deepest midpoint-subdivision level allowed
+    /// (pieces of length `2^-max_depth` of the parameter range). Default 30.
+    pub max_depth: usize,
 }
+
+/// The size of the first published version of `CagdReduceOptions` (this one): the
+/// smallest `struct_size` accepted.
+pub(crate) const OPTIONS_MIN_SIZE: usize = size_of::<CagdReduceOptions>();
 
 impl Default for CagdReduceOptions {
     fn default() -> Self {
         Self {
-            method: CagdReduceMethod::METHOD_CONSTRAINED_CHEBYSHEV as i32,
+            struct_size: size_of::<CagdReduceOptions>(),
+            method: CagdReduceMethod::METHOD_L2 as i32,
             target: 3,
             r: 0,
             p: 0,
@@ -103,8 +135,46 @@ impl Default for CagdReduceOptions {
             l2: 0.0,
             measure: false,
             space: CagdErrorSpace::SPACE_EUCLIDEAN as i32,
+            tolerance: 0.0,
+            continuity: 0,
+            max_depth: 30,
         }
     }
+}
+
+/// Reads the caller's options under the versioning rule of `CagdReduceOptions`: NULL →
+/// `CAGD_ERR_NULL_POINTER`; `struct_size` below the first version's size →
+/// `CAGD_ERR_INVALID_ARGUMENT`; the fields beyond `struct_size` take their defaults.
+///
+/// # Safety
+/// `opts` must be NULL or point to at least `opts->struct_size` readable bytes (at least
+/// a `size_t`) laid out as `CagdReduceOptions`.
+pub(crate) unsafe fn read_options(opts: *const CagdReduceOptions) -> CResult<CagdReduceOptions> {
+    nonnull(opts, "opts")?;
+    if !opts.is_aligned() {
+        return Err(Failure::invalid("argument `opts` is misaligned"));
+    }
+    // SAFETY: non-NULL and aligned; the first field is a size_t by the caller's contract.
+    let size = unsafe { opts.cast::<usize>().read() };
+    if size < OPTIONS_MIN_SIZE {
+        return Err(Failure::invalid(format!(
+            "opts->struct_size = {size} is below sizeof(CagdReduceOptions) = \
+             {OPTIONS_MIN_SIZE}: initialise the options with cagd_reduce_options_init"
+        )));
+    }
+    // Copy the known prefix over the defaults; today the whole struct is known, so this
+    // copies all of it. When fields are appended, a smaller (older) struct keeps the
+    // defaults of the fields it lacks.
+    let mut out = CagdReduceOptions::default();
+    let n = size.min(size_of::<CagdReduceOptions>());
+    // SAFETY: `n` readable bytes at `opts` by the caller's contract; `out` has at least `n`
+    // bytes; the regions do not overlap (`out` is a local). Every field is plain data whose
+    // bytes a C caller wrote through the same layout.
+    unsafe {
+        std::ptr::copy_nonoverlapping(opts.cast::<u8>(), (&raw mut out).cast::<u8>(), n);
+    }
+    out.struct_size = size;
+    Ok(out)
 }
 
 impl CagdReduceOptions {
@@ -135,32 +205,39 @@ impl CagdReduceOptions {
         })
     }
 
+    /// The error space these options name.
+    ///
+    /// # Errors
+    /// `CAGD_ERR_INVALID_ARGUMENT` for a `space` code that is not a `CagdErrorSpace`.
+    pub(crate) fn space(&self) -> CResult<ErrorSpace> {
+        match self.space {
+            0 => Ok(ErrorSpace::Euclidean),
+            1 => Ok(ErrorSpace::Homogeneous),
+            other => Err(Failure::invalid(format!(
+                "opts->space = {other} is not a CagdErrorSpace (0 or 1)"
+            ))),
+        }
+    }
+
     /// The cagd-reduce options these options describe.
     ///
     /// # Errors
     /// `CAGD_ERR_INVALID_ARGUMENT` for an unknown `method` or `space` code.
     pub(crate) fn rust_options(&self) -> CResult<ReduceOptions> {
-        let space = match self.space {
-            0 => ErrorSpace::Euclidean,
-            1 => ErrorSpace::Homogeneous,
-            other => {
-                return Err(Failure::invalid(format!(
-                    "opts->space = {other} is not a CagdErrorSpace (0 or 1)"
-                )));
-            }
-        };
         Ok(ReduceOptions {
             measure: self.measure,
-            space,
+            space: self.space()?,
             ..ReduceOptions::new(self.method()?, self.target)
         })
     }
 }
 
-/// Fills `opts` with the defaults: `method = CAGD_METHOD_CONSTRAINED_CHEBYSHEV`,
-/// `target = 3`, `r = p = 0` (end points kept), `l1 = l2 = 0`, `measure = false`,
-/// `space = CAGD_SPACE_EUCLIDEAN`. Call it before setting fields, so that fields added in
-/// later versions get their defaults.
+/// Fills `opts` with the defaults: `struct_size = sizeof(CagdReduceOptions)`,
+/// `method = CAGD_METHOD_L2`, `target = 3`, `r = p = 0` (end points interpolated),
+/// `l1 = l2 = 0`, `measure = false`, `space = CAGD_SPACE_EUCLIDEAN`, `tolerance = 0`
+/// (must be set before a reduction to a tolerance), `continuity = 0`, `max_depth = 30`.
+/// Call it before setting fields, so that `struct_size` is right and fields added in later
+/// versions get their defaults.
 ///
 /// Parameters:
 /// - `opts` (out): the struct to fill (caller-owned, e.g. on the stack).
@@ -217,6 +294,11 @@ mod tests {
         }
         assert_eq!(CagdErrorSpace::SPACE_EUCLIDEAN as i32, 0);
         assert_eq!(CagdErrorSpace::SPACE_HOMOGENEOUS as i32, 1);
+        assert_eq!(
+            CagdReduceOptions::default().method().unwrap().name(),
+            "l2",
+            "the default method"
+        );
         for bad in [-1, 12, i32::MAX] {
             let opts = CagdReduceOptions {
                 method: bad,
@@ -227,5 +309,30 @@ mod tests {
                 CagdStatus::ERR_INVALID_ARGUMENT
             );
         }
+    }
+}
+
+#[cfg(test)]
+mod size_tests {
+    use super::*;
+
+    #[test]
+    fn struct_size_rule() {
+        let mut o = CagdReduceOptions::default();
+        assert_eq!(o.struct_size, size_of::<CagdReduceOptions>());
+        o.target = 7;
+        // SAFETY: a valid, initialised struct.
+        let r = unsafe { read_options(&o) }.unwrap();
+        assert_eq!(r, o);
+        o.struct_size = OPTIONS_MIN_SIZE - 1;
+        // SAFETY: as above.
+        let e = unsafe { read_options(&o) }.unwrap_err();
+        assert_eq!(e.status, CagdStatus::ERR_INVALID_ARGUMENT);
+        o.struct_size = 0;
+        // SAFETY: as above.
+        assert!(unsafe { read_options(&o) }.is_err());
+        // SAFETY: NULL is allowed by the contract.
+        let e = unsafe { read_options(std::ptr::null()) }.unwrap_err();
+        assert_eq!(e.status, CagdStatus::ERR_NULL_POINTER);
     }
 }
