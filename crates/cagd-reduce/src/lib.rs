@@ -41,6 +41,13 @@
 //! (or the convex-hull bound of the composed operator, whichever is smaller). The G1
 //! perturbation with optimal `l1, l2` is not linear: [`reduce_g1_optimal`].
 //!
+//! ## Reduction to a tolerance
+//!
+//! [`reduce_to_tolerance`] splits the curve adaptively and reduces every piece with any
+//! method until each certified bound meets the tolerance, and returns a degree-`m` B-spline
+//! with `C^k` joins (interior knot multiplicity `m - k`); [`reduce_to_tolerance_alg_14_2_1`]
+//! is seed 000's stepwise perturbation algorithm as corrected in SPEC-reduce §2.2.
+//!
 //! ## How the operators are computed
 //!
 //! Every operator is computed in exact rational arithmetic (`BigRational`) from the seed's
@@ -65,6 +72,7 @@
 //! amplification is intrinsic to the problem, SPEC-reduce §6).
 #![forbid(unsafe_code)]
 
+mod alg_14_2_1;
 mod batch;
 mod chebyshev;
 mod ends;
@@ -76,9 +84,14 @@ mod measure;
 mod method;
 mod one_step;
 mod operator;
+mod piecewise;
 mod reduce;
+mod tolerance;
+#[cfg(test)]
+mod tolerance_tests;
 mod wn_table;
 
+pub use alg_14_2_1::{reduce_to_tolerance_alg_14_2_1, subdivision_levels};
 pub use batch::reduce_batch;
 pub use cagd_core::{Error, Result};
 pub use exact_degree::{DEFAULT_REL_TOL, exact_degree, reduce_exact};
@@ -86,5 +99,7 @@ pub use g1::reduce_g1_optimal;
 pub use measure::{SAMPLES, max_deviation};
 pub use method::Method;
 pub use operator::{Operator, operator};
+pub use piecewise::{PiecewiseReduction, PiecewiseReport, ReducedPiece};
 pub use reduce::{ErrorSpace, ReduceOptions, Reduction, Report, reduce, reduce_with};
+pub use tolerance::{DEFAULT_MAX_DEPTH, MAX_PIECES, ToleranceOptions, reduce_to_tolerance};
 pub use wn_table::perturbation_error_factor;

@@ -1,0 +1,167 @@
+//! Command-line parsing of the `cagd` command (no dependency: the grammar is small and the
+//! messages are ours).
+
+use std::path::PathBuf;
+
+/// Usage text printed by `cagd --help` and after a usage error.
+pub(crate) const USAGE: &str = "\
+usage:
+  cagd reduce --to M[,N] [--method NAME] [--r R] [--p P] [--tol T] [--continuity K]
+              [-i FILE] [-o FILE] [--svg FILE]
+  cagd demo [--out DIR]
+  cagd --help
+
+reduce reads one JSON object or an array of objects (stdin by default) and writes JSON
+(stdout by default). Methods: forrest, farin, piegl, perturbation, perturbation-g1, pinv,
+pinv-ends, chebyshev (with --r/--p), eck, watkins-worsey, bogacki, l2 (with --r/--p).
+--tol T turns on reduction to a tolerance (pieces within T, joined with C^K, K from
+--continuity). --to M,N gives a tensor patch's target degrees (--to M means M in both).
+";
+
+/// Options of `cagd reduce`.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct ReduceArgs {
+    pub(crate) to: (usize, Option<usize>),
+    pub(crate) method: Option<String>,
+    pub(crate) r: Option<i64>,
+    pub(crate) p: Option<i64>,
+    pub(crate) tol: Option<f64>,
+    pub(crate) continuity: Option<usize>,
+    pub(crate) input: Option<PathBuf>,
+    pub(crate) output: Option<PathBuf>,
+    pub(crate) svg: Option<PathBuf>,
+}
+
+/// A parsed command line.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Command {
+    Reduce(ReduceArgs),
+    Demo { out: PathBuf },
+    Help,
+}
+
+fn value<'a>(it: &mut impl Iterator<Item = &'a String>, flag: &str) -> Result<&'a str, String> {
+    it.next()
+        .map(String::as_str)
+        .ok_or_else(|| format!("{flag} needs a value"))
+}
+
+fn parse_num<T: std::str::FromStr>(s: &str, flag: &str) -> Result<T, String> {
+    s.parse()
+        .map_err(|_| format!("{flag}: cannot read {s:?} as a number"))
+}
+
+/// Parses the arguments after the program name.
+pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
+    let mut it = args.iter();
+    let Some(cmd) = it.next() else {
+        return Ok(Command::Help);
+    };
+    match cmd.as_str() {
+        "--help" | "-h" | "help" => Ok(Command::Help),
+        "demo" => {
+            let mut out = PathBuf::from("cagd-demo");
+            while let Some(a) = it.next() {
+                match a.as_str() {
+                    "--out" => out = PathBuf::from(value(&mut it, a)?),
+                    other => return Err(format!("demo: unknown argument {other:?}")),
+                }
+            }
+            Ok(Command::Demo { out })
+        }
+        "reduce" => {
+            let mut r = ReduceArgs {
+                to: (0, None),
+                method: None,
+                r: None,
+                p: None,
+                tol: None,
+                continuity: None,
+                input: None,
+                output: None,
+                svg: None,
+            };
+            let mut have_to = false;
+            while let Some(a) = it.next() {
+                match a.as_str() {
+                    "--to" => {
+                        let v = value(&mut it, a)?;
+                        r.to = match v.split_once(',') {
+                            Some((m, n)) => (parse_num(m, a)?, Some(parse_num(n, a)?)),
+                            None => (parse_num(v, a)?, None),
+                        };
+                        have_to = true;
+                    }
+                    "--method" => r.method = Some(value(&mut it, a)?.to_string()),
+                    "--r" => r.r = Some(parse_num(value(&mut it, a)?, a)?),
+                    "--p" => r.p = Some(parse_num(value(&mut it, a)?, a)?),
+                    "--tol" => {
+                        let t: f64 = parse_num(value(&mut it, a)?, a)?;
+                        if !(t.is_finite() && t > 0.0) {
+                            return Err(format!("--tol: {t} must be finite and > 0"));
+                        }
+                        r.tol = Some(t);
+                    }
+                    "--continuity" => r.continuity = Some(parse_num(value(&mut it, a)?, a)?),
+                    "-i" | "--input" => r.input = Some(PathBuf::from(value(&mut it, a)?)),
+                    "-o" | "--output" => r.output = Some(PathBuf::from(value(&mut it, a)?)),
+                    "--svg" => r.svg = Some(PathBuf::from(value(&mut it, a)?)),
+                    other => return Err(format!("reduce: unknown argument {other:?}")),
+                }
+            }
+            if !have_to {
+                return Err("reduce: --to M is required".to_string());
+            }
+            Ok(Command::Reduce(r))
+        }
+        other => Err(format!("unknown command {other:?}")),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn args(s: &str) -> Vec<String> {
+        s.split_whitespace().map(String::from).collect()
+    }
+
+    #[test]
+    fn reduce_arguments() {
+        let Command::Reduce(r) = parse(&args(
+            "reduce --to 3,2 --method l2 --r 1 --p -1 --tol 1e-3 -i a.json",
+        ))
+        .unwrap() else {
+            panic!("not reduce");
+        };
+        assert_eq!(r.to, (3, Some(2)));
+        assert_eq!(r.method.as_deref(), Some("l2"));
+        assert_eq!((r.r, r.p, r.tol), (Some(1), Some(-1), Some(1e-3)));
+        assert_eq!(r.input, Some(PathBuf::from("a.json")));
+    }
+
+    #[test]
+    fn usage_errors() {
+        assert_eq!(
+            parse(&args("reduce")).unwrap_err(),
+            "reduce: --to M is required"
+        );
+        assert_eq!(
+            parse(&args("reduce --to x")).unwrap_err(),
+            "--to: cannot read \"x\" as a number"
+        );
+        assert_eq!(
+            parse(&args("reduce --to 3 --tol -1")).unwrap_err(),
+            "--tol: -1 must be finite and > 0"
+        );
+        assert_eq!(
+            parse(&args("frobnicate")).unwrap_err(),
+            "unknown command \"frobnicate\""
+        );
+        assert_eq!(
+            parse(&args("reduce --to")).unwrap_err(),
+            "--to needs a value"
+        );
+        assert_eq!(parse(&[]).unwrap(), Command::Help);
+    }
+}

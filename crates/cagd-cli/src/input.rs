@@ -1,0 +1,315 @@
+//! Reading the JSON shapes of the `cagd` command.
+//!
+//! Shapes (kept stable; later versions only add fields):
+//! `{"type":"bezier","points":[[x,y,...],...],"weights":[...]}` (weights optional),
+//! `{"type":"bspline","degree":p,"knots":[...],"points":[...],"weights":[...]}`,
+//! `{"type":"tensor","degree":[m,n],"points":[...]}` (i-major),
+//! `{"type":"triangle","degree":n,"points":[...]}` (i-major).
+//!
+//! Every error names the JSON path of the offending field (`input[2].points[3][1]`).
+
+use std::fmt;
+
+use serde_json::Value;
+
+/// A bad input: the JSON path of the field and what is wrong with it.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct InputError {
+    pub(crate) path: String,
+    pub(crate) message: String,
+}
+
+impl fmt::Display for InputError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.path, self.message)
+    }
+}
+
+impl InputError {
+    pub(crate) fn new(path: impl Into<String>, message: impl Into<String>) -> Self {
+        Self {
+            path: path.into(),
+            message: message.into(),
+        }
+    }
+}
+
+/// A point list read from JSON: flat row-major coordinates and the dimension.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct PointList {
+    pub(crate) coords: Vec<f64>,
+    pub(crate) dim: usize,
+}
+
+impl PointList {
+    pub(crate) fn len(&self) -> usize {
+        self.coords.len() / self.dim
+    }
+}
+
+/// One object of the input, before it is validated by cagd-core.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum RawShape {
+    Bezier {
+        points: PointList,
+        weights: Option<Vec<f64>>,
+    },
+    BSpline {
+        degree: usize,
+        knots: Vec<f64>,
+        points: PointList,
+        weights: Option<Vec<f64>>,
+    },
+    Tensor {
+        degree: (usize, usize),
+        points: PointList,
+    },
+    Triangle {
+        degree: usize,
+        points: PointList,
+    },
+}
+
+/// Reads the whole input: one object, or an array of objects. Paths start with `input`
+/// (one object) or `input[i]`.
+pub(crate) fn parse_input(text: &str) -> Result<Vec<RawShape>, InputError> {
+    let value: Value = serde_json::from_str(text)
+        .map_err(|e| InputError::new("input", format!("not valid JSON: {e}")))?;
+    match &value {
+        Value::Array(items) => items
+            .iter()
+            .enumerate()
+            .map(|(i, v)| parse_shape(v, &format!("input[{i}]")))
+            .collect(),
+        Value::Object(_) => Ok(vec![parse_shape(&value, "input")?]),
+        _ => Err(InputError::new(
+            "input",
+            "expected an object or an array of objects",
+        )),
+    }
+}
+
+fn field<'a>(obj: &'a Value, path: &str, name: &str) -> Result<&'a Value, InputError> {
+    obj.get(name)
+        .ok_or_else(|| InputError::new(format!("{path}.{name}"), "missing field"))
+}
+
+fn number(v: &Value, path: &str) -> Result<f64, InputError> {
+    let x = v
+        .as_f64()
+        .ok_or_else(|| InputError::new(path, format!("expected a number, got {v}")))?;
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        Err(InputError::new(path, "number is not finite"))
+    }
+}
+
+fn count(v: &Value, path: &str) -> Result<usize, InputError> {
+    v.as_u64()
+        .and_then(|x| usize::try_from(x).ok())
+        .ok_or_else(|| InputError::new(path, format!("expected a non-negative integer, got {v}")))
+}
+
+fn numbers(v: &Value, path: &str) -> Result<Vec<f64>, InputError> {
+    let arr = v
+        .as_array()
+        .ok_or_else(|| InputError::new(path, "expected an array of numbers"))?;
+    arr.iter()
+        .enumerate()
+        .map(|(i, x)| number(x, &format!("{path}[{i}]")))
+        .collect()
+}
+
+fn point_list(v: &Value, path: &str) -> Result<PointList, InputError> {
+    let arr = v
+        .as_array()
+        .ok_or_else(|| InputError::new(path, "expected an array of points"))?;
+    if arr.is_empty() {
+        return Err(InputError::new(path, "expected at least one point"));
+    }
+    let mut coords = Vec::new();
+    let mut dim = 0;
+    for (i, p) in arr.iter().enumerate() {
+        let pp = format!("{path}[{i}]");
+        let c = numbers(p, &pp)?;
+        if i == 0 {
+            if c.is_empty() {
+                return Err(InputError::new(pp, "a point needs at least one coordinate"));
+            }
+            dim = c.len();
+        } else if c.len() != dim {
+            return Err(InputError::new(
+                pp,
+                format!("has {} coordinates, the first point has {dim}", c.len()),
+            ));
+        }
+        coords.extend(c);
+    }
+    Ok(PointList { coords, dim })
+}
+
+fn optional_weights(obj: &Value, path: &str, n: usize) -> Result<Option<Vec<f64>>, InputError> {
+    match obj.get("weights") {
+        None | Some(Value::Null) => Ok(None),
+        Some(w) => {
+            let wp = format!("{path}.weights");
+            let w = numbers(w, &wp)?;
+            if w.len() != n {
+                return Err(InputError::new(
+                    wp,
+                    format!("has {} entries, expected one per point ({n})", w.len()),
+                ));
+            }
+            if let Some(i) = w.iter().position(|x| *x <= 0.0) {
+                return Err(InputError::new(
+                    format!("{wp}[{i}]"),
+                    format!("weight {} must be > 0", w[i]),
+                ));
+            }
+            Ok(Some(w))
+        }
+    }
+}
+
+fn parse_shape(obj: &Value, path: &str) -> Result<RawShape, InputError> {
+    if !obj.is_object() {
+        return Err(InputError::new(path, "expected an object"));
+    }
+    let ty = field(obj, path, "type")?;
+    let ty = ty
+        .as_str()
+        .ok_or_else(|| InputError::new(format!("{path}.type"), "expected a string"))?;
+    let points = point_list(field(obj, path, "points")?, &format!("{path}.points"))?;
+    match ty {
+        "bezier" => {
+            let weights = optional_weights(obj, path, points.len())?;
+            Ok(RawShape::Bezier { points, weights })
+        }
+        "bspline" => {
+            let degree = count(field(obj, path, "degree")?, &format!("{path}.degree"))?;
+            let knots = numbers(field(obj, path, "knots")?, &format!("{path}.knots"))?;
+            let expected = points.len() + degree + 1;
+            if knots.len() != expected {
+                return Err(InputError::new(
+                    format!("{path}.knots"),
+                    format!(
+                        "has {} knots, expected n_points + degree + 1 = {expected}",
+                        knots.len()
+                    ),
+                ));
+            }
+            let weights = optional_weights(obj, path, points.len())?;
+            Ok(RawShape::BSpline {
+                degree,
+                knots,
+                points,
+                weights,
+            })
+        }
+        "tensor" => {
+            let dp = format!("{path}.degree");
+            let d = field(obj, path, "degree")?;
+            let arr = d
+                .as_array()
+                .filter(|a| a.len() == 2)
+                .ok_or_else(|| InputError::new(&dp, "expected [m, n]"))?;
+            let m = count(&arr[0], &format!("{dp}[0]"))?;
+            let n = count(&arr[1], &format!("{dp}[1]"))?;
+            let expected = (m + 1).saturating_mul(n + 1);
+            if points.len() != expected {
+                return Err(InputError::new(
+                    format!("{path}.points"),
+                    format!(
+                        "has {} points, expected (m + 1)(n + 1) = {expected}",
+                        points.len()
+                    ),
+                ));
+            }
+            Ok(RawShape::Tensor {
+                degree: (m, n),
+                points,
+            })
+        }
+        "triangle" => {
+            let n = count(field(obj, path, "degree")?, &format!("{path}.degree"))?;
+            let expected = (n + 1).saturating_mul(n + 2) / 2;
+            if points.len() != expected {
+                return Err(InputError::new(
+                    format!("{path}.points"),
+                    format!(
+                        "has {} points, expected (n + 1)(n + 2) / 2 = {expected}",
+                        points.len()
+                    ),
+                ));
+            }
+            Ok(RawShape::Triangle { degree: n, points })
+        }
+        other => Err(InputError::new(
+            format!("{path}.type"),
+            format!("unknown type {other:?} (expected bezier, bspline, tensor or triangle)"),
+        )),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reads_one_bezier() {
+        let s = parse_input(r#"{"type":"bezier","points":[[0,0],[1,2],[3,1]]}"#).unwrap();
+        assert_eq!(
+            s,
+            vec![RawShape::Bezier {
+                points: PointList {
+                    coords: vec![0.0, 0.0, 1.0, 2.0, 3.0, 1.0],
+                    dim: 2
+                },
+                weights: None
+            }]
+        );
+    }
+
+    #[test]
+    fn errors_name_the_field() {
+        let cases = [
+            (r#"{"type":"bezier"}"#, "input.points: missing field"),
+            (
+                r#"[{"type":"bezier","points":[[0,0],[1]]}]"#,
+                "input[0].points[1]: has 1 coordinates, the first point has 2",
+            ),
+            (
+                r#"{"type":"bezier","points":[[0,"a"]]}"#,
+                "input.points[0][1]: expected a number, got \"a\"",
+            ),
+            (
+                r#"{"type":"bezier","points":[[0],[1]],"weights":[1,-2]}"#,
+                "input.weights[1]: weight -2 must be > 0",
+            ),
+            (
+                r#"{"type":"bspline","degree":1,"knots":[0,1],"points":[[0],[1]]}"#,
+                "input.knots: has 2 knots, expected n_points + degree + 1 = 4",
+            ),
+            (
+                r#"{"type":"tensor","degree":[1,1],"points":[[0],[1]]}"#,
+                "input.points: has 2 points, expected (m + 1)(n + 1) = 4",
+            ),
+            (
+                r#"{"type":"circle","points":[[0]]}"#,
+                "input.type: unknown type \"circle\" (expected bezier, bspline, tensor or triangle)",
+            ),
+            (
+                r#"{"type":"bezier","points":[]}"#,
+                "input.points: expected at least one point",
+            ),
+            (
+                "[1,",
+                "input: not valid JSON: EOF while parsing a value at line 1 column 3",
+            ),
+        ];
+        for (text, want) in cases {
+            assert_eq!(parse_input(text).unwrap_err().to_string(), want, "{text}");
+        }
+    }
+}

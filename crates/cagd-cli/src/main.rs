@@ -1,0 +1,137 @@
+//! The `cagd` command: degree reduction of Bézier / B-spline curves and patches from JSON
+//! files, with SVG pictures, and `cagd demo`, the seeds' worked examples on built-in data.
+//!
+//! Exit codes: 0 success; 2 bad input, bad usage or a reduction that cannot be done as asked
+//! (one line on stderr naming the field or option and index); 1 an I/O failure.
+
+mod args;
+mod demo;
+mod input;
+mod methods;
+mod picture;
+mod reduce_cmd;
+mod shape;
+mod svg;
+
+use std::io::{Read, Write};
+use std::path::Path;
+use std::process::ExitCode;
+
+use serde_json::Value;
+
+fn read_input(path: Option<&Path>) -> Result<String, String> {
+    let mut text = String::new();
+    match path {
+        Some(p) => {
+            text = std::fs::read_to_string(p).map_err(|e| format!("{}: {e}", p.display()))?;
+        }
+        None => {
+            std::io::stdin()
+                .read_to_string(&mut text)
+                .map_err(|e| format!("stdin: {e}"))?;
+        }
+    }
+    Ok(text)
+}
+
+fn write_output(path: Option<&Path>, text: &str) -> Result<(), String> {
+    match path {
+        Some(p) => std::fs::write(p, text).map_err(|e| format!("{}: {e}", p.display())),
+        None => {
+            let mut out = std::io::stdout().lock();
+            out.write_all(text.as_bytes())
+                .and_then(|()| out.flush())
+                .map_err(|e| format!("stdout: {e}"))
+        }
+    }
+}
+
+fn reduce(args: &args::ReduceArgs) -> ExitCode {
+    let text = match read_input(args.input.as_deref()) {
+        Ok(t) => t,
+        Err(e) => {
+            eprintln!("cagd: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let single = text.trim_start().starts_with('{');
+    let raws = match input::parse_input(&text) {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("cagd: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let mut shapes = Vec::with_capacity(raws.len());
+    for (i, raw) in raws.into_iter().enumerate() {
+        let path = if single {
+            "input".to_string()
+        } else {
+            format!("input[{i}]")
+        };
+        match shape::Shape::build(raw, &path) {
+            Ok(s) => shapes.push((path, s)),
+            Err(e) => {
+                eprintln!("cagd: {e}");
+                return ExitCode::from(2);
+            }
+        }
+    }
+    let results = match reduce_cmd::run(&shapes, args) {
+        Ok(r) => r,
+        Err(f) => {
+            eprintln!("cagd: {}: {}", f.path, f.message);
+            return ExitCode::from(2);
+        }
+    };
+    if let Some(svg_path) = &args.svg {
+        let rows: Vec<_> = results
+            .iter()
+            .zip(&shapes)
+            .filter_map(|(o, (path, _))| o.pair.as_ref().map(|(a, b)| picture::panels(path, a, b)))
+            .filter(|row| !row.is_empty())
+            .collect();
+        if let Err(e) = write_output(Some(svg_path), &svg::render(&rows)) {
+            eprintln!("cagd: {e}");
+            return ExitCode::from(1);
+        }
+    }
+    let values: Vec<Value> = results.into_iter().map(|o| o.json).collect();
+    let json = if single && values.len() == 1 {
+        values.into_iter().next().unwrap_or(Value::Null)
+    } else {
+        Value::Array(values)
+    };
+    let mut text = serde_json::to_string_pretty(&json).unwrap_or_default();
+    text.push('\n');
+    match write_output(args.output.as_deref(), &text) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("cagd: {e}");
+            ExitCode::from(1)
+        }
+    }
+}
+
+fn main() -> ExitCode {
+    let argv: Vec<String> = std::env::args().skip(1).collect();
+    match args::parse(&argv) {
+        Ok(args::Command::Help) => {
+            print!("{}", args::USAGE);
+            ExitCode::SUCCESS
+        }
+        Ok(args::Command::Reduce(r)) => reduce(&r),
+        Ok(args::Command::Demo { out }) => match demo::run(&out) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("cagd: demo: {e}");
+                ExitCode::from(1)
+            }
+        },
+        Err(msg) => {
+            eprintln!("cagd: {msg}");
+            eprint!("{}", args::USAGE);
+            ExitCode::from(2)
+        }
+    }
+}

@@ -1,0 +1,107 @@
+//! Validated shapes (cagd-core objects) built from the raw JSON input, and their JSON output.
+
+use cagd_core::{BezierCurve, Error, TensorPatch, TriPatch};
+use serde_json::{Value, json};
+
+use crate::input::{InputError, PointList, RawShape};
+
+/// One validated input object.
+#[derive(Debug, Clone)]
+pub(crate) enum Shape {
+    Bezier(BezierCurve),
+    Tensor(TensorPatch),
+    Triangle(TriPatch),
+}
+
+/// Turns a cagd-core validation error into an input error naming the JSON field.
+pub(crate) fn locate(path: &str, e: &Error) -> InputError {
+    let at = match e {
+        Error::NonFinite { index, coord, .. } => format!("{path}.points[{index}][{coord}]"),
+        Error::NonPositiveWeight { index, .. } => format!("{path}.weights[{index}]"),
+        Error::NonFiniteKnot { index, .. } | Error::KnotsNotNondecreasing { index } => {
+            format!("{path}.knots[{index}]")
+        }
+        Error::KnotCount { .. } | Error::MultiplicityAboveDegree { .. } => format!("{path}.knots"),
+        Error::DegreeOutOfRange { .. } => format!("{path}.degree"),
+        Error::LengthMismatch { what, .. } if what.starts_with("weights") => {
+            format!("{path}.weights")
+        }
+        _ => path.to_string(),
+    };
+    InputError::new(at, e.to_string())
+}
+
+impl Shape {
+    /// Validates a raw shape with cagd-core; `path` names it in errors.
+    pub(crate) fn build(raw: RawShape, path: &str) -> Result<Shape, InputError> {
+        let shape = match raw {
+            RawShape::Bezier { points, weights } => {
+                let PointList { coords, dim } = points;
+                let c = match weights {
+                    None => BezierCurve::new(coords, dim),
+                    Some(w) => BezierCurve::new_rational(coords, w, dim),
+                };
+                Shape::Bezier(c.map_err(|e| locate(path, &e))?)
+            }
+            RawShape::Tensor { degree, points } => Shape::Tensor(
+                TensorPatch::new(points.coords, degree.0, degree.1, points.dim)
+                    .map_err(|e| locate(path, &e))?,
+            ),
+            RawShape::Triangle { degree, points } => Shape::Triangle(
+                TriPatch::new(points.coords, degree, points.dim).map_err(|e| locate(path, &e))?,
+            ),
+            RawShape::BSpline { .. } => {
+                return Err(InputError::new(
+                    format!("{path}.type"),
+                    "bspline input is not supported by this build",
+                ));
+            }
+        };
+        Ok(shape)
+    }
+
+    /// The shape in the input JSON form.
+    pub(crate) fn to_json(&self) -> Value {
+        match self {
+            Shape::Bezier(c) => {
+                let mut v = json!({"type": "bezier", "points": rows(c.points(), c.dim())});
+                if let Some(w) = c.weights() {
+                    v["weights"] = json!(w);
+                }
+                v
+            }
+            Shape::Tensor(p) => {
+                let (m, n) = p.degrees();
+                json!({"type": "tensor", "degree": [m, n], "points": rows(p.points(), p.dim())})
+            }
+            Shape::Triangle(t) => {
+                json!({"type": "triangle", "degree": t.degree(), "points": rows(t.points(), t.dim())})
+            }
+        }
+    }
+}
+
+/// A flat row-major buffer as a JSON list of points.
+pub(crate) fn rows(flat: &[f64], dim: usize) -> Value {
+    Value::Array(flat.chunks(dim).map(|p| json!(p)).collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::input::parse_input;
+
+    #[test]
+    fn round_trip_and_core_errors_are_located() {
+        let text = r#"{"type":"bezier","points":[[0.0,0.5],[1.0,2.0]],"weights":[1.0,2.0]}"#;
+        let raw = parse_input(text).unwrap().remove(0);
+        let s = Shape::build(raw, "input").unwrap();
+        assert_eq!(s.to_json(), serde_json::from_str::<Value>(text).unwrap());
+        let long: Vec<Value> = (0..66).map(|i| json!([i])).collect();
+        let text = json!({"type": "bezier", "points": long}).to_string();
+        let raw = parse_input(&text).unwrap().remove(0);
+        let e = Shape::build(raw, "input").unwrap_err();
+        assert_eq!(e.path, "input.degree");
+        assert!(e.message.contains("0..=64"), "{}", e.message);
+    }
+}

@@ -1,0 +1,186 @@
+//! Runs the `cagd` binary on files and compares its JSON with the spec vectors and with the
+//! library; checks the one-line errors and exit codes for bad input.
+
+use std::io::Write;
+use std::process::{Command, Output, Stdio};
+
+use cagd_testkit::serde_json::{self, Value, json};
+use cagd_testkit::{assert_close, flat, vector};
+
+fn cagd(args: &[&str], stdin: &str) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_cagd"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("cagd runs");
+    child
+        .stdin
+        .take()
+        .expect("stdin")
+        .write_all(stdin.as_bytes())
+        .expect("write stdin");
+    child.wait_with_output().expect("cagd finishes")
+}
+
+fn json_out(o: &Output) -> Value {
+    assert!(
+        o.status.success(),
+        "cagd failed: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    serde_json::from_slice(&o.stdout).expect("stdout is JSON")
+}
+
+fn bezier(points: &Value) -> String {
+    json!({"type": "bezier", "points": points}).to_string()
+}
+
+#[test]
+fn spec_vectors_through_the_command() {
+    // (vector id, method, extra args, expected field)
+    let cases: &[(&str, &str, &[&str])] = &[
+        ("forrest-1", "forrest", &[]),
+        ("farin-1", "farin", &[]),
+        ("eck-1", "eck", &[]),
+        ("piegl-tiller-n8", "piegl", &[]),
+        ("perturb-curve-1", "perturbation", &[]),
+        ("ginv-n7-m3-free", "pinv", &[]),
+        ("ginv-n7-m3-ends", "pinv-ends", &[]),
+        (
+            "cheb-ends-n15-m10-r1-p1",
+            "chebyshev",
+            &["--r", "1", "--p", "1"],
+        ),
+        ("cheb-trunc-n7-m4", "bogacki", &[]),
+        ("hermite-n7-m3", "chebyshev", &["--r", "1", "--p", "1"]),
+    ];
+    for (id, method, extra) in cases {
+        let v = vector("vectors-reduce.json", id);
+        let p = &v["input"]["P"];
+        let n = p.as_array().expect("points").len() - 1;
+        let m = v["params"]["m"]
+            .as_u64()
+            .map_or(n - 1, |m| usize::try_from(m).expect("small"));
+        let ms = m.to_string();
+        let mut args = vec!["reduce", "--to", ms.as_str(), "--method", method];
+        args.extend_from_slice(extra);
+        let out = json_out(&cagd(&args, &bezier(p)));
+        let tol = v["tol"].as_f64().expect("tol");
+        assert_close(id, &flat(&out["points"]), &flat(&v["expected"]["Q"]), tol);
+        let report = &out["report"];
+        assert_eq!(report["degree_from"], n, "{id}");
+        assert_eq!(report["degree_to"], m, "{id}");
+        let (bound, measured) = (
+            report["error_bound"].as_f64().expect("bound"),
+            report["max_error"].as_f64().expect("measured"),
+        );
+        assert!(
+            measured <= bound,
+            "{id}: measured {measured} > bound {bound}"
+        );
+    }
+}
+
+#[test]
+fn arrays_in_arrays_out_and_files() {
+    let dir = std::env::temp_dir().join(format!("cagd-cli-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let input = dir.join("in.json");
+    let output = dir.join("out.json");
+    let svg = dir.join("out.svg");
+    let curves = json!([
+        {"type": "bezier", "points": [[0, 0], [1, 3], [3, 4], [5, 1], [6, 5]]},
+        {"type": "bezier", "points": [[0, 0, 0], [1, 2, 1], [2, 3, -1], [4, 3, 0]],
+         "weights": [1, 2, 2, 1]}
+    ]);
+    std::fs::write(&input, curves.to_string()).expect("write input");
+    let o = cagd(
+        &[
+            "reduce",
+            "--to",
+            "2",
+            "-i",
+            input.to_str().expect("utf8"),
+            "-o",
+            output.to_str().expect("utf8"),
+            "--svg",
+            svg.to_str().expect("utf8"),
+        ],
+        "",
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let out: Value =
+        serde_json::from_str(&std::fs::read_to_string(&output).expect("output")).expect("JSON");
+    let arr = out.as_array().expect("array in, array out");
+    assert_eq!(arr.len(), 2);
+    assert_eq!(arr[0]["points"].as_array().expect("points").len(), 3);
+    assert_eq!(
+        arr[1]["weights"]
+            .as_array()
+            .expect("rational stays rational")
+            .len(),
+        3
+    );
+    assert_eq!(arr[1]["report"]["space"], "euclidean");
+    let picture = std::fs::read_to_string(&svg).expect("svg written");
+    assert!(picture.starts_with("<svg") && picture.contains("<polyline"));
+    std::fs::remove_dir_all(&dir).expect("cleanup");
+}
+
+#[test]
+fn bad_input_gives_one_line_and_exit_code_2() {
+    let cases: &[(&[&str], &str, &str)] = &[
+        (&["reduce", "--to", "2"], "{", "cagd: input: not valid JSON"),
+        (
+            &["reduce", "--to", "2"],
+            r#"{"type":"bezier"}"#,
+            "cagd: input.points: missing field",
+        ),
+        (
+            &["reduce", "--to", "1"],
+            r#"[{"type":"bezier","points":[[0,0],[1,1],[2,0]]},{"type":"bezier","points":[[0,0],[1]]}]"#,
+            "cagd: input[1].points[1]: has 1 coordinates, the first point has 2",
+        ),
+        (
+            &["reduce", "--to", "3"],
+            r#"{"type":"bezier","points":[[0],[1],[2]]}"#,
+            "cagd: input: degree pair 2 -> 3",
+        ),
+        (
+            &["reduce", "--to", "2", "--method", "magic"],
+            r#"{"type":"bezier","points":[[0],[1],[2],[3]]}"#,
+            "cagd: --method: unknown method \"magic\"",
+        ),
+        (
+            &[
+                "reduce", "--to", "2", "--method", "l2", "--r", "1", "--p", "1",
+            ],
+            r#"{"type":"bezier","points":[[0],[1],[2],[3]]}"#,
+            "cagd: input: too many end constraints",
+        ),
+    ];
+    for (args, stdin, want) in cases {
+        let o = cagd(args, stdin);
+        assert_eq!(o.status.code(), Some(2), "{args:?} {stdin}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        let first = err.lines().next().unwrap_or_default();
+        assert!(first.starts_with(want), "{args:?} {stdin}: got {err:?}");
+        assert!(!err.contains("panicked"), "{err}");
+        assert!(o.stdout.is_empty());
+    }
+}
+
+#[test]
+fn demo_writes_table_and_pictures() {
+    let dir = std::env::temp_dir().join(format!("cagd-demo-test-{}", std::process::id()));
+    let o = cagd(&["demo", "--out", dir.to_str().expect("utf8")], "");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let table = String::from_utf8_lossy(&o.stdout);
+    assert!(table.contains("ex-14.5.1-fifteenth"));
+    assert!(table.contains("chebyshev (r,p)=(2,2)"));
+    let svgs = std::fs::read_dir(&dir).expect("demo folder").count();
+    assert!(svgs >= 5, "{svgs} pictures");
+    std::fs::remove_dir_all(&dir).expect("cleanup");
+}
