@@ -271,8 +271,8 @@ typedef struct CagdCurveList CagdCurveList;
 
 /**
  * Opaque handle to the report of a reduction: the method, the degrees, the certified
- * error bound, and (on request) the measured error. Immutable; release with
- * `cagd_report_free`.
+ * error bound, and (on request) the measured error; for a piecewise reduction (to a
+ * tolerance) also the pieces. Immutable; release with `cagd_report_free`.
  */
 typedef struct CagdReport CagdReport;
 
@@ -1357,11 +1357,107 @@ CagdStatus cagd_curve_reduce_batch(const double *points,
 CagdStatus cagd_reduce_options_init(struct CagdReduceOptions *opts);
 
 /**
+ * Reduces a Bézier curve of degree `n` (polynomial or rational) to a B-spline of degree
+ * `opts->target` whose certified distance to the curve is at most `opts->tolerance`, with
+ * `C^k` joins, `k = opts->continuity` (seed 000 §14.2.2 and Algorithm 14.2.1 generalised
+ * to every linear method; SPEC-reduce §2.2). The curve is split at midpoints until every
+ * piece's certified bound (of `opts->method`) meets the tolerance; the reduced pieces are
+ * merged into one spline on `[0, 1]` whose interior knots have multiplicity
+ * `target - k`; what the merge moved is added to the bound.
+ *
+ * Options used: `method` (with `r`, `p`, `l1`, `l2`), `target`, `tolerance`,
+ * `continuity`, `measure`, `max_depth`; `space` is ignored (the numbers are Euclidean).
+ *
+ * Parameters:
+ * - `curve` (in): the curve, degree `n > target`.
+ * - `opts` (in): the options (start from `cagd_reduce_options_init`, then set at least
+ *   `tolerance`). Borrowed for the call.
+ * - `spline_out` (out): on `CAGD_OK`, the reduced spline of degree `target` on `[0, 1]`
+ *   (NURBS when the curve is rational), owned by the caller: release with
+ *   `cagd_bspline_free`. Its size is known only afterwards (`cagd_bspline_n_points`).
+ * - `report_out` (out): on `CAGD_OK`, the report, owned by the caller: release with
+ *   `cagd_report_free`. `cagd_report_bound` gives the certified bound of the whole
+ *   (`<= tolerance`); `cagd_report_piecewise` the piece count and depth;
+ *   `cagd_report_pieces` the reduced pieces with their intervals and bounds. Neither
+ *   output is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `curve`, `opts`, `spline_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` is below
+ *   `sizeof(CagdReduceOptions)`, `opts->method` is not a valid code, `tolerance` is not
+ *   finite and `> 0` (the default 0 must be changed), `continuity >= target`, the method
+ *   does not keep derivatives up to order `continuity` at both ends (use
+ *   `CAGD_METHOD_L2` or `CAGD_METHOD_CONSTRAINED_CHEBYSHEV` with `r = p = continuity`),
+ *   `l1` / `l2` invalid, the two outputs are the same address, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n` or below the method's minimum.
+ * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target`, or `r`, `p` below -1.
+ * - `CAGD_ERR_NO_CONVERGENCE`: the tolerance was not reached within `max_depth`
+ *   subdivision levels or 2^20 pieces (the message gives the bound reached).
+ * - `CAGD_ERR_CONDITION_NOT_MET`: the pieces do not join within `tolerance / 128` (only
+ *   for a tolerance near the rounding level).
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational piece is not positive.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live curve handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; the outputs NULL or writable.
+ */
+CagdStatus cagd_curve_reduce_to_tolerance(const struct CagdCurve *curve,
+                                          const struct CagdReduceOptions *opts,
+                                          struct CagdBSpline **spline_out,
+                                          struct CagdReport **report_out);
+
+/**
+ * Reduces a polynomial Bézier curve of degree `n` to a `C^0` B-spline of degree
+ * `opts->target` within `opts->tolerance` by seed 000's Algorithm 14.2.1 as corrected in
+ * SPEC-reduce §2.2: one degree at a time by control-point perturbation (eq. 14.2.5),
+ * subdividing before each step so that every step's error stays below
+ * `tolerance / (n - target)`. The per-step maxima are read with
+ * `cagd_report_step_bounds` (their sum is the seed's certified total).
+ *
+ * Options used: `method` (must be `CAGD_METHOD_PERTURB`), `target`, `tolerance`,
+ * `continuity` (must be 0), `measure`, `max_depth` (total over all steps).
+ *
+ * Parameters:
+ * - `curve` (in): the curve, polynomial, degree `n > target`.
+ * - `opts` (in): the options. Borrowed for the call.
+ * - `spline_out` (out): on `CAGD_OK`, the reduced spline of degree `target` on `[0, 1]`,
+ *   owned by the caller: release with `cagd_bspline_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report, owned by the caller: release with
+ *   `cagd_report_free`. Neither output is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `curve`, `opts`, `spline_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` is below
+ *   `sizeof(CagdReduceOptions)`, an invalid `opts->method` code, `tolerance` not finite
+ *   and `> 0`, the two outputs are the same address, or a pointer is misaligned.
+ * - `CAGD_ERR_CONDITION_NOT_MET`: `method` is not `CAGD_METHOD_PERTURB`,
+ *   `continuity > 0`, or the curve is rational (the algorithm's preconditions; use
+ *   `cagd_curve_reduce_to_tolerance`).
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n` or `target == 0`.
+ * - `CAGD_ERR_NO_CONVERGENCE`: more than `max_depth` levels or 2^20 pieces would be
+ *   needed.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live curve handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; the outputs NULL or writable.
+ */
+CagdStatus cagd_curve_reduce_to_tolerance_stepwise(const struct CagdCurve *curve,
+                                                   const struct CagdReduceOptions *opts,
+                                                   struct CagdBSpline **spline_out,
+                                                   struct CagdReport **report_out);
+
+/**
  * Releases a report. NULL is accepted and ignored (freeing NULL twice is fine); a
  * non-NULL handle must be released exactly once and not used afterwards.
  *
  * Parameters:
- * - `report` (in, consumed): a `CagdReport **` output of `cagd_curve_reduce`, or NULL.
+ * - `report` (in, consumed): a `CagdReport **` output of `cagd_curve_reduce` or another
+ *   reduction, or NULL.
  *
  * Does not change `cagd_last_error_message()`.
  *
@@ -1449,7 +1545,8 @@ CagdStatus cagd_report_max_error(const struct CagdReport *report, double *error_
  * Returns:
  * - `CAGD_OK`: both outputs are written.
  * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
- * - `CAGD_ERR_NOT_AVAILABLE`: no bound could be formed for this reduction.
+ * - `CAGD_ERR_NOT_AVAILABLE`: no bound could be formed for this reduction, or the report
+ *   is of a reduction to a tolerance (whose numbers are always Euclidean).
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
@@ -1459,6 +1556,91 @@ CagdStatus cagd_report_max_error(const struct CagdReport *report, double *error_
 CagdStatus cagd_report_space(const struct CagdReport *report,
                              int32_t *space_out,
                              double *homogeneous_bound_out);
+
+/**
+ * Reads the shape of a piecewise reduction (to a tolerance): the number of pieces, the
+ * deepest midpoint-subdivision level used (0: the curve was not split), the continuity
+ * order `k` of the joins, and the largest certified bound of a single piece (the bound
+ * of the whole, `cagd_report_bound`, adds what merging into the spline moved).
+ *
+ * Parameters:
+ * - `report` (in): the report.
+ * - `n_pieces_out` (out): on `CAGD_OK`, the number of pieces (`>= 1`).
+ * - `depth_out` (out): on `CAGD_OK`, the deepest subdivision level.
+ * - `continuity_out` (out): on `CAGD_OK`, the order `k` of the `C^k` joins.
+ * - `pieces_bound_out` (out): on `CAGD_OK`, the largest bound of a piece.
+ *
+ * Returns:
+ * - `CAGD_OK`: all outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the report is of a single reduction (`cagd_curve_reduce`).
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `report` must be NULL or a live report handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_report_piecewise(const struct CagdReport *report,
+                                 size_t *n_pieces_out,
+                                 size_t *depth_out,
+                                 size_t *continuity_out,
+                                 double *pieces_bound_out);
+
+/**
+ * Copies the reduced pieces of a piecewise reduction, before they were merged into the
+ * spline: piece `i` approximates the source curve on its interval
+ * (`cagd_curvelist_interval`, in `[0, 1]`) within its certified bound
+ * (`cagd_curvelist_bound`).
+ *
+ * Parameters:
+ * - `report` (in): the report.
+ * - `list_out` (out): on `CAGD_OK`, a new list owned by the caller: release with
+ *   `cagd_curvelist_free`. Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*list_out` holds the pieces.
+ * - `CAGD_ERR_NULL_POINTER`: `report` or `list_out` is NULL.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the report is of a single reduction.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `report` must be NULL or a live report handle; `list_out` NULL or writable.
+ */
+CagdStatus cagd_report_pieces(const struct CagdReport *report, struct CagdCurveList **list_out);
+
+/**
+ * Copies the per-step bounds of `cagd_curve_reduce_to_tolerance_stepwise`: the largest
+ * bound of each one-degree step, `n -> n-1` first (`n - target` doubles; their sum is the
+ * seed's certified total). Empty (`*out_needed = 0`) for
+ * `cagd_curve_reduce_to_tolerance`. Call with `out_cap = 0` (and `out` NULL) to ask the
+ * size.
+ *
+ * Parameters:
+ * - `report` (in): the report.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `*out_needed`
+ *   doubles hold the bounds. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, the count.
+ *
+ * Returns:
+ * - `CAGD_OK`: the bounds are in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `report` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the count; only `*out_needed` is
+ *   written.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the report is of a single reduction.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `report` must be NULL or a live report handle; `out` NULL or `out_cap` writable
+ * doubles; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_report_step_bounds(const struct CagdReport *report,
+                                   double *out,
+                                   size_t out_cap,
+                                   size_t *out_needed);
 
 /**
  * The name of a status code: `"CAGD_OK"`, `"CAGD_ERR_NULL_POINTER"`, ….

@@ -61,7 +61,11 @@ mod reduce;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod reduce_options;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod reduce_tolerance;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod report;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod report_piecewise;
 #[allow(
     unsafe_code,
     reason = "C entry points (no_mangle) returning static strings"
@@ -102,10 +106,14 @@ pub use reduce::{cagd_curve_reduce, cagd_curve_reduce_batch};
 pub use reduce_options::{
     CagdErrorSpace, CagdReduceMethod, CagdReduceOptions, cagd_reduce_options_init,
 };
+pub use reduce_tolerance::{
+    cagd_curve_reduce_to_tolerance, cagd_curve_reduce_to_tolerance_stepwise,
+};
 pub use report::{
     CagdReport, cagd_report_bound, cagd_report_free, cagd_report_max_error, cagd_report_method,
     cagd_report_space,
 };
+pub use report_piecewise::{cagd_report_pieces, cagd_report_piecewise, cagd_report_step_bounds};
 pub use status::{CagdStatus, cagd_status_name, status_of_core};
 pub use tensor_patch::{
     CagdTensorPatch, cagd_tensorpatch_free, cagd_tensorpatch_new, cagd_tensorpatch_points,

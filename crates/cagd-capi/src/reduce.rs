@@ -10,7 +10,7 @@ use crate::boundary::{
 };
 use crate::curve::CagdCurve;
 use crate::reduce_options::{CagdReduceOptions, read_options};
-use crate::report::CagdReport;
+use crate::report::{CagdReport, ReportKind};
 use crate::status::CagdStatus;
 
 /// Reduces a curve of degree `n` to degree `opts->target` with `opts->method`, returning
@@ -77,7 +77,7 @@ pub unsafe extern "C" fn cagd_curve_reduce(
         let red = reduce_with(&c.0, &o.rust_options()?)?;
         *c_out = into_handle(CagdCurve(red.curve));
         *r_out = into_handle(CagdReport {
-            report: red.report,
+            kind: ReportKind::Single(red.report),
             method: o.method,
         });
         Ok(())

@@ -67,6 +67,24 @@ c_tests![
     reduce_bad_input,
     report_accessors_bad_input,
     reduce_batch_bad_input,
+    reduce_options_struct_size,
+    // c/reduce_tolerance.c
+    reduce_tolerance_stepwise_spec,
+    reduce_tolerance_exact,
+    reduce_tolerance_c1,
+    reduce_tolerance_bad_input,
+    // c/bspline.c
+    bspline_polynomial_closed_form,
+    bspline_nurbs_circle,
+    bspline_to_beziers,
+    // c/bspline_bad_input.c
+    bspline_new_bad_knots,
+    bspline_new_bad_input,
+    bspline_ops_bad_input,
+    // c/patch_ops.c
+    tensorpatch_ops,
+    tripatch_ops,
+    patch_ops_bad_input,
     // cpp/header_compiles.cpp
     cpp_header,
 ];
