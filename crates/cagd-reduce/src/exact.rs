@@ -112,6 +112,22 @@ impl RatMat {
         out
     }
 
+    /// `self - other`.
+    pub(crate) fn sub(&self, other: &RatMat) -> RatMat {
+        debug_assert!(self.rows == other.rows && self.cols == other.cols);
+        let data = self
+            .data
+            .iter()
+            .zip(&other.data)
+            .map(|(a, b)| a - b)
+            .collect();
+        RatMat {
+            rows: self.rows,
+            cols: self.cols,
+            data,
+        }
+    }
+
     /// The transpose.
     pub(crate) fn transpose(&self) -> RatMat {
         let mut t = RatMat::zeros(self.cols, self.rows);
@@ -217,14 +233,91 @@ pub(crate) fn scaled(a: &Q, x: &[Q]) -> Row {
     x.iter().map(|u| a * u).collect()
 }
 
-/// `sum_j g_j S_j` for a row `g` and the rows `S_j` of a matrix: the functional `g` of
-/// intermediate points expressed in the input points.
-pub(crate) fn row_times(g: &[Q], s: &RatMat) -> Row {
-    let mut out = vec![Q::zero(); s.cols];
-    for (j, gj) in g.iter().enumerate() {
-        axpy(&mut out, gj, s.row(j));
+/// A rational matrix stored as an integer matrix over one common denominator. Products of
+/// many step operators (stepwise one-degree methods) stay fast this way: no gcd per
+/// operation, only one normalisation per entry at the end.
+pub(crate) struct Scaled {
+    rows: usize,
+    cols: usize,
+    num: Vec<BigInt>,
+    den: BigInt,
+}
+
+impl Scaled {
+    /// The identity.
+    pub(crate) fn identity(n: usize) -> Self {
+        let mut num = vec![BigInt::zero(); n * n];
+        for i in 0..n {
+            num[i * n + i] = BigInt::one();
+        }
+        Self {
+            rows: n,
+            cols: n,
+            num,
+            den: BigInt::one(),
+        }
     }
-    out
+
+    /// A rational matrix over the lcm of its denominators.
+    pub(crate) fn from_rat(m: &RatMat) -> Self {
+        use num_integer::Integer;
+        let den = m.data.iter().fold(BigInt::one(), |l, x| l.lcm(x.denom()));
+        let num = m
+            .data
+            .iter()
+            .map(|x| x.numer() * (&den / x.denom()))
+            .collect();
+        Self {
+            rows: m.rows,
+            cols: m.cols,
+            num,
+            den,
+        }
+    }
+
+    /// `self * other`.
+    pub(crate) fn mul(&self, other: &Scaled) -> Scaled {
+        let mut num = vec![BigInt::zero(); self.rows * other.cols];
+        for i in 0..self.rows {
+            for k in 0..self.cols {
+                let a = &self.num[i * self.cols + k];
+                if a.is_zero() {
+                    continue;
+                }
+                for j in 0..other.cols {
+                    let b = &other.num[k * other.cols + j];
+                    if !b.is_zero() {
+                        num[i * other.cols + j] += a * b;
+                    }
+                }
+            }
+        }
+        Scaled {
+            rows: self.rows,
+            cols: other.cols,
+            num,
+            den: &self.den * &other.den,
+        }
+    }
+
+    /// `sum_j g_j S_j`: the functional `g` of intermediate points expressed in the inputs.
+    pub(crate) fn row_times(&self, g: &[Q]) -> Row {
+        let gs = Scaled::from_rat(&RatMat::from_rows(vec![g.to_vec()]));
+        gs.mul(self).to_rat().data
+    }
+
+    /// Back to normalised rationals.
+    pub(crate) fn to_rat(&self) -> RatMat {
+        RatMat {
+            rows: self.rows,
+            cols: self.cols,
+            data: self
+                .num
+                .iter()
+                .map(|x| Q::new(x.clone(), self.den.clone()))
+                .collect(),
+        }
+    }
 }
 
 /// An exact rational rounded to `f64` (to nearest, up to the library's conversion).

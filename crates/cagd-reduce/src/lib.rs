@@ -65,11 +65,36 @@
 //!
 //! ## Supported range and accuracy
 //!
-//! Degrees `0..=64` ([`cagd_core::MAX_DEGREE`]). Because each operator entry is the exact
-//! value rounded once, the operator itself is accurate to 1 ulp per entry for every
-//! supported `(n, m)`; applying it to a curve costs a relative error of about
-//! `(n + 1) eps * ||A||_inf` of the control-point size (see [`Operator::norm_inf`]; the
-//! amplification is intrinsic to the problem, SPEC-reduce §6).
+//! Degrees `0..=64` ([`cagd_core::MAX_DEGREE`]) for every method and every `m < n`
+//! (larger degrees are [`Error::DegreeOutOfRange`]). Each operator entry is the exact
+//! rational value rounded once, so the operator is correct to 1 ulp per entry for every
+//! supported `(n, m)`; applying it costs about `(n + 1) eps ||A||_inf` relative to the
+//! control-point size ([`Operator::norm_inf`]; the amplification is intrinsic to the
+//! problem for `m ~ n/2`, SPEC-reduce §6).
+//!
+//! Measured (unit test `high_degree_operators_match_exact_arithmetic`): applying the `f64`
+//! operators to a curve agrees with exact rational arithmetic to **2.0e-15 relative** (max
+//! deviation / max reduced coordinate) for seven methods at `n = 40 -> m = 20`, and for the
+//! worst case supported, `n = 64` (`m = 32` for the generalized inverse, L2 with
+//! `(r,p) = (2,2)`, constrained Chebyshev `(1,1)`, Forrest; `m = 60` for perturbation and
+//! BWX). The required 1e-10 is met with five orders of magnitude to spare.
+//!
+//! Building an operator is a one-time cost per `(method, n, m)` (then cached); measured in a
+//! debug build: `n = 40 -> 20` 0.1–1.4 s, `n = 64 -> 32` 1.2 s (Forrest), 1.5 s (generalized
+//! inverse / L2), 3.4 s (constrained Chebyshev), 17 s (generalized inverse with ends, the
+//! largest exact normal system). Release builds are several times faster.
+//!
+//! Certified bounds: `measured <= bound` is a property test for every method (and for
+//! rational curves in Euclidean space). Eck's and the perturbation bounds are the exact
+//! maximum errors up to a relative rounding allowance of ~1e-11. The Chebyshev truncation
+//! (BWX / Watkins–Worsey) was within a factor 4.6 of the lower bound
+//! `(pi/4) ||c_{m+1}||` of the best uniform error (random curves, `n <= 12`, `n - m <= 3`),
+//! and equal to Eck's best uniform approximation for one degree.
+//!
+//! Batch throughput ([`reduce_batch`], 100 000 random 3-D curves, release, shared 2-core
+//! machine; `cargo bench -p cagd-reduce`): `(5,4)` 19 ns/curve (1.4x a memcpy of the same
+//! input + output bytes), `(10,5)` 51 ns (1.6x), `(15,10)` 139 ns (3.5x), `(20,10)` 126 ns
+//! (2.4x), `(30,15)` 274 ns (2.8x).
 #![forbid(unsafe_code)]
 
 mod alg_14_2_1;
@@ -85,6 +110,13 @@ mod method;
 mod one_step;
 mod operator;
 mod piecewise;
+mod patch_exact;
+mod patch_report;
+mod patch_tensor;
+mod patch_tensor_curves;
+mod patch_tolerance;
+mod patch_tri;
+mod patch_tri_l2;
 mod reduce;
 mod tolerance;
 #[cfg(test)]
@@ -100,6 +132,15 @@ pub use measure::{SAMPLES, max_deviation};
 pub use method::Method;
 pub use operator::{Operator, operator};
 pub use piecewise::{PiecewiseReduction, PiecewiseReport, ReducedPiece};
+pub use patch_report::{
+    PatchConstraint, PatchOptions, PatchReduction, PatchReport, TensorMethod, TensorPiece,
+    TriMethod, TriOptions, TriPiece, TriReduction,
+};
+pub use patch_tensor::reduce_tensor;
+pub use patch_tolerance::{
+    MAX_SUBDIVISION_LEVEL, reduce_tensor_to_tolerance, reduce_triangle_to_tolerance,
+};
+pub use patch_tri::{reduce_triangle, tri_perturbation_matrix};
 pub use reduce::{ErrorSpace, ReduceOptions, Reduction, Report, reduce, reduce_with};
 pub use tolerance::{DEFAULT_MAX_DEPTH, MAX_PIECES, ToleranceOptions, reduce_to_tolerance};
 pub use wn_table::perturbation_error_factor;

@@ -24,7 +24,7 @@ pub(crate) fn up(x: &Q) -> f64 {
 }
 
 /// Sign vector `c_i^(k) = (-1)^(k-i) C(k,i)` as exact rationals.
-fn signs(k: usize) -> Vec<Q> {
+pub(crate) fn signs(k: usize) -> Vec<Q> {
     let ki = to_i(k);
     (0..=ki)
         .map(|i| {
@@ -188,6 +188,27 @@ pub(crate) fn step(method: Method, k: usize) -> Step {
     }
 }
 
+/// For a step without a bound of its own: if the step reproduces degree-`k-1` curves, its
+/// residual `P - E Q` is `r_i Delta^k P_0` row by row, so the exact convex-hull bound of the
+/// step is the single term `max_i |r_i| * ||Delta^k P_0||`. `None` when the residual does
+/// not have that form (e.g. G1 with non-zero `l`).
+pub(crate) fn residual_term(op: &RatMat, k: usize) -> Option<(f64, Row)> {
+    let c = signs(k);
+    let res = RatMat::identity(k + 1).sub(&crate::exact::elevation(k - 1, k).mul(op));
+    let mut coef = Q::zero();
+    for i in 0..=k {
+        let ratio = res.at(i, 0) / &c[0];
+        if (0..=k).any(|j| *res.at(i, j) != &ratio * &c[j]) {
+            return None;
+        }
+        let a = num_traits::Signed::abs(&ratio);
+        if a > coef {
+            coef = a;
+        }
+    }
+    Some((up(&coef), c))
+}
+
 /// Piegl–Tiller: `m = k-1`, `r = p = floor((m-1)/2)`; Hermite ends by eq. 14.5.10 and, for
 /// `m` even, `Q_{m/2} = (QL + QR) / 2` (SPEC-reduce §7). For `m` odd the error is exactly
 /// `P^I_{k/2} B^k_{k/2}(t)`, max `||P^I_{k/2}|| C(k,k/2) / 2^k`.
@@ -209,7 +230,10 @@ fn piegl_tiller(k: usize) -> Step {
         let ql = scaled(&frac(1, ki - (ri + 1)), &ql);
         let pi = i64::from(p);
         let mut qr = scaled(&frac(ki, 1), &unit(k + 1, crate::exact::idx(mi - pi)));
-        axpy(&mut qr, &frac(-(ki - mi + pi), 1), &right[0]);
+        // With p = -1 (m = 0) the coefficient k - m + p is zero and there is no Q_{m-p}.
+        if let Some(first) = right.first() {
+            axpy(&mut qr, &frac(-(ki - mi + pi), 1), first);
+        }
         let qr = scaled(&frac(1, mi - pi), &qr);
         rows.push(lin2(&frac(1, 2), &ql, &frac(1, 2), &qr));
     } else {

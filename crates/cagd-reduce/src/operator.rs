@@ -8,10 +8,10 @@ use std::sync::{Arc, OnceLock, RwLock};
 use cagd_core::{Error, Result};
 
 use crate::chebyshev::{constrained, truncation};
-use crate::exact::{RatMat, Row, row_times};
-use crate::least_squares::{ginv_ends, ginv_free, l2};
+use crate::exact::{RatMat, Row, Scaled};
+use crate::least_squares::{ginv_ends, l2};
 use crate::method::Method;
-use crate::one_step::step;
+use crate::one_step::{residual_term, step};
 
 /// One term `coef * ||sum_j g_j P_j||` of a method's own error bound.
 #[derive(Debug, Clone)]
@@ -76,20 +76,38 @@ pub(crate) fn exact_operator(
 ) -> Result<(RatMat, Vec<(f64, Row)>)> {
     method.check(n, m)?;
     if method.is_one_degree() {
-        let mut s = RatMat::identity(n + 1);
+        let mut s = Scaled::identity(n + 1);
+        // The own bound is the sum of the per-step bounds; a step without one contributes
+        // its exact convex-hull term, and if even that has no closed form the own bound is
+        // dropped (the convex-hull bound of the composed operator remains).
         let mut terms = Vec::new();
+        let mut valid = true;
         for k in ((m + 1)..=n).rev() {
             let st = step(method, k);
-            terms.extend(st.terms.iter().map(|(c, g)| (*c, row_times(g, &s))));
-            s = st.op.mul(&s);
+            let own = if st.terms.is_empty() {
+                residual_term(&st.op, k).map(|t| vec![t])
+            } else {
+                Some(st.terms)
+            };
+            match own {
+                Some(t) if valid => terms.extend(t.iter().map(|(c, g)| (*c, s.row_times(g)))),
+                _ => valid = false,
+            }
+            s = Scaled::from_rat(&st.op).mul(&s);
         }
-        return Ok((s, terms));
+        if !valid {
+            terms.clear();
+        }
+        return Ok((s.to_rat(), terms));
     }
     Ok(match method {
         Method::WatkinsWorsey => truncation(n, m),
         Method::BogackiWeinsteinXu => constrained(n, m, -1, -1),
         Method::ConstrainedChebyshev { r, p } => constrained(n, m, r, p),
-        Method::GeneralizedInverse => (ginv_free(n, m)?, Vec::new()),
+        // Identical exact operator (Lutterkort–Peters–Reif; unit test
+        // `l2_free_equals_generalized_inverse`), and the Gram system is much cheaper in
+        // rationals than the normal equations of eq. 14.4.6.
+        Method::GeneralizedInverse => (l2(n, m, -1, -1)?, Vec::new()),
         Method::GeneralizedInverseEnds => (ginv_ends(n, m)?, Vec::new()),
         Method::L2 { r, p } => (l2(n, m, r, p)?, Vec::new()),
         // One-degree methods returned above.
@@ -261,4 +279,125 @@ pub(crate) fn check_len(x: &[f64], degree: usize, dim: usize, what: &'static str
         });
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::exact::{Q, q_to_f64};
+    use num_traits::{Signed, Zero};
+
+    /// Applies the f64 operator to a curve and compares with the exact rational operator
+    /// applied exactly: the max deviation relative to the largest exact reduced coordinate.
+    fn relative_error(method: Method, n: usize, m: usize) -> f64 {
+        let (exact, _) = exact_operator(method, n, m).unwrap();
+        let op = operator(method, n, m).unwrap();
+        let dim = 2;
+        // Deterministic "random" points with few bits, exact in f64.
+        let pts: Vec<f64> = (0..(n + 1) * dim)
+            .map(|i| (((i * 7919 + 13) % 201) as f64 - 100.0) / 64.0)
+            .collect();
+        let got = op.apply(&pts, dim).unwrap();
+        let (mut worst, mut big) = (0.0f64, 0.0f64);
+        for i in 0..=m {
+            for k in 0..dim {
+                let mut acc = Q::zero();
+                for j in 0..=n {
+                    acc += exact.at(i, j) * Q::from_float(pts[j * dim + k]).unwrap();
+                }
+                big = big.max(q_to_f64(&acc.abs()));
+                let diff = Q::from_float(got[i * dim + k]).unwrap() - acc;
+                worst = worst.max(q_to_f64(&diff.abs()));
+            }
+        }
+        worst / big
+    }
+
+    #[test]
+    fn high_degree_operators_match_exact_arithmetic() {
+        let methods = [
+            Method::GeneralizedInverse,
+            Method::GeneralizedInverseEnds,
+            Method::L2 { r: 2, p: 2 },
+            Method::ConstrainedChebyshev { r: 1, p: 1 },
+            Method::BogackiWeinsteinXu,
+            Method::Forrest,
+            Method::Perturb,
+        ];
+        let mut worst = 0.0f64;
+        for method in methods {
+            let e = relative_error(method, 40, 20);
+            assert!(e <= 1e-10, "{method:?} 40 -> 20: relative error {e:e}");
+            worst = worst.max(e);
+        }
+        // The worst case supported: degree 64 (exact builds of the largest systems take
+        // seconds, so a representative subset).
+        for (method, m) in [
+            (Method::GeneralizedInverse, 32),
+            (Method::L2 { r: 2, p: 2 }, 32),
+            (Method::ConstrainedChebyshev { r: 1, p: 1 }, 32),
+            (Method::Forrest, 32),
+            (Method::Perturb, 60),
+            (Method::BogackiWeinsteinXu, 60),
+        ] {
+            let e = relative_error(method, 64, m);
+            assert!(e <= 1e-10, "{method:?} 64 -> {m}: relative error {e:e}");
+            worst = worst.max(e);
+        }
+        println!("worst relative error of applying an operator: {worst:e}");
+    }
+
+    #[test]
+    fn cache_returns_the_same_operator() {
+        let a = operator(Method::Eck, 9, 4).unwrap();
+        let b = operator(Method::Eck, 9, 4).unwrap();
+        assert!(Arc::ptr_eq(&a, &b));
+        // Stepwise Eck = Chebyshev truncation (economisation keeps lower coefficients).
+        let w = operator(Method::WatkinsWorsey, 9, 4).unwrap();
+        for (x, y) in a.matrix().iter().zip(w.matrix()) {
+            assert!((x - y).abs() <= 1e-15 * x.abs().max(1.0));
+        }
+        // Piegl–Tiller = Forrest, stepwise too (exact operators are equal).
+        for n in 1..12 {
+            for m in 0..n {
+                let f = exact_operator(Method::Forrest, n, m).unwrap().0;
+                let p = exact_operator(Method::PieglTiller, n, m).unwrap().0;
+                assert_eq!(f, p, "{n} -> {m}");
+            }
+        }
+        // BWX = Watkins–Worsey exactly.
+        assert_eq!(
+            exact_operator(Method::BogackiWeinsteinXu, 11, 5).unwrap().0,
+            exact_operator(Method::WatkinsWorsey, 11, 5).unwrap().0
+        );
+    }
+
+    #[test]
+    fn errors_not_panics() {
+        assert!(matches!(
+            operator(Method::Eck, 65, 3),
+            Err(Error::DegreeOutOfRange { .. })
+        ));
+        assert!(matches!(
+            operator(Method::Eck, 5, 5),
+            Err(Error::BadDegreePair { .. })
+        ));
+        assert!(matches!(
+            operator(Method::L2 { r: 2, p: 2 }, 9, 4),
+            Err(Error::TooManyConstraints { .. })
+        ));
+        let op = operator(Method::Eck, 3, 2).unwrap();
+        assert!(matches!(
+            op.apply(&[0.0, 1.0, f64::NAN, 2.0], 1),
+            Err(Error::NonFinite { index: 2, .. })
+        ));
+        assert!(matches!(
+            op.apply(&[0.0, 1.0, 2.0], 1),
+            Err(Error::LengthMismatch { .. })
+        ));
+        assert!(matches!(op.apply(&[], 0), Err(Error::ZeroDimension)));
+        let mut out = vec![0.0; 5];
+        assert!(crate::reduce_batch(&op, &[0.0; 8], 1, &mut out).is_err());
+        assert!(crate::reduce_batch(&op, &[0.0; 7], 1, &mut out[..3]).is_err());
+    }
 }

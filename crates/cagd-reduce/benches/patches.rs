@@ -1,0 +1,116 @@
+//! Patch reduction cost: a 5 x 5 tensor patch to 3 x 3 (curve operators, and one
+//! perturbation step 5 x 5 -> 4 x 4) and a degree-8 triangle to degree 4 (L2, free and
+//! boundary-constrained), 3-D, certified bound included, operators cached.
+//!
+//! Besides criterion's report, prints `ns/patch` (median of 15 runs over 1000 patches).
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use cagd_core::{TensorPatch, TriPatch, tri_count};
+use cagd_reduce::{
+    Method, PatchConstraint, PatchOptions, TensorMethod, TriMethod, TriOptions, reduce_tensor,
+    reduce_triangle,
+};
+use criterion::{Criterion, criterion_group, criterion_main};
+
+const N_PATCHES: usize = 1000;
+const DIM: usize = 3;
+
+fn random_input(len: usize, seed: u64) -> Vec<f64> {
+    let mut s: u64 = 0x9E37_79B9_7F4A_7C15 ^ seed;
+    (0..len)
+        .map(|_| {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            (s >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        })
+        .collect()
+}
+
+fn median_ns(mut f: impl FnMut()) -> f64 {
+    f();
+    let mut t: Vec<f64> = (0..15)
+        .map(|_| {
+            let s = Instant::now();
+            f();
+            s.elapsed().as_secs_f64() * 1e9
+        })
+        .collect();
+    t.sort_by(f64::total_cmp);
+    t[t.len() / 2]
+}
+
+fn bench(c: &mut Criterion) {
+    let tensors: Vec<TensorPatch> = (0..N_PATCHES)
+        .map(|k| TensorPatch::new(random_input(36 * DIM, k as u64), 5, 5, DIM).expect("patch"))
+        .collect();
+    let tris: Vec<TriPatch> = (0..N_PATCHES)
+        .map(|k| TriPatch::new(random_input(tri_count(8) * DIM, k as u64), 8, DIM).expect("tri"))
+        .collect();
+    let l2 = Method::L2 { r: 0, p: 0 };
+    let tensor_cases = [
+        (
+            "tensor 5x5->3x3 curves L2(0,0)",
+            TensorMethod::Curves { u: l2, v: l2 },
+            (3, 3),
+        ),
+        (
+            "tensor 5x5->4x4 perturb",
+            TensorMethod::Perturb(PatchConstraint::None),
+            (4, 4),
+        ),
+        (
+            "tensor 5x5->4x4 perturb boundary",
+            TensorMethod::Perturb(PatchConstraint::Boundary(l2)),
+            (4, 4),
+        ),
+    ];
+    let tri_cases = [
+        ("tri 8->4 L2", TriMethod::L2(PatchConstraint::None), 4),
+        (
+            "tri 8->4 L2 boundary",
+            TriMethod::L2(PatchConstraint::Boundary(l2)),
+            4,
+        ),
+        ("tri 8->7 perturb", TriMethod::Perturb, 7),
+    ];
+    let mut lines = Vec::new();
+    for (name, method, target) in tensor_cases {
+        let opts = PatchOptions::new(method);
+        let run = || {
+            for p in &tensors {
+                black_box(reduce_tensor(black_box(p), target, &opts).expect("reduce"));
+            }
+        };
+        c.bench_function(name, |b| b.iter(run));
+        lines.push(format!(
+            "{name:36} {:9.0} ns/patch",
+            median_ns(run) / N_PATCHES as f64
+        ));
+    }
+    for (name, method, m) in tri_cases {
+        let opts = TriOptions::new(method);
+        let run = || {
+            for t in &tris {
+                black_box(reduce_triangle(black_box(t), m, &opts).expect("reduce"));
+            }
+        };
+        c.bench_function(name, |b| b.iter(run));
+        lines.push(format!(
+            "{name:36} {:9.0} ns/patch",
+            median_ns(run) / N_PATCHES as f64
+        ));
+    }
+    for l in lines {
+        println!("{l}");
+    }
+}
+
+criterion_group! {
+    name = benches;
+    config = Criterion::default().sample_size(10);
+    targets = bench
+}
+criterion_main!(benches);
