@@ -246,6 +246,75 @@ typedef int32_t CagdErrorSpace;
 #endif // __cplusplus
 
 /**
+ * How a patch is reduced (`CagdReduceOptions.patch_method`, an `int32_t`).
+ *
+ */
+enum CagdPatchMethod
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : int32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  /**
+   * Control-point perturbation, one degree in each direction (seed 000 §14.3.1 for
+   * tensor patches, `(m, n) -> (m - 1, n - 1)`, with any `CagdPatchConstraint`;
+   * §14.3.2 for triangles, `n -> n - 1`, constraint `CAGD_CONSTRAINT_NONE` only).
+   * Minimises the sum of squared control-point perturbations.
+   */
+  CAGD_PATCH_PERTURB = 0,
+  /**
+   * Tensor patches only: every column by `method` (`m -> target`), then every row
+   * (`n -> target_v`), with the curve options `method`, `r`, `p`, `l1`, `l2`;
+   * constraint `CAGD_CONSTRAINT_NONE` only. With `CAGD_METHOD_L2` and `r = p = -1` it is
+   * the L2-best reduction over the unit square (the L2 projection is separable).
+   */
+  CAGD_PATCH_BY_CURVES = 1,
+  /**
+   * Triangular patches only: L2-optimal reduction `n -> target` over the triangle,
+   * under the constraint.
+   */
+  CAGD_PATCH_L2 = 2,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum CagdPatchMethod CagdPatchMethod;
+#else
+typedef int32_t CagdPatchMethod;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
+ * Extra conditions on a patch reduction (`CagdReduceOptions.constraint`, an `int32_t`).
+ *
+ */
+enum CagdPatchConstraint
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : int32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  /**
+   * No condition.
+   */
+  CAGD_CONSTRAINT_NONE = 0,
+  /**
+   * The corner points are kept (target degrees `>= 1`; tensor `>= 2` for perturbation).
+   */
+  CAGD_CONSTRAINT_CORNERS = 1,
+  /**
+   * The boundary curves of the result are the reductions of the input's boundary curves
+   * by the curve method `method` (with `r`, `p`, `l1`, `l2`), which must interpolate
+   * both end points: patches sharing an edge still share it after reduction (C0).
+   */
+  CAGD_CONSTRAINT_BOUNDARY = 2,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum CagdPatchConstraint CagdPatchConstraint;
+#else
+typedef int32_t CagdPatchConstraint;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
  * Opaque handle to a B-spline curve of degree `p` (`0..=64`) with `n_points >= p + 1`
  * control points of `dim >= 1` coordinates and a full knot vector of
  * `n_points + p + 1` non-decreasing knots (clamped or not; the domain is
@@ -285,6 +354,13 @@ typedef struct CagdReport CagdReport;
 typedef struct CagdTensorPatch CagdTensorPatch;
 
 /**
+ * Opaque handle to the reduced pieces of a tensor-product patch, in u-major order: piece
+ * `i` is the reduction of the input on the sub-domain `[u0, u1] x [v0, v1]`, parametrised
+ * over `[0, 1]^2`. Immutable; release with `cagd_tensorpatchlist_free`.
+ */
+typedef struct CagdTensorPatchList CagdTensorPatchList;
+
+/**
  * Opaque handle to a triangular Bézier patch of degree `n` (`0..=64`) with
  * `(n + 1)(n + 2) / 2` control points `T_ij` (`i + j <= n`) of `dim` coordinates, stored
  * i-major: for i in 0..=n, for j in 0..=n-i. Domain `u, v >= 0, u + v <= 1`,
@@ -292,6 +368,14 @@ typedef struct CagdTensorPatch CagdTensorPatch;
  * release with `cagd_tripatch_free`.
  */
 typedef struct CagdTriPatch CagdTriPatch;
+
+/**
+ * Opaque handle to the reduced pieces of a triangular patch: piece `i` is the reduction
+ * of the input on the sub-triangle `(A, B, C)` of its parameter domain,
+ * `T_i(u', v') ~ T(C + u' (A - C) + v' (B - C))`. Immutable; release with
+ * `cagd_tripatchlist_free`.
+ */
+typedef struct CagdTriPatchList CagdTriPatchList;
 
 /**
  * How to reduce: a plain struct the caller owns. Fill it with
@@ -366,10 +450,24 @@ typedef struct CagdReduceOptions {
    */
   size_t continuity;
   /**
-   * Reduction to a tolerance only: the deepest midpoint-subdivision level allowed
-   * (pieces of length `2^-max_depth` of the parameter range). Default 30.
+   * Reduction of a curve to a tolerance only: the deepest midpoint-subdivision level
+   * allowed (pieces of length `2^-max_depth` of the parameter range). Default 30.
+   * (Patches to a tolerance stop at level 8, `4^8` pieces.)
    */
   size_t max_depth;
+  /**
+   * Tensor-product patches only: the target degree in v (`target` is the one in u).
+   * Default 3.
+   */
+  size_t target_v;
+  /**
+   * Patches only: a `CagdPatchMethod` value. Default `CAGD_PATCH_PERTURB`.
+   */
+  int32_t patch_method;
+  /**
+   * Patches only: a `CagdPatchConstraint` value. Default `CAGD_CONSTRAINT_NONE`.
+   */
+  int32_t constraint;
 } CagdReduceOptions;
 
 #ifdef __cplusplus
@@ -1241,6 +1339,318 @@ CagdStatus cagd_curve_segment(const struct CagdCurve *curve,
 const char *cagd_last_error_message(void);
 
 /**
+ * Releases a tensor patch list (not the patches obtained from it). NULL is accepted and
+ * ignored; a non-NULL handle must be released exactly once and not used afterwards.
+ *
+ * Parameters:
+ * - `list` (in, consumed): a `CagdTensorPatchList **` output of a cagd function, or NULL.
+ *
+ * Does not change `cagd_last_error_message()`.
+ *
+ * # Safety
+ * `list` must be NULL or a live handle created by cagd that is not used afterwards.
+ */
+void cagd_tensorpatchlist_free(struct CagdTensorPatchList *list);
+
+/**
+ * Reads the number of pieces of a tensor patch list (`4^L` for subdivision level `L`).
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `count_out` (out): on `CAGD_OK`, the number of pieces.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*count_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `count_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; `count_out` NULL or writable.
+ */
+CagdStatus cagd_tensorpatchlist_count(const struct CagdTensorPatchList *list, size_t *count_out);
+
+/**
+ * Reads piece `i` of a tensor patch list: a new patch handle, its sub-domain and its
+ * certified error bound (Euclidean, model units).
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `i` (in): the piece index, `0 <= i < count`.
+ * - `patch_out` (out): on `CAGD_OK`, the reduced piece, a new handle owned by the caller,
+ *   independent of the list: release it with `cagd_tensorpatch_free`.
+ * - `domain_out` (out): on `CAGD_OK`, 4 doubles `u0, u1, v0, v1`: the sub-domain.
+ * - `bound_out` (out): on `CAGD_OK`, the certified bound of the piece. Nothing is written
+ *   on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: all outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: any pointer argument is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; `patch_out`, `bound_out` NULL or writable;
+ * `domain_out` NULL or 4 writable doubles.
+ */
+CagdStatus cagd_tensorpatchlist_get(const struct CagdTensorPatchList *list,
+                                    size_t i,
+                                    struct CagdTensorPatch **patch_out,
+                                    double *domain_out,
+                                    double *bound_out);
+
+/**
+ * Releases a triangular patch list (not the patches obtained from it). NULL is accepted
+ * and ignored; a non-NULL handle must be released exactly once and not used afterwards.
+ *
+ * Parameters:
+ * - `list` (in, consumed): a `CagdTriPatchList **` output of a cagd function, or NULL.
+ *
+ * Does not change `cagd_last_error_message()`.
+ *
+ * # Safety
+ * `list` must be NULL or a live handle created by cagd that is not used afterwards.
+ */
+void cagd_tripatchlist_free(struct CagdTriPatchList *list);
+
+/**
+ * Reads the number of pieces of a triangular patch list (`4^L` for subdivision level
+ * `L`).
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `count_out` (out): on `CAGD_OK`, the number of pieces.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*count_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `count_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; `count_out` NULL or writable.
+ */
+CagdStatus cagd_tripatchlist_count(const struct CagdTriPatchList *list, size_t *count_out);
+
+/**
+ * Reads piece `i` of a triangular patch list: a new patch handle, its sub-triangle and
+ * its certified error bound (Euclidean, model units).
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `i` (in): the piece index, `0 <= i < count`.
+ * - `patch_out` (out): on `CAGD_OK`, the reduced piece, a new handle owned by the caller,
+ *   independent of the list: release it with `cagd_tripatch_free`.
+ * - `vertices_out` (out): on `CAGD_OK`, 6 doubles `A.u, A.v, B.u, B.v, C.u, C.v`: the
+ *   sub-triangle in the input's parameters (the piece's `(1, 0)`, `(0, 1)` and `(0, 0)`
+ *   corners).
+ * - `bound_out` (out): on `CAGD_OK`, the certified bound of the piece. Nothing is written
+ *   on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: all outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: any pointer argument is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; `patch_out`, `bound_out` NULL or writable;
+ * `vertices_out` NULL or 6 writable doubles.
+ */
+CagdStatus cagd_tripatchlist_get(const struct CagdTriPatchList *list,
+                                 size_t i,
+                                 struct CagdTriPatch **patch_out,
+                                 double *vertices_out,
+                                 double *bound_out);
+
+/**
+ * Reduces a tensor-product patch of degree `(m, n)` to degree
+ * `(opts->target, opts->target_v)` with `opts->patch_method` (seed 000 §14.3.1 for
+ * `CAGD_PATCH_PERTURB`; direction by direction with the curve method for
+ * `CAGD_PATCH_BY_CURVES`), with a certified bound of `max ||P(u,v) - Q(u,v)||` over the
+ * unit square (Euclidean).
+ *
+ * Options used: `patch_method`, `constraint`, `target`, `target_v`, `measure`, and
+ * `method`, `r`, `p`, `l1`, `l2` for `CAGD_PATCH_BY_CURVES` and
+ * `CAGD_CONSTRAINT_BOUNDARY`.
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `opts` (in): the options. Borrowed for the call.
+ * - `patch_out` (out): on `CAGD_OK`, the reduced patch
+ *   (`(target + 1) * (target_v + 1) * dim` doubles, read back with
+ *   `cagd_tensorpatch_points`), owned by the caller: release with
+ *   `cagd_tensorpatch_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report (`cagd_report_bound`,
+ *   `cagd_report_max_error`, `cagd_report_patch`), owned by the caller: release with
+ *   `cagd_report_free`. Neither output is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch`, `opts`, `patch_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` is below
+ *   `sizeof(CagdReduceOptions)`; an invalid `patch_method`, `constraint` or `method`
+ *   code; `CAGD_PATCH_L2` (triangles only); `CAGD_PATCH_BY_CURVES` with a constraint;
+ *   the two outputs are the same address; or a pointer is misaligned.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: a target degree above the source, no reduction at all, a
+ *   target other than `(m - 1, n - 1)` for `CAGD_PATCH_PERTURB`, or a pair the curve
+ *   method does not accept.
+ * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: corner / boundary constraints with a target degree
+ *   too small, a boundary method that does not interpolate the end points, or `r + p + 1`
+ *   above a target degree.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; the outputs NULL or writable.
+ */
+CagdStatus cagd_tensorpatch_reduce(const struct CagdTensorPatch *patch,
+                                   const struct CagdReduceOptions *opts,
+                                   struct CagdTensorPatch **patch_out,
+                                   struct CagdReport **report_out);
+
+/**
+ * Reduces a triangular patch of degree `n` to degree `opts->target` with
+ * `opts->patch_method` (`CAGD_PATCH_PERTURB`: seed 000 §14.3.2, `n -> n - 1`, no
+ * constraint; `CAGD_PATCH_L2`: L2-optimal over the triangle, any constraint), with a
+ * certified bound of `max ||T(u,v) - Q(u,v)||` over the triangle (Euclidean).
+ *
+ * Options used: `patch_method`, `constraint`, `target`, `measure`, and `method`, `r`, `p`,
+ * `l1`, `l2` for `CAGD_CONSTRAINT_BOUNDARY`.
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `opts` (in): the options. Borrowed for the call.
+ * - `patch_out` (out): on `CAGD_OK`, the reduced patch
+ *   (`(target + 1) * (target + 2) / 2 * dim` doubles), owned by the caller: release with
+ *   `cagd_tripatch_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report, owned by the caller: release with
+ *   `cagd_report_free`. Neither output is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch`, `opts`, `patch_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` is below
+ *   `sizeof(CagdReduceOptions)`; an invalid `patch_method`, `constraint` or `method`
+ *   code; `CAGD_PATCH_BY_CURVES` (tensor patches only); `CAGD_PATCH_PERTURB` with a
+ *   constraint; the two outputs are the same address; or a pointer is misaligned.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n`, or `target != n - 1` for
+ *   `CAGD_PATCH_PERTURB`.
+ * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: corner / boundary constraints with `target = 0`, or
+ *   a boundary method that does not interpolate the end points.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; the outputs NULL or writable.
+ */
+CagdStatus cagd_tripatch_reduce(const struct CagdTriPatch *patch,
+                                const struct CagdReduceOptions *opts,
+                                struct CagdTriPatch **patch_out,
+                                struct CagdReport **report_out);
+
+/**
+ * Reduces a tensor-product patch to degree `(opts->target, opts->target_v)` within
+ * `opts->tolerance` (certified, Euclidean): at levels `L = 0, 1, ..., 8` the patch is
+ * split into `2^L x 2^L` sub-patches by midpoint bisection and each is reduced as by
+ * `cagd_tensorpatch_reduce`; the first level at which every bound meets the tolerance is
+ * returned. Neighbouring pieces coincide along shared edges for `CAGD_PATCH_BY_CURVES`
+ * with an end-interpolating method and for `CAGD_CONSTRAINT_BOUNDARY`; otherwise each
+ * piece is within the tolerance but gaps up to twice the tolerance may appear.
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `opts` (in): the options (as `cagd_tensorpatch_reduce`, plus `tolerance`). Borrowed.
+ * - `pieces_out` (out): on `CAGD_OK`, the pieces in u-major order, owned by the caller:
+ *   release with `cagd_tensorpatchlist_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report (`cagd_report_bound`: the largest bound
+ *   of a piece, `<= tolerance`; `cagd_report_patch`: the piece count), owned by the
+ *   caller: release with `cagd_report_free`. Neither output is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch`, `opts`, `pieces_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `tolerance` not finite and `> 0`, and as
+ *   `cagd_tensorpatch_reduce`.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS`: as
+ *   `cagd_tensorpatch_reduce`.
+ * - `CAGD_ERR_NO_CONVERGENCE`: level 8 (65536 pieces) is not enough.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; the outputs NULL or writable.
+ */
+CagdStatus cagd_tensorpatch_reduce_to_tolerance(const struct CagdTensorPatch *patch,
+                                                const struct CagdReduceOptions *opts,
+                                                struct CagdTensorPatchList **pieces_out,
+                                                struct CagdReport **report_out);
+
+/**
+ * Reduces a triangular patch to degree `opts->target` within `opts->tolerance`
+ * (certified, Euclidean): at levels `L = 0, 1, ..., 8` the patch is split by the 4-way
+ * midpoint subdivision of seed 000 Theorem 14.3.1 into `4^L` pieces, each reduced as by
+ * `cagd_tripatch_reduce`; the first level at which every bound meets the tolerance is
+ * returned. With `CAGD_PATCH_L2` and `CAGD_CONSTRAINT_BOUNDARY` (and a boundary method
+ * with `r == p`) neighbouring pieces coincide along shared edges.
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `opts` (in): the options (as `cagd_tripatch_reduce`, plus `tolerance`). Borrowed.
+ * - `pieces_out` (out): on `CAGD_OK`, the pieces, owned by the caller: release with
+ *   `cagd_tripatchlist_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report, owned by the caller: release with
+ *   `cagd_report_free`. Neither output is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch`, `opts`, `pieces_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `tolerance` not finite and `> 0`, and as
+ *   `cagd_tripatch_reduce`.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS`: as
+ *   `cagd_tripatch_reduce`.
+ * - `CAGD_ERR_CONDITION_NOT_MET`: a boundary method with `r != p` (the middle
+ *   sub-triangle traverses shared edges backwards).
+ * - `CAGD_ERR_NO_CONVERGENCE`: level 8 (65536 pieces) is not enough.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; the outputs NULL or writable.
+ */
+CagdStatus cagd_tripatch_reduce_to_tolerance(const struct CagdTriPatch *patch,
+                                             const struct CagdReduceOptions *opts,
+                                             struct CagdTriPatchList **pieces_out,
+                                             struct CagdReport **report_out);
+
+/**
+ * Reads what a patch reduction did: the `CagdPatchMethod` code, the source and target
+ * degrees in u and v (for a triangle both are its degree), and the number of pieces (1
+ * for `cagd_tensorpatch_reduce` / `cagd_tripatch_reduce`).
+ *
+ * Parameters:
+ * - `report` (in): the report.
+ * - `patch_method_out` (out): on `CAGD_OK`, the `CagdPatchMethod` code.
+ * - `degrees_out` (out): on `CAGD_OK`, 4 `size_t`: `from_u, from_v, to_u, to_v`.
+ * - `n_pieces_out` (out): on `CAGD_OK`, the number of pieces.
+ *
+ * Returns:
+ * - `CAGD_OK`: all outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the report is of a curve reduction.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `report` must be NULL or a live report handle; `patch_method_out`, `n_pieces_out` NULL
+ * or writable; `degrees_out` NULL or 4 writable `size_t`.
+ */
+CagdStatus cagd_report_patch(const struct CagdReport *report,
+                             int32_t *patch_method_out,
+                             size_t *degrees_out,
+                             size_t *n_pieces_out);
+
+/**
  * Reduces a curve of degree `n` to degree `opts->target` with `opts->method`, returning
  * the reduced curve and a report with the certified error bound (and, with
  * `opts->measure`, the measured error). Rational curves are reduced in homogeneous
@@ -1338,7 +1748,8 @@ CagdStatus cagd_curve_reduce_batch(const double *points,
  * Fills `opts` with the defaults: `struct_size = sizeof(CagdReduceOptions)`,
  * `method = CAGD_METHOD_L2`, `target = 3`, `r = p = 0` (end points interpolated),
  * `l1 = l2 = 0`, `measure = false`, `space = CAGD_SPACE_EUCLIDEAN`, `tolerance = 0`
- * (must be set before a reduction to a tolerance), `continuity = 0`, `max_depth = 30`.
+ * (must be set before a reduction to a tolerance), `continuity = 0`, `max_depth = 30`,
+ * `target_v = 3`, `patch_method = CAGD_PATCH_PERTURB`, `constraint = CAGD_CONSTRAINT_NONE`.
  * Call it before setting fields, so that `struct_size` is right and fields added in later
  * versions get their defaults.
  *
@@ -1467,7 +1878,8 @@ CagdStatus cagd_curve_reduce_to_tolerance_stepwise(const struct CagdCurve *curve
 void cagd_report_free(struct CagdReport *report);
 
 /**
- * Reads the method and the degrees of a reduction.
+ * Reads the method and the degrees of a reduction. For a patch reduction: the curve
+ * method option (`opts->method`) and the degrees in u (`cagd_report_patch` gives all).
  *
  * Parameters:
  * - `report` (in): the report.
@@ -1546,7 +1958,7 @@ CagdStatus cagd_report_max_error(const struct CagdReport *report, double *error_
  * - `CAGD_OK`: both outputs are written.
  * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
  * - `CAGD_ERR_NOT_AVAILABLE`: no bound could be formed for this reduction, or the report
- *   is of a reduction to a tolerance (whose numbers are always Euclidean).
+ *   is of a reduction to a tolerance or of a patch (whose numbers are always Euclidean).
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
@@ -1573,7 +1985,7 @@ CagdStatus cagd_report_space(const struct CagdReport *report,
  * Returns:
  * - `CAGD_OK`: all outputs are written.
  * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
- * - `CAGD_ERR_NOT_AVAILABLE`: the report is of a single reduction (`cagd_curve_reduce`).
+ * - `CAGD_ERR_NOT_AVAILABLE`: the report is not of a curve reduction to a tolerance.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
@@ -1600,7 +2012,7 @@ CagdStatus cagd_report_piecewise(const struct CagdReport *report,
  * Returns:
  * - `CAGD_OK`: `*list_out` holds the pieces.
  * - `CAGD_ERR_NULL_POINTER`: `report` or `list_out` is NULL.
- * - `CAGD_ERR_NOT_AVAILABLE`: the report is of a single reduction.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the report is not of a curve reduction to a tolerance.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
@@ -1629,7 +2041,7 @@ CagdStatus cagd_report_pieces(const struct CagdReport *report, struct CagdCurveL
  *   `out_cap > 0`.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the count; only `*out_needed` is
  *   written.
- * - `CAGD_ERR_NOT_AVAILABLE`: the report is of a single reduction.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the report is not of a curve reduction to a tolerance.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *

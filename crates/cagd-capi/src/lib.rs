@@ -57,6 +57,10 @@ mod curve_ops;
 )]
 mod last_error;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod patch_list;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod patch_reduce;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod reduce;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod reduce_options;
@@ -102,9 +106,19 @@ pub use curve_ops::{
     cagd_curve_subdivide,
 };
 pub use last_error::{cagd_last_error_message, last_error_string};
+pub use patch_list::{
+    CagdTensorPatchList, CagdTriPatchList, cagd_tensorpatchlist_count, cagd_tensorpatchlist_free,
+    cagd_tensorpatchlist_get, cagd_tripatchlist_count, cagd_tripatchlist_free,
+    cagd_tripatchlist_get,
+};
+pub use patch_reduce::{
+    cagd_report_patch, cagd_tensorpatch_reduce, cagd_tensorpatch_reduce_to_tolerance,
+    cagd_tripatch_reduce, cagd_tripatch_reduce_to_tolerance,
+};
 pub use reduce::{cagd_curve_reduce, cagd_curve_reduce_batch};
 pub use reduce_options::{
-    CagdErrorSpace, CagdReduceMethod, CagdReduceOptions, cagd_reduce_options_init,
+    CagdErrorSpace, CagdPatchConstraint, CagdPatchMethod, CagdReduceMethod, CagdReduceOptions,
+    cagd_reduce_options_init,
 };
 pub use reduce_tolerance::{
     cagd_curve_reduce_to_tolerance, cagd_curve_reduce_to_tolerance_stepwise,

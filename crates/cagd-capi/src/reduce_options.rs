@@ -64,6 +64,51 @@ pub enum CagdErrorSpace {
     SPACE_HOMOGENEOUS = 1,
 }
 
+/// How a patch is reduced (`CagdReduceOptions.patch_method`, an `int32_t`).
+///
+/// cbindgen:rename-all=prefix:CAGD_
+#[repr(i32)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[allow(
+    non_camel_case_types,
+    reason = "C names: the variants become CAGD_PATCH_*"
+)]
+pub enum CagdPatchMethod {
+    /// Control-point perturbation, one degree in each direction (seed 000 §14.3.1 for
+    /// tensor patches, `(m, n) -> (m - 1, n - 1)`, with any `CagdPatchConstraint`;
+    /// §14.3.2 for triangles, `n -> n - 1`, constraint `CAGD_CONSTRAINT_NONE` only).
+    /// Minimises the sum of squared control-point perturbations.
+    PATCH_PERTURB = 0,
+    /// Tensor patches only: every column by `method` (`m -> target`), then every row
+    /// (`n -> target_v`), with the curve options `method`, `r`, `p`, `l1`, `l2`;
+    /// constraint `CAGD_CONSTRAINT_NONE` only. With `CAGD_METHOD_L2` and `r = p = -1` it is
+    /// the L2-best reduction over the unit square (the L2 projection is separable).
+    PATCH_BY_CURVES = 1,
+    /// Triangular patches only: L2-optimal reduction `n -> target` over the triangle,
+    /// under the constraint.
+    PATCH_L2 = 2,
+}
+
+/// Extra conditions on a patch reduction (`CagdReduceOptions.constraint`, an `int32_t`).
+///
+/// cbindgen:rename-all=prefix:CAGD_
+#[repr(i32)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[allow(
+    non_camel_case_types,
+    reason = "C names: the variants become CAGD_CONSTRAINT_*"
+)]
+pub enum CagdPatchConstraint {
+    /// No condition.
+    CONSTRAINT_NONE = 0,
+    /// The corner points are kept (target degrees `>= 1`; tensor `>= 2` for perturbation).
+    CONSTRAINT_CORNERS = 1,
+    /// The boundary curves of the result are the reductions of the input's boundary curves
+    /// by the curve method `method` (with `r`, `p`, `l1`, `l2`), which must interpolate
+    /// both end points: patches sharing an edge still share it after reduction (C0).
+    CONSTRAINT_BOUNDARY = 2,
+}
+
 /// How to reduce: a plain struct the caller owns. Fill it with
 /// `cagd_reduce_options_init`, then change the fields you need.
 ///
@@ -114,9 +159,17 @@ pub struct CagdReduceOptions {
     /// `k < target` and a method that keeps derivatives up to order `k` at both ends
     /// (e.g. `CAGD_METHOD_L2` with `r = p = k`). Default 0 (`C^0`).
     pub continuity: usize,
-    /// Reduction to a tolerance only: the deepest midpoint-subdivision level allowed
-    /// (pieces of length `2^-max_depth` of the parameter range). Default 30.
+    /// Reduction of a curve to a tolerance only: the deepest midpoint-subdivision level
+    /// allowed (pieces of length `2^-max_depth` of the parameter range). Default 30.
+    /// (Patches to a tolerance stop at level 8, `4^8` pieces.)
     pub max_depth: usize,
+    /// Tensor-product patches only: the target degree in v (`target` is the one in u).
+    /// Default 3.
+    pub target_v: usize,
+    /// Patches only: a `CagdPatchMethod` value. Default `CAGD_PATCH_PERTURB`.
+    pub patch_method: i32,
+    /// Patches only: a `CagdPatchConstraint` value. Default `CAGD_CONSTRAINT_NONE`.
+    pub constraint: i32,
 }
 
 /// The size of the first published version of `CagdReduceOptions` (this one): the
@@ -138,6 +191,9 @@ impl Default for CagdReduceOptions {
             tolerance: 0.0,
             continuity: 0,
             max_depth: 30,
+            target_v: 3,
+            patch_method: CagdPatchMethod::PATCH_PERTURB as i32,
+            constraint: CagdPatchConstraint::CONSTRAINT_NONE as i32,
         }
     }
 }
@@ -235,7 +291,8 @@ impl CagdReduceOptions {
 /// Fills `opts` with the defaults: `struct_size = sizeof(CagdReduceOptions)`,
 /// `method = CAGD_METHOD_L2`, `target = 3`, `r = p = 0` (end points interpolated),
 /// `l1 = l2 = 0`, `measure = false`, `space = CAGD_SPACE_EUCLIDEAN`, `tolerance = 0`
-/// (must be set before a reduction to a tolerance), `continuity = 0`, `max_depth = 30`.
+/// (must be set before a reduction to a tolerance), `continuity = 0`, `max_depth = 30`,
+/// `target_v = 3`, `patch_method = CAGD_PATCH_PERTURB`, `constraint = CAGD_CONSTRAINT_NONE`.
 /// Call it before setting fields, so that `struct_size` is right and fields added in later
 /// versions get their defaults.
 ///

@@ -1,7 +1,7 @@
 //! `CagdReport`: what a reduction did and how far the result is from the input. The
 //! accessors that only piecewise reductions answer are in `report_piecewise.rs`.
 
-use cagd_reduce::{ErrorSpace, PiecewiseReport, ReducedPiece, Report};
+use cagd_reduce::{ErrorSpace, PatchReport, PiecewiseReport, ReducedPiece, Report};
 
 use crate::boundary::{
     CResult, Failure, boundary, boundary_void, free_handle, handle_ref, out_ref,
@@ -31,6 +31,15 @@ pub(crate) enum ReportKind {
         /// The reduced pieces, in parameter order.
         pieces: Vec<ReducedPiece>,
     },
+    /// A patch reduced (to a patch, or to a tolerance: pieces).
+    Patch {
+        /// The report (for pieces: the largest bound and measured error of a piece).
+        report: PatchReport,
+        /// The `CagdPatchMethod` code that was asked for.
+        patch_method: i32,
+        /// Number of pieces (1 for a single reduction).
+        pieces: usize,
+    },
 }
 
 impl CagdReport {
@@ -39,7 +48,7 @@ impl CagdReport {
     pub fn as_report(&self) -> Option<&Report> {
         match &self.kind {
             ReportKind::Single(r) => Some(r),
-            ReportKind::Piecewise { .. } => None,
+            ReportKind::Piecewise { .. } | ReportKind::Patch { .. } => None,
         }
     }
 
@@ -47,18 +56,24 @@ impl CagdReport {
     /// single one.
     pub fn as_piecewise(&self) -> Option<&PiecewiseReport> {
         match &self.kind {
-            ReportKind::Single(_) => None,
+            ReportKind::Single(_) | ReportKind::Patch { .. } => None,
             ReportKind::Piecewise { report, .. } => Some(report),
         }
     }
 
-    /// `(degree_from, degree_to, error_bound, max_error)` of either kind.
+    /// `(degree_from, degree_to, error_bound, max_error)` of any kind (patches: in u).
     fn common(&self) -> (usize, usize, Option<f64>, Option<f64>) {
         match &self.kind {
             ReportKind::Single(r) => (r.degree_from, r.degree_to, r.error_bound, r.max_error),
             ReportKind::Piecewise { report: r, .. } => {
                 (r.degree_from, r.degree_to, Some(r.error_bound), r.max_error)
             }
+            ReportKind::Patch { report: r, .. } => (
+                r.degrees_from.0,
+                r.degrees_to.0,
+                Some(r.error_bound),
+                r.max_error,
+            ),
         }
     }
 }
@@ -85,7 +100,8 @@ pub unsafe extern "C" fn cagd_report_free(report: *mut CagdReport) {
     boundary_void(|| unsafe { free_handle(report) });
 }
 
-/// Reads the method and the degrees of a reduction.
+/// Reads the method and the degrees of a reduction. For a patch reduction: the curve
+/// method option (`opts->method`) and the degrees in u (`cagd_report_patch` gives all).
 ///
 /// Parameters:
 /// - `report` (in): the report.
@@ -206,7 +222,7 @@ pub unsafe extern "C" fn cagd_report_max_error(
 /// - `CAGD_OK`: both outputs are written.
 /// - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
 /// - `CAGD_ERR_NOT_AVAILABLE`: no bound could be formed for this reduction, or the report
-///   is of a reduction to a tolerance (whose numbers are always Euclidean).
+///   is of a reduction to a tolerance or of a patch (whose numbers are always Euclidean).
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
@@ -231,7 +247,7 @@ pub unsafe extern "C" fn cagd_report_space(
         let ReportKind::Single(single) = &r.kind else {
             return Err(Failure::new(
                 CagdStatus::ERR_NOT_AVAILABLE,
-                "a reduction to a tolerance reports Euclidean numbers only",
+                "reductions to a tolerance and of patches report Euclidean numbers only",
             ));
         };
         let hb = available(

@@ -14,9 +14,9 @@ fn piecewise(
 ) -> CResult<(&cagd_reduce::PiecewiseReport, &[cagd_reduce::ReducedPiece])> {
     match &r.kind {
         ReportKind::Piecewise { report, pieces } => Ok((report, pieces)),
-        ReportKind::Single(_) => Err(Failure::new(
+        ReportKind::Single(_) | ReportKind::Patch { .. } => Err(Failure::new(
             CagdStatus::ERR_NOT_AVAILABLE,
-            "not the report of a reduction to a tolerance (it has one piece)",
+            "not the report of a curve reduction to a tolerance",
         )),
     }
 }
@@ -36,7 +36,7 @@ fn piecewise(
 /// Returns:
 /// - `CAGD_OK`: all outputs are written.
 /// - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
-/// - `CAGD_ERR_NOT_AVAILABLE`: the report is of a single reduction (`cagd_curve_reduce`).
+/// - `CAGD_ERR_NOT_AVAILABLE`: the report is not of a curve reduction to a tolerance.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
@@ -81,7 +81,7 @@ pub unsafe extern "C" fn cagd_report_piecewise(
 /// Returns:
 /// - `CAGD_OK`: `*list_out` holds the pieces.
 /// - `CAGD_ERR_NULL_POINTER`: `report` or `list_out` is NULL.
-/// - `CAGD_ERR_NOT_AVAILABLE`: the report is of a single reduction.
+/// - `CAGD_ERR_NOT_AVAILABLE`: the report is not of a curve reduction to a tolerance.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
@@ -131,7 +131,7 @@ pub unsafe extern "C" fn cagd_report_pieces(
 ///   `out_cap > 0`.
 /// - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the count; only `*out_needed` is
 ///   written.
-/// - `CAGD_ERR_NOT_AVAILABLE`: the report is of a single reduction.
+/// - `CAGD_ERR_NOT_AVAILABLE`: the report is not of a curve reduction to a tolerance.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///

@@ -109,7 +109,6 @@ mod measure;
 mod method;
 mod one_step;
 mod operator;
-mod piecewise;
 mod patch_exact;
 mod patch_report;
 mod patch_tensor;
@@ -117,6 +116,7 @@ mod patch_tensor_curves;
 mod patch_tolerance;
 mod patch_tri;
 mod patch_tri_l2;
+mod piecewise;
 mod reduce;
 mod tolerance;
 #[cfg(test)]
@@ -131,7 +131,6 @@ pub use g1::reduce_g1_optimal;
 pub use measure::{SAMPLES, max_deviation};
 pub use method::Method;
 pub use operator::{Operator, operator};
-pub use piecewise::{PiecewiseReduction, PiecewiseReport, ReducedPiece};
 pub use patch_report::{
     PatchConstraint, PatchOptions, PatchReduction, PatchReport, TensorMethod, TensorPiece,
     TriMethod, TriOptions, TriPiece, TriReduction,
@@ -141,6 +140,7 @@ pub use patch_tolerance::{
     MAX_SUBDIVISION_LEVEL, reduce_tensor_to_tolerance, reduce_triangle_to_tolerance,
 };
 pub use patch_tri::{reduce_triangle, tri_perturbation_matrix};
+pub use piecewise::{PiecewiseReduction, PiecewiseReport, ReducedPiece};
 pub use reduce::{ErrorSpace, ReduceOptions, Reduction, Report, reduce, reduce_with};
 pub use tolerance::{DEFAULT_MAX_DEPTH, MAX_PIECES, ToleranceOptions, reduce_to_tolerance};
 pub use wn_table::perturbation_error_factor;

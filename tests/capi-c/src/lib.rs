@@ -81,6 +81,12 @@ c_tests![
     bspline_new_bad_knots,
     bspline_new_bad_input,
     bspline_ops_bad_input,
+    // c/patch_reduce.c
+    tensorpatch_reduce_spec,
+    tripatch_reduce_spec,
+    patch_reduce_roundtrip,
+    patch_reduce_to_tolerance,
+    patch_reduce_bad_input,
     // c/patch_ops.c
     tensorpatch_ops,
     tripatch_ops,
