@@ -8,6 +8,7 @@ mod args;
 mod demo;
 mod input;
 mod methods;
+mod patch_cmd;
 mod picture;
 mod reduce_cmd;
 mod shape;

@@ -1,7 +1,7 @@
 //! Pictures of a reduction: original and result with their control polygons, and the error
 //! `|P(t) - Q(t)|` along the parameter.
 
-use cagd_core::BezierCurve;
+use cagd_core::{BSplineCurve, BezierCurve, TriPatch};
 
 use crate::shape::Shape;
 use crate::svg::{Panel, project};
@@ -63,6 +63,118 @@ pub(crate) fn curve_panels(
 pub(crate) fn panels(title: &str, input: &Shape, output: &Shape) -> Vec<Panel> {
     match (input, output) {
         (Shape::Bezier(a), Shape::Bezier(b)) => curve_panels(title, a, b).to_vec(),
+        (Shape::Bezier(a), Shape::BSpline(b)) => spline_panels(title, a, b).to_vec(),
+        (Shape::Tensor(a), Shape::Tensor(b)) => vec![wireframe(
+            format!(
+                "{title}: tensor {:?} (black) -> {:?} (red)",
+                a.degrees(),
+                b.degrees()
+            ),
+            &|u, v| a.eval(u, v).ok(),
+            &|u, v| b.eval(u, v).ok(),
+            false,
+        )],
+        (Shape::Triangle(a), Shape::Triangle(b)) => vec![wireframe(
+            format!(
+                "{title}: triangle {} (black) -> {} (red)",
+                a.degree(),
+                b.degree()
+            ),
+            &|u, v| tri_eval(a, u, v),
+            &|u, v| tri_eval(b, u, v),
+            true,
+        )],
         _ => Vec::new(),
     }
+}
+
+/// Two panels for a reduction to a tolerance: the original and the degree-m B-spline (with
+/// its control polygon and the piece breaks), and the error along the parameter.
+pub(crate) fn spline_panels(
+    title: &str,
+    original: &BezierCurve,
+    result: &BSplineCurve,
+) -> [Panel; 2] {
+    let eval = |t: f64| result.eval(t).unwrap_or_else(|_| vec![0.0; result.dim()]);
+    let mut geo = Panel {
+        title: format!(
+            "{title}: degree {} (black) -> degree-{} B-spline (red)",
+            original.degree(),
+            result.degree()
+        ),
+        equal_aspect: true,
+        ..Panel::default()
+    };
+    geo.polygon(polygon(original), "#888888");
+    geo.polygon(
+        result.points().chunks(result.dim()).map(project).collect(),
+        "#e08080",
+    );
+    geo.line(curve_line(original), "black", 1.6);
+    geo.line(
+        (0..=4 * SAMPLES)
+            .map(|i| project(&eval(i as f64 / (4 * SAMPLES) as f64)))
+            .collect(),
+        "#d01010",
+        1.2,
+    );
+    let mut err = Panel {
+        title: "error |P(t) - S(t)| over t in [0, 1]".into(),
+        equal_aspect: false,
+        ..Panel::default()
+    };
+    let pts = (0..=4 * SAMPLES)
+        .map(|i| {
+            let t = i as f64 / (4 * SAMPLES) as f64;
+            let (p, q) = (original.eval(t), eval(t));
+            let d = p
+                .iter()
+                .zip(&q)
+                .map(|(a, b)| (a - b) * (a - b))
+                .sum::<f64>()
+                .sqrt();
+            (t, d)
+        })
+        .collect();
+    err.line(pts, "#1050c0", 1.2);
+    [geo, err]
+}
+
+fn tri_eval(t: &TriPatch, u: f64, v: f64) -> Option<Vec<f64>> {
+    let mut out = vec![0.0; t.dim()];
+    t.eval_into(u, v, &mut out);
+    Some(out)
+}
+
+type Surface<'a> = &'a dyn Fn(f64, f64) -> Option<Vec<f64>>;
+
+/// A projected wireframe of two surfaces: iso-parameter lines `u = i/8` and `v = j/8`
+/// (on a triangle, only where `u + v <= 1`).
+fn wireframe(title: String, a: Surface<'_>, b: Surface<'_>, triangle: bool) -> Panel {
+    const LINES: usize = 8;
+    const STEPS: usize = 64;
+    let mut panel = Panel {
+        title,
+        equal_aspect: true,
+        ..Panel::default()
+    };
+    for (surface, color, width) in [(a, "black", 1.4), (b, "#d01010", 0.9)] {
+        for i in 0..=LINES {
+            let c = i as f64 / LINES as f64;
+            let end = if triangle { 1.0 - c } else { 1.0 };
+            for dir in 0..2 {
+                let line: Vec<(f64, f64)> = (0..=STEPS)
+                    .filter_map(|s| {
+                        let x = end * s as f64 / STEPS as f64;
+                        let (u, v) = if dir == 0 { (c, x) } else { (x, c) };
+                        surface(u, v).map(|p| project(&p))
+                    })
+                    .collect();
+                if line.len() > 1 {
+                    panel.line(line, color, width);
+                }
+            }
+        }
+    }
+    panel
 }

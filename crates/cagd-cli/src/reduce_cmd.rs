@@ -1,11 +1,15 @@
 //! `cagd reduce`: read shapes, reduce each, write the results with their reports.
 
 use cagd_core::BezierCurve;
-use cagd_reduce::{Method, ReduceOptions, Reduction, Report, max_deviation, reduce_g1_optimal};
+use cagd_reduce::{
+    Method, PiecewiseReport, ReduceOptions, Reduction, Report, ToleranceOptions, max_deviation,
+    reduce_g1_optimal, reduce_to_tolerance,
+};
 use serde_json::{Value, json};
 
 use crate::args::ReduceArgs;
 use crate::methods::{Plan, plan};
+use crate::patch_cmd::{tensor_method, tri_method};
 use crate::shape::Shape;
 
 /// The default method when `--method` is not given: the L2-optimal reduction with the end
@@ -31,6 +35,22 @@ pub(crate) fn report_json(r: &Report) -> Value {
             cagd_reduce::ErrorSpace::Euclidean => "euclidean",
             cagd_reduce::ErrorSpace::Homogeneous => "homogeneous",
         },
+    })
+}
+
+/// The report of a reduction to a tolerance in the JSON form of the command: the fields of
+/// [`report_json`] plus the tolerance, the continuity and the number of pieces.
+pub(crate) fn piecewise_report_json(r: &PiecewiseReport) -> Value {
+    json!({
+        "method": r.method.name(),
+        "degree_from": r.degree_from,
+        "degree_to": r.degree_to,
+        "error_bound": r.error_bound,
+        "max_error": r.max_error,
+        "space": "euclidean",
+        "tolerance": r.tolerance,
+        "continuity": r.continuity,
+        "pieces": r.pieces,
     })
 }
 
@@ -79,6 +99,19 @@ pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<O
         path: "--method".into(),
         message,
     })?;
+    // With a tolerance the pieces must join with C^k: the end orders of chebyshev / l2
+    // default to the continuity K instead of 0.
+    let k = args
+        .continuity
+        .map(|k| i64::try_from(k).unwrap_or(i64::MAX));
+    let how_tol = if args.tol.is_some() && matches!(name, "chebyshev" | "l2") {
+        plan(name, args.r.or(k), args.p.or(k)).map_err(|message| Failure {
+            path: "--method".into(),
+            message,
+        })?
+    } else {
+        how
+    };
     let mut out = Vec::with_capacity(shapes.len());
     for (path, shape) in shapes {
         let fail = |e: cagd_reduce::Error| Failure {
@@ -87,11 +120,29 @@ pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<O
         };
         match shape {
             Shape::Bezier(c) => {
-                if args.tol.is_some() {
-                    return Err(Failure {
-                        path: "--tol".into(),
-                        message: "reduction to a tolerance is not available in this build".into(),
+                if let Some(tol) = args.tol {
+                    let Plan::Linear(method) = how_tol else {
+                        return Err(Failure {
+                            path: "--method".into(),
+                            message: "perturbation-g1 is not linear and cannot reduce to a \
+                                      tolerance; use l2 or chebyshev with --r/--p"
+                                .into(),
+                        });
+                    };
+                    let k = args.continuity.unwrap_or(0);
+                    let opts = ToleranceOptions {
+                        measure: true,
+                        ..ToleranceOptions::new(method, args.to.0, tol, k)
+                    };
+                    let red = reduce_to_tolerance(c, &opts).map_err(fail)?;
+                    let result = Shape::BSpline(red.spline);
+                    let mut v = result.to_json();
+                    v["report"] = piecewise_report_json(&red.report);
+                    out.push(Output {
+                        json: v,
+                        pair: Some((shape.clone(), result)),
                     });
+                    continue;
                 }
                 let red = reduce_curve(c, args.to.0, how).map_err(fail)?;
                 let result = Shape::Bezier(red.curve.clone());
@@ -102,10 +153,41 @@ pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<O
                     pair: Some((shape.clone(), result)),
                 });
             }
-            Shape::Tensor(_) | Shape::Triangle(_) => {
+            Shape::BSpline(_) => {
                 return Err(Failure {
                     path: path.clone(),
-                    message: "patch reduction is not available in this build".into(),
+                    message: "B-spline reduction is not available in this build".into(),
+                });
+            }
+            Shape::Tensor(p) => {
+                let target = (args.to.0, args.to.1.unwrap_or(args.to.0));
+                let method = tensor_method(name, how).map_err(|message| Failure {
+                    path: "--method".into(),
+                    message,
+                })?;
+                let (json, result) =
+                    crate::patch_cmd::tensor(p, target, method, args.tol).map_err(fail)?;
+                out.push(Output {
+                    json,
+                    pair: result.map(|r| (shape.clone(), r)),
+                });
+            }
+            Shape::Triangle(t) => {
+                if args.to.1.is_some_and(|n| n != args.to.0) {
+                    return Err(Failure {
+                        path: "--to".into(),
+                        message: "a triangular patch has one degree: give --to M".into(),
+                    });
+                }
+                let method = tri_method(name, how).map_err(|message| Failure {
+                    path: "--method".into(),
+                    message,
+                })?;
+                let (json, result) =
+                    crate::patch_cmd::triangle(t, args.to.0, method, args.tol).map_err(fail)?;
+                out.push(Output {
+                    json,
+                    pair: result.map(|r| (shape.clone(), r)),
                 });
             }
         }

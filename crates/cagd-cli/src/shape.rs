@@ -1,6 +1,6 @@
 //! Validated shapes (cagd-core objects) built from the raw JSON input, and their JSON output.
 
-use cagd_core::{BezierCurve, Error, TensorPatch, TriPatch};
+use cagd_core::{BSplineCurve, BezierCurve, Error, TensorPatch, TriPatch};
 use serde_json::{Value, json};
 
 use crate::input::{InputError, PointList, RawShape};
@@ -9,6 +9,7 @@ use crate::input::{InputError, PointList, RawShape};
 #[derive(Debug, Clone)]
 pub(crate) enum Shape {
     Bezier(BezierCurve),
+    BSpline(BSplineCurve),
     Tensor(TensorPatch),
     Triangle(TriPatch),
 }
@@ -50,11 +51,18 @@ impl Shape {
             RawShape::Triangle { degree, points } => Shape::Triangle(
                 TriPatch::new(points.coords, degree, points.dim).map_err(|e| locate(path, &e))?,
             ),
-            RawShape::BSpline { .. } => {
-                return Err(InputError::new(
-                    format!("{path}.type"),
-                    "bspline input is not supported by this build",
-                ));
+            RawShape::BSpline {
+                degree,
+                knots,
+                points,
+                weights,
+            } => {
+                let PointList { coords, dim } = points;
+                let c = match weights {
+                    None => BSplineCurve::new(degree, knots, coords, dim),
+                    Some(w) => BSplineCurve::new_rational(degree, knots, coords, w, dim),
+                };
+                Shape::BSpline(c.map_err(|e| locate(path, &e))?)
             }
         };
         Ok(shape)
@@ -65,6 +73,18 @@ impl Shape {
         match self {
             Shape::Bezier(c) => {
                 let mut v = json!({"type": "bezier", "points": rows(c.points(), c.dim())});
+                if let Some(w) = c.weights() {
+                    v["weights"] = json!(w);
+                }
+                v
+            }
+            Shape::BSpline(c) => {
+                let mut v = json!({
+                    "type": "bspline",
+                    "degree": c.degree(),
+                    "knots": c.knots(),
+                    "points": rows(c.points(), c.dim()),
+                });
                 if let Some(w) = c.weights() {
                     v["weights"] = json!(w);
                 }

@@ -184,3 +184,110 @@ fn demo_writes_table_and_pictures() {
     assert!(svgs >= 5, "{svgs} pictures");
     std::fs::remove_dir_all(&dir).expect("cleanup");
 }
+
+#[test]
+fn reduction_to_a_tolerance_gives_a_bspline_within_tolerance() {
+    let p = json!([
+        [0, 0],
+        [1, 4],
+        [2, 6],
+        [4, 7],
+        [6, 5],
+        [7, 2],
+        [9, 1],
+        [11, 3],
+        [12, 6],
+        [14, 7],
+        [16, 4]
+    ]);
+    for (tol, k) in [("1e-2", "0"), ("1e-4", "1"), ("1e-6", "1")] {
+        let out = json_out(&cagd(
+            &["reduce", "--to", "3", "--tol", tol, "--continuity", k],
+            &bezier(&p),
+        ));
+        assert_eq!(out["type"], "bspline");
+        assert_eq!(out["degree"], 3);
+        let r = &out["report"];
+        let t: f64 = tol.parse().expect("number");
+        let (bound, measured) = (
+            r["error_bound"].as_f64().expect("bound"),
+            r["max_error"].as_f64().expect("measured"),
+        );
+        assert!(measured <= bound && bound <= t, "{tol}: {measured} {bound}");
+        // Interior knots have multiplicity m - k.
+        let knots = flat(&out["knots"]);
+        let kk: usize = k.parse().expect("k");
+        let interior: Vec<f64> = knots
+            .iter()
+            .copied()
+            .filter(|x| *x > 0.0 && *x < 1.0)
+            .collect();
+        assert_eq!(
+            interior.len(),
+            (usize::try_from(r["pieces"].as_u64().expect("pieces")).expect("small") - 1) * (3 - kk)
+        );
+    }
+    // Continuity 3 for a cubic is impossible and says so.
+    let o = cagd(
+        &["reduce", "--to", "3", "--tol", "1e-3", "--continuity", "3"],
+        &bezier(&p),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).starts_with("cagd: input: "));
+}
+
+#[test]
+fn patches_through_the_command() {
+    // tensor-1: 2 x 3 -> 1 x 2 by the perturbation method of §14.3.1.
+    let v = vector("vectors-reduce.json", "tensor-1");
+    let rows = v["input"]["P"].as_array().expect("rows");
+    let pts: Vec<Value> = rows
+        .iter()
+        .flat_map(|r| r.as_array().expect("row").clone())
+        .collect();
+    let input = json!({"type": "tensor", "degree": [rows.len() - 1, rows[0].as_array().expect("row").len() - 1], "points": pts});
+    let out = json_out(&cagd(
+        &["reduce", "--to", "1,2", "--method", "perturbation"],
+        &input.to_string(),
+    ));
+    assert_eq!(out["degree"], json!([1, 2]));
+    assert_close(
+        "tensor-1",
+        &flat(&out["points"]),
+        &flat(&v["expected"]["Q"]),
+        1e-12,
+    );
+    let r = &out["report"];
+    assert!(r["max_error"].as_f64().expect("m") <= r["error_bound"].as_f64().expect("b"));
+
+    // tri-1: degree 3 -> 2 by §14.3.2.
+    let v = vector("vectors-reduce.json", "tri-1");
+    let input = json!({"type": "triangle", "degree": 3, "points": v["input"]["T"]});
+    let out = json_out(&cagd(
+        &["reduce", "--to", "2", "--method", "perturbation"],
+        &input.to_string(),
+    ));
+    assert_close(
+        "tri-1",
+        &flat(&out["points"]),
+        &flat(&v["expected"]["Q"]),
+        1e-12,
+    );
+
+    // Multi-degree and to a tolerance: every piece within the tolerance.
+    let out = json_out(&cagd(
+        &["reduce", "--to", "1", "--tol", "0.5"],
+        &input.to_string(),
+    ));
+    assert_eq!(out["type"], "triangle-pieces");
+    let pieces = out["pieces"].as_array().expect("pieces");
+    assert!(!pieces.is_empty());
+    for p in pieces {
+        assert!(p["report"]["error_bound"].as_f64().expect("bound") <= 0.5);
+        assert_eq!(p["vertices"].as_array().expect("vertices").len(), 3);
+    }
+    // A triangle has one degree.
+    let o = cagd(&["reduce", "--to", "2,1"], &input.to_string());
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).starts_with("cagd: --to: "));
+}
