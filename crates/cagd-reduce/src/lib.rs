@@ -99,6 +99,11 @@
 
 mod alg_14_2_1;
 mod batch;
+mod bspline_knots;
+mod bspline_measure;
+mod bspline_reduce;
+mod bspline_surface_reduce;
+mod bspline_uniform;
 mod chebyshev;
 mod ends;
 mod exact;
@@ -125,6 +130,10 @@ mod wn_table;
 
 pub use alg_14_2_1::{reduce_to_tolerance_alg_14_2_1, subdivision_levels};
 pub use batch::reduce_batch;
+pub use bspline_measure::spline_max_deviation;
+pub use bspline_reduce::{BSplineOptions, BSplineReduction, BSplineReport, reduce_bspline};
+pub use bspline_surface_reduce::{SurfaceOptions, SurfaceReduction, reduce_bspline_surface};
+pub use bspline_uniform::{Merge, UniformReduction, reduce_uniform_bspline};
 pub use cagd_core::{Error, Result};
 pub use exact_degree::{DEFAULT_REL_TOL, exact_degree, reduce_exact};
 pub use g1::reduce_g1_optimal;

@@ -1,0 +1,176 @@
+//! The merge of reduced pieces and knot removal with local (per span) error bookkeeping,
+//! as Piegl & Tiller do it: a knot removal changes the curve only on the support of the
+//! basis functions whose points move, so its bound is charged to those spans only, and a
+//! removal is accepted when every charged span stays within the tolerance.
+
+use cagd_core::{BSplineCurve, BezierCurve, Result, knot_multiplicity};
+
+use crate::bspline_measure::euclidean_from_homogeneous;
+use crate::operator::max_norm;
+
+/// Passes of the greedy knot removal (a later pass rarely removes more than a few knots).
+const MAX_PASSES: usize = 3;
+
+/// Certified error bounds per span of a fixed partition `breaks` of the domain.
+#[derive(Debug, Clone)]
+pub(crate) struct LocalBounds {
+    breaks: Vec<f64>,
+    err: Vec<f64>,
+}
+
+impl LocalBounds {
+    /// The span range `lo..hi` of the partition meeting the open interval `(a, b)`.
+    fn range(&self, a: f64, b: f64) -> std::ops::Range<usize> {
+        let n = self.err.len();
+        let lo = self.breaks[1..].partition_point(|x| *x <= a).min(n);
+        let hi = self.breaks.partition_point(|x| *x < b).min(n).max(lo);
+        lo..hi
+    }
+
+    /// The largest bound over all spans.
+    pub(crate) fn max_bound(&self) -> f64 {
+        self.err.iter().copied().fold(0.0, f64::max)
+    }
+
+    /// Tries to remove one copy of the interior knot `v` of `c` within `tol` on every span
+    /// it touches; on success charges the bound to those spans and returns the new curve.
+    fn try_remove_one(
+        &mut self,
+        c: &BSplineCurve,
+        v: f64,
+        tol: f64,
+    ) -> Result<Option<BSplineCurve>> {
+        let (m, u) = (c.degree(), c.knots());
+        let s = knot_multiplicity(u, v);
+        let (d0, d1) = c.domain();
+        if s == 0 || v <= d0 || v >= d1 {
+            return Ok(None);
+        }
+        let r = u.partition_point(|x| *x <= v) - 1;
+        // The points r-m..=r-s move; their basis functions live on [u_{r-m}, u_{r-s+m+1}].
+        let (a, b) = (u[r - m], u[(r + m + 1 - s).min(u.len() - 1)]);
+        let span = self.range(a, b);
+        let worst = self.err[span.clone()].iter().copied().fold(0.0, f64::max);
+        let avail = tol - worst;
+        if avail <= 0.0 {
+            return Ok(None);
+        }
+        let out = c.remove_knot(v, 1, avail)?;
+        if out.removed == 0 {
+            return Ok(None);
+        }
+        for e in &mut self.err[span] {
+            *e += out.error_bound;
+        }
+        Ok(Some(out.curve))
+    }
+
+    /// Removes `count` copies of each joint `(v, count)` (joints that are `C^count` by
+    /// construction, so this costs rounding only); returns `None` if one cannot be removed
+    /// within `tol`.
+    pub(crate) fn remove_joint_copies(
+        &mut self,
+        mut c: BSplineCurve,
+        joints: &[(f64, usize)],
+        tol: f64,
+    ) -> Result<Option<BSplineCurve>> {
+        for &(v, count) in joints {
+            for _ in 0..count {
+                match self.try_remove_one(&c, v, tol)? {
+                    Some(next) => c = next,
+                    None => return Ok(None),
+                }
+            }
+        }
+        Ok(Some(c))
+    }
+
+    /// Greedy passes over the distinct interior knots, removing copies while every span a
+    /// removal touches keeps its accumulated bound `<= tol`, until a pass removes nothing
+    /// (at most [`MAX_PASSES`]; each pass costs `O(knots * points)`).
+    pub(crate) fn remove_greedily(
+        &mut self,
+        mut c: BSplineCurve,
+        tol: f64,
+    ) -> Result<BSplineCurve> {
+        for _ in 0..MAX_PASSES {
+            let mut removed_any = false;
+            let mut values = c.knots().to_vec();
+            values.dedup();
+            for v in values {
+                while let Some(next) = self.try_remove_one(&c, v, tol)? {
+                    c = next;
+                    removed_any = true;
+                }
+            }
+            if !removed_any {
+                break;
+            }
+        }
+        Ok(c)
+    }
+}
+
+/// Merges consecutive reduced pieces `(a, b, curve, bound)` into one clamped C0 spline
+/// (seed 001 §4.1) and returns it with the per-span bounds: each piece's bound plus, at
+/// each joint, half the gap between the two end points (the merge stores their midpoint),
+/// converted to model space for NURBS.
+pub(crate) fn merge_pieces<'a>(
+    pieces: impl Iterator<Item = (f64, f64, &'a BezierCurve, f64)>,
+    input: &BSplineCurve,
+    _tol: f64,
+) -> Result<(BSplineCurve, LocalBounds)> {
+    let mut segs = Vec::new();
+    let mut breaks = Vec::new();
+    let mut err = Vec::new();
+    for (a, b, c, bound) in pieces {
+        if breaks.is_empty() {
+            breaks.push(a);
+        }
+        breaks.push(b);
+        segs.push(c.clone());
+        err.push(bound);
+    }
+    let rational = input.is_rational();
+    let work = |c: &BezierCurve| {
+        if rational {
+            c.homogeneous_points()
+        } else {
+            c.points().to_vec()
+        }
+    };
+    let pdim = input.dim() + usize::from(rational);
+    let mut gaps = Vec::with_capacity(segs.len());
+    for w in segs.windows(2) {
+        let (l, r) = (work(&w[0]), work(&w[1]));
+        let end = &l[l.len() - pdim..];
+        let g = end
+            .iter()
+            .zip(&r[..pdim])
+            .map(|(x, y)| (x - y) * (x - y))
+            .sum::<f64>()
+            .sqrt();
+        gaps.push(g);
+    }
+    let max_gap = gaps.iter().copied().fold(0.0, f64::max);
+    let merged = BSplineCurve::from_beziers(&segs, &breaks, 0, max_gap * 1.5 + f64::MIN_POSITIVE)?;
+    let to_model = |g: f64| -> f64 {
+        match input.weights() {
+            None => g,
+            Some(w) => {
+                let wmin = w.iter().copied().fold(f64::INFINITY, f64::min);
+                let vmin = merged
+                    .weights()
+                    .map_or(1.0, |v| v.iter().copied().fold(f64::INFINITY, f64::min));
+                euclidean_from_homogeneous(g, max_norm(input.points(), input.dim()), wmin, vmin)
+            }
+        }
+    };
+    for (j, g) in gaps.iter().enumerate() {
+        // Joint j is between pieces j and j + 1; its point's basis covers both spans.
+        let add = to_model(0.5 * g * (1.0 + 4.0 * f64::EPSILON));
+        err[j] += add;
+        err[j + 1] += add;
+    }
+    Ok((merged, LocalBounds { breaks, err }))
+}

@@ -1,0 +1,186 @@
+//! Tests of [`reduce_bspline`]: errors, elevated splines reduce back, random curves meet
+//! the tolerance, continuity at every kept knot by derivative jumps.
+
+use super::*;
+use proptest::prelude::*;
+
+/// A clamped spline of degree `p` with `spans` distinct interior knots on `[0, 1]`
+/// (jittered uniform), optional weights.
+fn spline(p: usize, spans: usize, pts: &[f64], w: Option<&[f64]>, jit: &[f64]) -> BSplineCurve {
+    let mut knots = vec![0.0; p + 1];
+    for (i, j) in jit.iter().enumerate().take(spans).skip(1) {
+        knots.push((i as f64 + 0.4 * j) / spans as f64);
+    }
+    knots.extend(std::iter::repeat_n(1.0, p + 1));
+    let n = spans + p;
+    match w {
+        None => BSplineCurve::new(p, knots, pts[..2 * n].to_vec(), 2),
+        Some(w) => BSplineCurve::new_rational(p, knots, pts[..2 * n].to_vec(), w[..n].to_vec(), 2),
+    }
+    .unwrap()
+}
+
+/// Elevates every piece by `d` and merges back with the spline's continuity (simple knots:
+/// `C^(p-1)`), so the interior multiplicities grow to `d + 1`.
+fn elevate(c: &BSplineCurve, d: usize) -> BSplineCurve {
+    let pieces = c.to_beziers().unwrap();
+    let mut breaks: Vec<f64> = pieces.iter().map(|x| x.start).collect();
+    breaks.push(pieces.last().unwrap().end);
+    let segs: Vec<BezierCurve> = pieces.iter().map(|x| x.curve.elevate(d).unwrap()).collect();
+    let k = if pieces.len() > 1 { c.degree() - 1 } else { 0 };
+    BSplineCurve::from_beziers(&segs, &breaks, k, 1e-9).unwrap()
+}
+
+/// Checks `C^k` at `t` of `c` by the jumps of the derivatives `1..=k` of the adjacent
+/// pieces (relative to the derivative sizes; rounding grows with `1/h^j`).
+fn assert_continuity(c: &BSplineCurve, t: f64, k: usize) {
+    let pieces = c.to_beziers().unwrap();
+    let i = pieces.iter().position(|x| x.end == t).expect("t is a knot");
+    let (l, r) = (&pieces[i], &pieces[i + 1]);
+    let dl = l.curve.derivatives(1.0, k).unwrap();
+    let dr = r.curve.derivatives(0.0, k).unwrap();
+    for j in 0..=k {
+        let (hl, hr) = (
+            (l.end - l.start).powi(i32::try_from(j).unwrap()),
+            (r.end - r.start).powi(i32::try_from(j).unwrap()),
+        );
+        let a: Vec<f64> = dl[j].iter().map(|x| x / hl).collect();
+        let b: Vec<f64> = dr[j].iter().map(|x| x / hr).collect();
+        let size = a.iter().chain(&b).fold(1.0f64, |s, x| s.max(x.abs()));
+        let jump = a
+            .iter()
+            .zip(&b)
+            .map(|(x, y)| (x - y).abs())
+            .fold(0.0, f64::max);
+        assert!(
+            jump <= 1e-7 * size,
+            "C{j} jump {jump:e} (size {size:e}) at {t}"
+        );
+    }
+}
+
+#[test]
+fn errors() {
+    let c = spline(4, 3, &[1.0; 20], None, &[0.0; 3]);
+    let ok = BSplineOptions::new(2, 1e-3);
+    assert!(reduce_bspline(&c, &ok).is_ok());
+    for (opts, what) in [
+        (BSplineOptions::new(4, 1e-3), "m = p"),
+        (BSplineOptions::new(0, 1e-3), "m = 0"),
+        (BSplineOptions::new(2, 0.0), "tolerance 0"),
+        (BSplineOptions::new(2, f64::NAN), "tolerance NaN"),
+        (
+            BSplineOptions {
+                method: Method::Eck,
+                ..ok
+            },
+            "method",
+        ),
+        (
+            BSplineOptions {
+                continuity: Some(1),
+                ..ok
+            },
+            "C1 at m = 2",
+        ),
+    ] {
+        assert!(reduce_bspline(&c, &opts).is_err(), "{what}");
+    }
+    // A tolerance below the rounding level cannot be met.
+    let wiggly = spline(
+        4,
+        3,
+        &[
+            1.0, -3.0, 2.0, 5.0, -4.0, 0.0, 7.0, 1.0, 2.0, 2.0, 3.0, -1.0, 0.0, 0.0,
+        ],
+        None,
+        &[0.0; 3],
+    );
+    assert!(matches!(
+        reduce_bspline(&wiggly, &BSplineOptions::new(2, 1e-300)),
+        Err(Error::ConditionNotMet { .. })
+    ));
+}
+
+#[test]
+fn double_knot_keeps_its_lower_continuity() {
+    // Degree 5 with a triple knot at 0.5 (C2 there), simple knot at 0.25 (C4) -> degree 3:
+    // C1 at both (k = min(1, p - s)).
+    let knots = vec![
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.25, 0.5, 0.5, 0.5, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0,
+    ];
+    let pts: Vec<f64> = (0..20).map(|i| ((i * 7 % 11) as f64) - 5.0).collect();
+    let c = BSplineCurve::new(5, knots, pts, 2).unwrap();
+    let opts = BSplineOptions {
+        measure: true,
+        ..BSplineOptions::new(3, 1e-4)
+    };
+    let r = reduce_bspline(&c, &opts).unwrap();
+    assert!(r.report.max_error.unwrap() <= r.report.error_bound);
+    assert!(r.report.error_bound <= 1e-4);
+    for &(t, k) in &r.report.continuity {
+        assert_eq!(k, 1);
+        assert_continuity(&r.curve, t, k);
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(10))]
+
+    /// A degree-elevated spline (interior multiplicity d + 1) reduces back to the original
+    /// degree with no more spans, simple knots, and the original curve within tolerance.
+    #[test]
+    fn elevated_spline_reduces_back(
+        m in 1usize..=4, d in 1usize..=3, spans in 1usize..=30,
+        pts in cagd_testkit::points(40, 2), w in cagd_testkit::weights(40),
+        rational in any::<bool>(), jit in proptest::collection::vec(-1.0f64..1.0, 31),
+    ) {
+        let c = spline(m, spans, &pts, rational.then_some(&w[..]), &jit);
+        let e = elevate(&c, d);
+        prop_assert_eq!(e.degree(), m + d);
+        let tol = 1e-7;
+        let opts = BSplineOptions { measure: true, ..BSplineOptions::new(m, tol) };
+        let r = reduce_bspline(&e, &opts).unwrap();
+        prop_assert!(r.spans_out <= r.spans_in, "{} > {}", r.spans_out, r.spans_in);
+        prop_assert_eq!(r.report.pieces, r.spans_in);
+        let measured = r.report.max_error.unwrap();
+        prop_assert!(measured <= tol && r.report.error_bound <= tol);
+        prop_assert!(spline_max_deviation(&c, &r.curve).unwrap() <= tol);
+        // Every kept knot has multiplicity 1 (C^(m-1) recovered) and is an original knot.
+        let mut ks = r.curve.knots().to_vec();
+        ks.dedup();
+        for t in &ks[1..ks.len() - 1] {
+            prop_assert_eq!(knot_multiplicity(r.curve.knots(), *t), 1);
+            prop_assert_eq!(knot_multiplicity(c.knots(), *t), 1);
+        }
+    }
+
+    /// Random curves (1..=200 spans, degree 3..=7, coordinates in [-10, 10], tolerance
+    /// 1e-1..1e-4, rational or not) meet the tolerance, the
+    /// certified bound covers the measured error, and every kept input knot has the
+    /// promised continuity.
+    #[test]
+    fn random_curves_meet_the_tolerance(
+        p in 3usize..=7, mdrop in 1usize..=2, spans in 1usize..=200, tol_exp in 1i32..=4,
+        pts in cagd_testkit::points(210, 2), w in cagd_testkit::weights(210),
+        rational in any::<bool>(), jit in proptest::collection::vec(-1.0f64..1.0, 201),
+        l2 in any::<bool>(),
+    ) {
+        // m >= 2: a piecewise-linear fit of 200 wiggles of size 10 to 1e-4 needs ~1e5
+        // pieces, which is correct but too slow for a unit test.
+        let m = p.saturating_sub(mdrop).max(2);
+        let c = spline(p, spans, &pts, rational.then_some(&w[..]), &jit);
+        let tol = 10f64.powi(-tol_exp);
+        let method = if l2 { Method::L2 { r: 0, p: 0 } } else { BSplineOptions::new(m, tol).method };
+        let opts = BSplineOptions { measure: true, method, ..BSplineOptions::new(m, tol) };
+        let r = reduce_bspline(&c, &opts).unwrap();
+        let measured = r.report.max_error.unwrap();
+        prop_assert!(measured <= tol, "measured {measured:e} > {tol:e}");
+        prop_assert!(measured <= r.report.error_bound * (1.0 + 1e-9) + 1e-15);
+        prop_assert!(r.report.error_bound <= tol);
+        prop_assert_eq!(r.curve.degree(), m);
+        for &(t, k) in &r.report.continuity {
+            assert_continuity(&r.curve, t, k);
+        }
+    }
+}

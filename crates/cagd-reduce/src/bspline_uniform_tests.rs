@@ -1,0 +1,181 @@
+//! Tests of the seed 001 uniform B-spline reduction against the spec vector and closed forms.
+
+use super::*;
+use cagd_testkit::{assert_close, flat, vector};
+
+use crate::spline_max_deviation;
+
+fn example() -> (cagd_testkit::serde_json::Value, BSplineCurve) {
+    let v = vector("vectors-reduce.json", "001-example");
+    let knots = flat(&v["params"]["knots"]);
+    let c = BSplineCurve::new(7, knots, flat(&v["input"]["P"]), 2).unwrap();
+    (v, c)
+}
+
+const HERMITE: Method = Method::ConstrainedChebyshev { r: 1, p: 1 };
+
+/// Seed 001's worked example (SPEC-reduce §8): what is reproduced and to what accuracy.
+#[test]
+fn vector_001_example() {
+    let (v, c) = example();
+    let e = &v["expected"];
+    let tol = v["tol"].as_f64().unwrap();
+    // Bézier points of both segments (S^(7) by eq. 5).
+    let segs = c.to_beziers().unwrap();
+    let bez: Vec<f64> = segs
+        .iter()
+        .flat_map(|s| s.curve.points().to_vec())
+        .collect();
+    assert_close("001 bezier", &bez, &flat(&e["bezier_segments"]), 1e-13);
+    let s7 = s_matrix(7).unwrap();
+    let mut via_s = Vec::new();
+    apply(s7, 8, &c.points()[..16], 2, &mut via_s);
+    assert_close(
+        "001 bezier by S^(7)",
+        &via_s,
+        &flat(&e["bezier_segments"][0]),
+        tol,
+    );
+
+    let lossy = reduce_uniform_bspline(&c, 3, HERMITE, Merge::Lossy).unwrap();
+    let red: Vec<f64> = lossy
+        .segments
+        .iter()
+        .flat_map(|s| s.points().to_vec())
+        .collect();
+    assert_close("001 reduced", &red, &flat(&e["reduced_segments"]), tol);
+    assert_close(
+        "001 merged",
+        lossy.curve.points(),
+        &flat(&e["merged_ctrl"]),
+        tol,
+    );
+    // Knots: the paper's 0..8 shifted by n - m = 4 (same domain as the input).
+    let shifted: Vec<f64> = flat(&e["merged_knots"]).iter().map(|k| k + 4.0).collect();
+    assert_eq!(lossy.curve.knots(), &shifted[..]);
+    assert_eq!(lossy.curve.domain(), c.domain());
+    // Local cubic points S^(3)^{-1} q per segment.
+    let mats = matrices(HERMITE, 7, 3).unwrap();
+    for s in 0..2 {
+        let mut loc = Vec::new();
+        apply(
+            &mats.to_local,
+            8,
+            &c.points()[2 * s..2 * (s + 8)],
+            2,
+            &mut loc,
+        );
+        assert_close("001 local", &loc, &flat(&e["local_bspline"][s]), tol);
+        // The paper's printed local points: only to its print noise (SPEC §8: 1.5e-4).
+        let printed = flat(&e["printed_local_bspline"][s]);
+        let d = loc
+            .iter()
+            .zip(&printed)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        assert!(d < 1.6e-4, "printed local points differ by {d}");
+    }
+    // The paper's printed reduced points: to 1.2e-5 (10.736496, 11.236519 are print noise).
+    let printed = flat(&e["printed_reduced"]);
+    let d = red
+        .iter()
+        .zip(&printed)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max);
+    assert!(
+        d < 1.2e-5 && d > 1e-5,
+        "printed reduced points differ by {d}"
+    );
+
+    // Measured errors (SPEC §8): reduction step max 1.30e-2, after the lossy merge 5.4e-2.
+    let exact = reduce_uniform_bspline(&c, 3, HERMITE, Merge::Exact).unwrap();
+    let step = spline_max_deviation(&c, &exact.curve).unwrap();
+    assert!((step - 1.30e-2).abs() < 5e-4, "reduction step error {step}");
+    assert!(step <= exact.error_bound && exact.segment_bound <= exact.error_bound);
+    let merged = spline_max_deviation(&c, &lossy.curve).unwrap();
+    assert!((merged - 5.4e-2).abs() < 5e-4, "lossy merge error {merged}");
+    assert!(merged <= lossy.error_bound);
+}
+
+#[test]
+fn exact_merge_is_c1_and_equals_the_segments() {
+    let (_, c) = example();
+    let r = reduce_uniform_bspline(&c, 3, HERMITE, Merge::Exact).unwrap();
+    // C1 Hermite: multiplicity m - 1 = 2 at the interior knot.
+    assert_eq!(
+        r.curve.knots(),
+        &[7.0, 7.0, 7.0, 7.0, 8.0, 8.0, 9.0, 9.0, 9.0, 9.0]
+    );
+    for (piece, seg) in r.curve.to_beziers().unwrap().iter().zip(&r.segments) {
+        assert_close("exact merge", piece.curve.points(), seg.points(), 1e-12);
+    }
+}
+
+#[test]
+fn elevated_uniform_spline_reduces_back() {
+    // A cubic polynomial written as a uniform degree-5 spline reduces to the same cubic.
+    let cubic = |t: f64| [t * t * t - 2.0 * t, 0.5 * t * t + 1.0];
+    // Its uniform degree-5 points: S^(5)^{-1} times its Bézier points on [5, 6].
+    let b3: Vec<f64> = {
+        // Bézier points of the cubic on [5, 6] = blossom values (t^3 - 2t, t^2/2 + 1).
+        let bl = |a: f64, b: f64, c: f64| {
+            [
+                a * b * c - 2.0 * (a + b + c) / 3.0,
+                0.5 * (a * b + b * c + a * c) / 3.0 + 1.0,
+            ]
+        };
+        [
+            bl(5.0, 5.0, 5.0),
+            bl(5.0, 5.0, 6.0),
+            bl(5.0, 6.0, 6.0),
+            bl(6.0, 6.0, 6.0),
+        ]
+        .concat()
+    };
+    let b5 = BezierCurve::new(b3.clone(), 2).unwrap().elevate(2).unwrap();
+    let sinv = cagd_core::s_matrix_inverse(5).unwrap();
+    let mut p = Vec::new();
+    apply(sinv, 6, b5.points(), 2, &mut p);
+    let knots: Vec<f64> = (0..=11).map(f64::from).collect();
+    let c = BSplineCurve::new(5, knots, p, 2).unwrap();
+    assert!((c.eval(5.5).unwrap()[0] - cubic(5.5)[0]).abs() < 1e-12);
+    for merge in [Merge::Exact, Merge::Lossy] {
+        let r = reduce_uniform_bspline(&c, 3, Method::L2 { r: 1, p: 1 }, merge).unwrap();
+        assert_close("reduce back", r.segments[0].points(), &b3, 1e-11);
+        // Rounding only (the points are of size ~250).
+        assert!(r.error_bound < 1e-9 * 250.0, "{merge:?}: {}", r.error_bound);
+    }
+}
+
+#[test]
+fn rational_and_errors() {
+    let (_, c) = example();
+    let w = vec![1.0, 2.0, 1.0, 0.5, 1.0, 1.5, 1.0, 1.0, 2.0];
+    let knots: Vec<f64> = (0..=16).map(f64::from).collect();
+    let r = BSplineCurve::new_rational(7, knots, c.points().to_vec(), w, 2).unwrap();
+    for merge in [Merge::Exact, Merge::Lossy] {
+        let red = reduce_uniform_bspline(&r, 4, Method::L2 { r: 1, p: 1 }, merge).unwrap();
+        let d = spline_max_deviation(&r, &red.curve).unwrap();
+        assert!(d <= red.error_bound, "{merge:?}: {d} > {}", red.error_bound);
+    }
+    assert!(matches!(
+        reduce_uniform_bspline(&c, 3, Method::Eck, Merge::Exact),
+        Err(Error::BadParameter { .. })
+    ));
+    assert!(reduce_uniform_bspline(&c, 3, Method::Eck, Merge::Lossy).is_ok());
+    assert!(matches!(
+        reduce_uniform_bspline(&c, 7, HERMITE, Merge::Lossy),
+        Err(Error::BadDegreePair { .. })
+    ));
+    let clamped = BSplineCurve::new(
+        3,
+        vec![0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0],
+        vec![0.0, 1.0, 2.0, 3.0],
+        1,
+    )
+    .unwrap();
+    assert!(matches!(
+        reduce_uniform_bspline(&clamped, 2, Method::Eck, Merge::Lossy),
+        Err(Error::BadParameter { .. })
+    ));
+}
