@@ -315,6 +315,37 @@ typedef int32_t CagdPatchConstraint;
 #endif // __cplusplus
 
 /**
+ * How the reduced segments of a uniform B-spline are joined
+ * (`CagdReduceOptions.merge`, an `int32_t`; seed 001 §4).
+ *
+ */
+enum CagdMerge
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : int32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  /**
+   * §4.1: the reduced segments become one clamped spline with interior knots of
+   * multiplicity `target - k`, `k` the end order the method keeps; exact (the spline is
+   * the reduced segments). Needs a method that interpolates the segment ends.
+   */
+  CAGD_MERGE_EXACT = 0,
+  /**
+   * §4.2: local uniform B-spline points of each segment, overlapping points averaged:
+   * keeps uniform simple knots (`C^(target-1)`) at the price of an extra change, which
+   * the certified bound includes.
+   */
+  CAGD_MERGE_LOSSY = 1,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum CagdMerge CagdMerge;
+#else
+typedef int32_t CagdMerge;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
  * Opaque handle to a B-spline curve of degree `p` (`0..=64`) with `n_points >= p + 1`
  * control points of `dim >= 1` coordinates and a full knot vector of
  * `n_points + p + 1` non-decreasing knots (clamped or not; the domain is
@@ -468,6 +499,11 @@ typedef struct CagdReduceOptions {
    * Patches only: a `CagdPatchConstraint` value. Default `CAGD_CONSTRAINT_NONE`.
    */
   int32_t constraint;
+  /**
+   * `cagd_bspline_reduce_uniform` only: a `CagdMerge` value. Default
+   * `CAGD_MERGE_EXACT`.
+   */
+  int32_t merge;
 } CagdReduceOptions;
 
 #ifdef __cplusplus
@@ -879,6 +915,125 @@ CagdStatus cagd_bspline_insert_knot(const struct CagdBSpline *spline,
  */
 CagdStatus cagd_bspline_to_beziers(const struct CagdBSpline *spline,
                                    struct CagdCurveList **list_out);
+
+/**
+ * Reduces a B-spline or NURBS curve of degree `p` to degree `opts->target` within
+ * `opts->tolerance` (certified, Euclidean, model space): every knot span is extracted as
+ * a Bézier piece, reduced by `opts->method` (`CAGD_METHOD_CONSTRAINED_CHEBYSHEV`, seed 000
+ * §14.5, or `CAGD_METHOD_L2`; their `r`, `p` are set per end from the continuity to keep)
+ * keeping derivatives `0..=min(continuity, p - s_j)` at each knot of multiplicity `s_j`,
+ * split at midpoints until each piece meets half the tolerance, merged exactly (seed 001
+ * §4.1), then knots are removed while the tracked local bound stays within the tolerance
+ * (after Piegl & Tiller 1995). The result is clamped on the input's domain; rational
+ * input is reduced in homogeneous coordinates.
+ *
+ * Options used: `method`, `target` (`1 <= target < p`), `tolerance`, `continuity` (at
+ * most `floor((target - 1) / 2)`: per-segment Hermite data need `2k + 1 <= target`;
+ * default 0), `measure`.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `opts` (in): the options. Borrowed for the call.
+ * - `spline_out` (out): on `CAGD_OK`, the reduced spline of degree `target`, owned by the
+ *   caller: release with `cagd_bspline_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report (`cagd_report_bound`,
+ *   `cagd_report_max_error`, `cagd_report_spline`), owned by the caller: release with
+ *   `cagd_report_free`. Neither output is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `spline`, `opts`, `spline_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` below `sizeof(CagdReduceOptions)`,
+ *   an invalid method code or a method other than the two above, `tolerance` not finite
+ *   and `> 0`, the two outputs are the same address, or a pointer is misaligned.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target == 0` or `target >= p`.
+ * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `continuity > floor((target - 1) / 2)`.
+ * - `CAGD_ERR_BAD_KNOTS`: an interior knot of multiplicity `p + 1` (the input may be
+ *   discontinuous there).
+ * - `CAGD_ERR_CONDITION_NOT_MET`: a span cannot meet the tolerance (e.g. a tolerance
+ *   below the rounding level of the curve).
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; the outputs NULL or writable.
+ */
+CagdStatus cagd_bspline_reduce(const struct CagdBSpline *spline,
+                               const struct CagdReduceOptions *opts,
+                               struct CagdBSpline **spline_out,
+                               struct CagdReport **report_out);
+
+/**
+ * Reduces a uniform B-spline or NURBS curve (equally spaced knots) of degree `n` to
+ * degree `opts->target` segment by segment, seed 001's pipeline (model (1)): the B-spline
+ * points of each segment go to its Bézier points by `S^(n)` (eq. 5), `opts->method`
+ * reduces them, and `opts->merge` joins the results (§4). Not driven by a tolerance: the
+ * report gives the certified bound of what was done.
+ *
+ * Options used: `method` (with `r`, `p`, `l1`, `l2`), `target`, `merge`, `measure`.
+ *
+ * Parameters:
+ * - `spline` (in): the spline, uniform knots (all gaps equal within `1e-12` relative).
+ * - `opts` (in): the options. Borrowed for the call.
+ * - `spline_out` (out): on `CAGD_OK`, the merged spline of degree `target` on the
+ *   input's domain (`CAGD_MERGE_EXACT`: clamped, interior knots of multiplicity
+ *   `target - k`; `CAGD_MERGE_LOSSY`: uniform knots of the input's spacing), owned by the
+ *   caller: release with `cagd_bspline_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report (`cagd_report_bound`: the certified
+ *   bound of the merged spline; `cagd_report_spline`: the bound of the reduction step
+ *   alone), owned by the caller: release with `cagd_report_free`. Neither output is
+ *   written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `spline`, `opts`, `spline_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` below `sizeof(CagdReduceOptions)`,
+ *   an invalid `method` or `merge` code, `CAGD_MERGE_EXACT` with a method that does not
+ *   interpolate the segment ends, the two outputs are the same address, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_BAD_KNOTS`: the knots are not uniform.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS`: as `cagd_curve_reduce`
+ *   for the pair `(n, target)`.
+ * - `CAGD_ERR_CONDITION_NOT_MET`: the exact merge finds joints that do not meet.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a NURBS is not positive.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; the outputs NULL or writable.
+ */
+CagdStatus cagd_bspline_reduce_uniform(const struct CagdBSpline *spline,
+                                       const struct CagdReduceOptions *opts,
+                                       struct CagdBSpline **spline_out,
+                                       struct CagdReport **report_out);
+
+/**
+ * Reads what a B-spline reduction did: the largest certified bound of a reduced Bézier
+ * segment (the reduction step alone, before merging and knot removal), the number of
+ * reduced segments, and the non-empty knot spans of the input and of the result.
+ *
+ * Parameters:
+ * - `report` (in): the report.
+ * - `segment_bound_out` (out): on `CAGD_OK`, the bound of the reduction step.
+ * - `pieces_out` (out): on `CAGD_OK`, the number of reduced segments.
+ * - `spans_in_out` (out): on `CAGD_OK`, the non-empty spans of the input.
+ * - `spans_out_out` (out): on `CAGD_OK`, the non-empty spans of the result.
+ *
+ * Returns:
+ * - `CAGD_OK`: all outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the report is not of a B-spline reduction.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `report` must be NULL or a live report handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_report_spline(const struct CagdReport *report,
+                              double *segment_bound_out,
+                              size_t *pieces_out,
+                              size_t *spans_in_out,
+                              size_t *spans_out_out);
 
 /**
  * Creates a polynomial Bézier curve of degree `n_points - 1`.
@@ -1749,7 +1904,8 @@ CagdStatus cagd_curve_reduce_batch(const double *points,
  * `method = CAGD_METHOD_L2`, `target = 3`, `r = p = 0` (end points interpolated),
  * `l1 = l2 = 0`, `measure = false`, `space = CAGD_SPACE_EUCLIDEAN`, `tolerance = 0`
  * (must be set before a reduction to a tolerance), `continuity = 0`, `max_depth = 30`,
- * `target_v = 3`, `patch_method = CAGD_PATCH_PERTURB`, `constraint = CAGD_CONSTRAINT_NONE`.
+ * `target_v = 3`, `patch_method = CAGD_PATCH_PERTURB`, `constraint = CAGD_CONSTRAINT_NONE`,
+ * `merge = CAGD_MERGE_EXACT`.
  * Call it before setting fields, so that `struct_size` is right and fields added in later
  * versions get their defaults.
  *
@@ -1958,7 +2114,8 @@ CagdStatus cagd_report_max_error(const struct CagdReport *report, double *error_
  * - `CAGD_OK`: both outputs are written.
  * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
  * - `CAGD_ERR_NOT_AVAILABLE`: no bound could be formed for this reduction, or the report
- *   is of a reduction to a tolerance or of a patch (whose numbers are always Euclidean).
+ *   is of a reduction to a tolerance, of a B-spline or of a patch (whose numbers are
+ *   always Euclidean).
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *

@@ -46,6 +46,8 @@ mod bspline_arrays;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod bspline_ops;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod bspline_reduce;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod curve;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod curve_list;
@@ -93,6 +95,7 @@ pub use bspline_arrays::{cagd_bspline_knots, cagd_bspline_points, cagd_bspline_w
 pub use bspline_ops::{
     cagd_bspline_derivatives, cagd_bspline_eval, cagd_bspline_insert_knot, cagd_bspline_to_beziers,
 };
+pub use bspline_reduce::{cagd_bspline_reduce, cagd_bspline_reduce_uniform, cagd_report_spline};
 pub use curve::{
     CagdCurve, cagd_curve_degree, cagd_curve_dim, cagd_curve_free, cagd_curve_is_rational,
     cagd_curve_new, cagd_curve_new_rational, cagd_curve_points, cagd_curve_weights,
@@ -117,8 +120,8 @@ pub use patch_reduce::{
 };
 pub use reduce::{cagd_curve_reduce, cagd_curve_reduce_batch};
 pub use reduce_options::{
-    CagdErrorSpace, CagdPatchConstraint, CagdPatchMethod, CagdReduceMethod, CagdReduceOptions,
-    cagd_reduce_options_init,
+    CagdErrorSpace, CagdMerge, CagdPatchConstraint, CagdPatchMethod, CagdReduceMethod,
+    CagdReduceOptions, cagd_reduce_options_init,
 };
 pub use reduce_tolerance::{
     cagd_curve_reduce_to_tolerance, cagd_curve_reduce_to_tolerance_stepwise,

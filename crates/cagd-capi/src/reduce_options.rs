@@ -109,6 +109,27 @@ pub enum CagdPatchConstraint {
     CONSTRAINT_BOUNDARY = 2,
 }
 
+/// How the reduced segments of a uniform B-spline are joined
+/// (`CagdReduceOptions.merge`, an `int32_t`; seed 001 §4).
+///
+/// cbindgen:rename-all=prefix:CAGD_
+#[repr(i32)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[allow(
+    non_camel_case_types,
+    reason = "C names: the variants become CAGD_MERGE_*"
+)]
+pub enum CagdMerge {
+    /// §4.1: the reduced segments become one clamped spline with interior knots of
+    /// multiplicity `target - k`, `k` the end order the method keeps; exact (the spline is
+    /// the reduced segments). Needs a method that interpolates the segment ends.
+    MERGE_EXACT = 0,
+    /// §4.2: local uniform B-spline points of each segment, overlapping points averaged:
+    /// keeps uniform simple knots (`C^(target-1)`) at the price of an extra change, which
+    /// the certified bound includes.
+    MERGE_LOSSY = 1,
+}
+
 /// How to reduce: a plain struct the caller owns. Fill it with
 /// `cagd_reduce_options_init`, then change the fields you need.
 ///
@@ -170,6 +191,9 @@ pub struct CagdReduceOptions {
     pub patch_method: i32,
     /// Patches only: a `CagdPatchConstraint` value. Default `CAGD_CONSTRAINT_NONE`.
     pub constraint: i32,
+    /// `cagd_bspline_reduce_uniform` only: a `CagdMerge` value. Default
+    /// `CAGD_MERGE_EXACT`.
+    pub merge: i32,
 }
 
 /// The size of the first published version of `CagdReduceOptions` (this one): the
@@ -194,6 +218,7 @@ impl Default for CagdReduceOptions {
             target_v: 3,
             patch_method: CagdPatchMethod::PATCH_PERTURB as i32,
             constraint: CagdPatchConstraint::CONSTRAINT_NONE as i32,
+            merge: CagdMerge::MERGE_EXACT as i32,
         }
     }
 }
@@ -292,7 +317,8 @@ impl CagdReduceOptions {
 /// `method = CAGD_METHOD_L2`, `target = 3`, `r = p = 0` (end points interpolated),
 /// `l1 = l2 = 0`, `measure = false`, `space = CAGD_SPACE_EUCLIDEAN`, `tolerance = 0`
 /// (must be set before a reduction to a tolerance), `continuity = 0`, `max_depth = 30`,
-/// `target_v = 3`, `patch_method = CAGD_PATCH_PERTURB`, `constraint = CAGD_CONSTRAINT_NONE`.
+/// `target_v = 3`, `patch_method = CAGD_PATCH_PERTURB`, `constraint = CAGD_CONSTRAINT_NONE`,
+/// `merge = CAGD_MERGE_EXACT`.
 /// Call it before setting fields, so that `struct_size` is right and fields added in later
 /// versions get their defaults.
 ///

@@ -31,6 +31,8 @@ pub(crate) enum ReportKind {
         /// The reduced pieces, in parameter order.
         pieces: Vec<ReducedPiece>,
     },
+    /// A B-spline reduced to a B-spline.
+    Spline(SplineReport),
     /// A patch reduced (to a patch, or to a tolerance: pieces).
     Patch {
         /// The report (for pieces: the largest bound and measured error of a piece).
@@ -42,13 +44,34 @@ pub(crate) enum ReportKind {
     },
 }
 
+/// What a B-spline reduction did.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct SplineReport {
+    /// Source degree.
+    pub(crate) degree_from: usize,
+    /// Target degree.
+    pub(crate) degree_to: usize,
+    /// Certified bound of the whole (Euclidean, model space).
+    pub(crate) error_bound: f64,
+    /// Sampled error, on request.
+    pub(crate) max_error: Option<f64>,
+    /// Largest certified bound of a reduced Bézier segment (before merging / knot removal).
+    pub(crate) segment_bound: f64,
+    /// Number of reduced Bézier segments.
+    pub(crate) pieces: usize,
+    /// Non-empty knot spans of the input.
+    pub(crate) spans_in: usize,
+    /// Non-empty knot spans of the result.
+    pub(crate) spans_out: usize,
+}
+
 impl CagdReport {
     /// The report of a single reduction (for Rust callers of this crate); `None` for a
     /// piecewise one.
     pub fn as_report(&self) -> Option<&Report> {
         match &self.kind {
             ReportKind::Single(r) => Some(r),
-            ReportKind::Piecewise { .. } | ReportKind::Patch { .. } => None,
+            ReportKind::Piecewise { .. } | ReportKind::Patch { .. } | ReportKind::Spline(_) => None,
         }
     }
 
@@ -56,7 +79,7 @@ impl CagdReport {
     /// single one.
     pub fn as_piecewise(&self) -> Option<&PiecewiseReport> {
         match &self.kind {
-            ReportKind::Single(_) | ReportKind::Patch { .. } => None,
+            ReportKind::Single(_) | ReportKind::Patch { .. } | ReportKind::Spline(_) => None,
             ReportKind::Piecewise { report, .. } => Some(report),
         }
     }
@@ -74,6 +97,7 @@ impl CagdReport {
                 Some(r.error_bound),
                 r.max_error,
             ),
+            ReportKind::Spline(r) => (r.degree_from, r.degree_to, Some(r.error_bound), r.max_error),
         }
     }
 }
@@ -222,7 +246,8 @@ pub unsafe extern "C" fn cagd_report_max_error(
 /// - `CAGD_OK`: both outputs are written.
 /// - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
 /// - `CAGD_ERR_NOT_AVAILABLE`: no bound could be formed for this reduction, or the report
-///   is of a reduction to a tolerance or of a patch (whose numbers are always Euclidean).
+///   is of a reduction to a tolerance, of a B-spline or of a patch (whose numbers are
+///   always Euclidean).
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
@@ -247,7 +272,8 @@ pub unsafe extern "C" fn cagd_report_space(
         let ReportKind::Single(single) = &r.kind else {
             return Err(Failure::new(
                 CagdStatus::ERR_NOT_AVAILABLE,
-                "reductions to a tolerance and of patches report Euclidean numbers only",
+                "reductions to a tolerance, of splines and of patches report Euclidean numbers \
+                 only",
             ));
         };
         let hb = available(

@@ -14,10 +14,12 @@ fn piecewise(
 ) -> CResult<(&cagd_reduce::PiecewiseReport, &[cagd_reduce::ReducedPiece])> {
     match &r.kind {
         ReportKind::Piecewise { report, pieces } => Ok((report, pieces)),
-        ReportKind::Single(_) | ReportKind::Patch { .. } => Err(Failure::new(
-            CagdStatus::ERR_NOT_AVAILABLE,
-            "not the report of a curve reduction to a tolerance",
-        )),
+        ReportKind::Single(_) | ReportKind::Patch { .. } | ReportKind::Spline(_) => {
+            Err(Failure::new(
+                CagdStatus::ERR_NOT_AVAILABLE,
+                "not the report of a curve reduction to a tolerance",
+            ))
+        }
     }
 }
 

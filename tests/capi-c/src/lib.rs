@@ -87,6 +87,10 @@ c_tests![
     patch_reduce_roundtrip,
     patch_reduce_to_tolerance,
     patch_reduce_bad_input,
+    // c/bspline_reduce.c
+    bspline_reduce_uniform_001,
+    bspline_reduce_tolerance,
+    bspline_reduce_bad_input,
     // c/patch_ops.c
     tensorpatch_ops,
     tripatch_ops,
