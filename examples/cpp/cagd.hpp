@@ -234,6 +234,13 @@ class BSpline {
         check(cagd_bspline_insert_knot(s_.get(), t, times, &r), "cagd_bspline_insert_knot");
         return BSpline(r);
     }
+    // Reduction to opts.target within opts.tolerance: a B-spline and a report.
+    std::pair<BSpline, Report> reduce(const CagdReduceOptions &opts) const {
+        CagdBSpline *r = nullptr;
+        CagdReport *rep = nullptr;
+        check(cagd_bspline_reduce(s_.get(), &opts, &r, &rep), "cagd_bspline_reduce");
+        return {BSpline(r), Report(rep)};
+    }
     CurveList to_beziers() const {
         CagdCurveList *l = nullptr;
         check(cagd_bspline_to_beziers(s_.get(), &l), "cagd_bspline_to_beziers");

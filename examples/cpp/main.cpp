@@ -83,6 +83,21 @@ int main() {
                     "at its middle\n",
                     quarters.size(), qa, qb, mid[0], mid[1]);
 
+        // The NURBS circle as a polyline within 1e-3 (degree 1, certified).
+        CagdReduceOptions lin = cagd::default_options();
+        lin.target = 1;
+        lin.tolerance = 1e-3;
+        auto [polyline, poly_report] = circle.reduce(lin);
+        std::printf("circle as a polyline within 1e-3: %zu vertices, bound %.3g\n",
+                    polyline.points().size() / 2, poly_report.bound());
+        for (int i = 0; i <= 100; ++i) {
+            const std::vector<double> a = polyline.eval(i / 100.0);
+            if (std::fabs(std::hypot(a[0], a[1]) - 1.0) > poly_report.bound()) {
+                std::fprintf(stderr, "polyline farther from the circle than its bound\n");
+                return 1;
+            }
+        }
+
         // The degree-7 curve to cubics within 1e-3 with C1 joins: a B-spline.
         CagdReduceOptions tol = cagd::default_options();
         tol.target = 3;
