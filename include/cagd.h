@@ -36,6 +36,14 @@
 #include <stdint.h>
 
 /**
+ * The default relative tolerance of `cagd_curve_exact_degree`: a difference
+ * `Delta^j P_0` counts as zero when `||Delta^j P_0||_inf <= tol * 2^j * max ||P_i||_inf`
+ * (an `f64`-elevated curve stays below `(n + 4) eps <= 1.6e-14`; 1e-12 leaves a margin
+ * of 60). Becomes `#define CAGD_EXACT_DEGREE_REL_TOL`.
+ */
+#define CAGD_EXACT_DEGREE_REL_TOL 1e-12
+
+/**
  * Major version of cagd (the `x` of `x.y.z`); becomes `#define CAGD_VERSION_MAJOR`.
  */
 #define CAGD_VERSION_MAJOR 0
@@ -1898,6 +1906,168 @@ CagdStatus cagd_curve_reduce_batch(const double *points,
                                    double *out,
                                    size_t out_cap,
                                    size_t *out_needed);
+
+/**
+ * Finds the true degree of a curve: the smallest `k` such that the curve is, up to
+ * `rel_tol`, a degree-`k` curve elevated to its degree `n` (every `Delta^j P_0`, `j > k`,
+ * has `||Delta^j P_0||_inf <= rel_tol * 2^j * max_i ||P_i||_inf`; rational curves are
+ * tested in homogeneous coordinates).
+ *
+ * Parameters:
+ * - `curve` (in): the curve.
+ * - `rel_tol` (in): the relative tolerance, finite and `> 0`; `CAGD_EXACT_DEGREE_REL_TOL`
+ *   (1e-12) is right for curves elevated in `double`.
+ * - `degree_out` (out): on `CAGD_OK`, the true degree `k <= n`.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*degree_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `curve` or `degree_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `rel_tol` is not finite and `> 0`, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live curve handle; `degree_out` NULL or writable.
+ */
+CagdStatus cagd_curve_exact_degree(const struct CagdCurve *curve,
+                                   double rel_tol,
+                                   size_t *degree_out);
+
+/**
+ * Reduces a curve that is (up to `CAGD_EXACT_DEGREE_REL_TOL`) an elevated lower-degree
+ * curve to that lower degree; any other curve is copied unchanged (bound 0). The reducing
+ * operator is whichever reproducing one amplifies rounding least (generalized inverse or
+ * stepwise Forrest, both exact on elevated curves); `cagd_report_method` tells which.
+ *
+ * Parameters:
+ * - `curve` (in): the curve, degree `n`.
+ * - `curve_out` (out): on `CAGD_OK`, the curve at its true degree, owned by the caller:
+ *   release with `cagd_curve_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report with the certified bound, owned by the
+ *   caller: release with `cagd_report_free`. Neither output is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `curve`, `curve_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: the two outputs are the same address, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational curve is not positive.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live curve handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_curve_reduce_exact(const struct CagdCurve *curve,
+                                   struct CagdCurve **curve_out,
+                                   struct CagdReport **report_out);
+
+/**
+ * Reduces a curve of degree `n >= 4` to degree `n - 1` by control-point perturbation
+ * keeping both end points and end tangent directions (G1), with the tangent scales
+ * `l1, l2` chosen to minimise the perturbation's own objective `sum ||eps_i||^2`
+ * (seed 000 §14.2.3, SPEC-reduce §2.3). The scales found are read with
+ * `cagd_report_method_params`.
+ *
+ * Parameters:
+ * - `curve` (in): the curve, degree `n >= 4`.
+ * - `measure` (in): also measure the error by dense sampling.
+ * - `curve_out` (out): on `CAGD_OK`, the reduced curve (degree `n - 1`), owned by the
+ *   caller: release with `cagd_curve_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report (method `CAGD_METHOD_PERTURB_G1`),
+ *   owned by the caller: release with `cagd_report_free`. Neither output is written on
+ *   failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `curve`, `curve_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: the two outputs are the same address, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `n < 4`.
+ * - `CAGD_ERR_CONDITION_NOT_MET`: an optimal scale gives `1 + l <= 0` (the tangent would
+ *   flip; eq. 14.2.12).
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational curve is not positive.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live curve handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_curve_reduce_g1_optimal(const struct CagdCurve *curve,
+                                        bool measure,
+                                        struct CagdCurve **curve_out,
+                                        struct CagdReport **report_out);
+
+/**
+ * Copies the reduction matrix of `opts->method` (with `r`, `p`, `l1`, `l2`) from degree
+ * `degree` to `opts->target`: computed once in exact rational arithmetic, rounded once,
+ * cached process-wide. Row-major `(target + 1) x (degree + 1)`: the reduced points are
+ * `Q_i = sum_j out[i * (degree + 1) + j] P_j`, per coordinate (homogeneous coordinates for
+ * a rational curve). For applying it yourself, e.g. on a GPU.
+ *
+ * Parameters:
+ * - `opts` (in): the options (`method`, `r`, `p`, `l1`, `l2`, `target`). Borrowed.
+ * - `degree` (in): the source degree `n`, `0..=64`.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
+ *   `(target + 1) * (degree + 1)` doubles hold the matrix. May be NULL only when
+ *   `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
+ *   `(target + 1) * (degree + 1)`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the matrix is in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `opts` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` below `sizeof(CagdReduceOptions)`,
+ *   an invalid method code or `l1` / `l2`, or a pointer is misaligned.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
+ * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target`, or `r`, `p` below -1.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the size; only `*out_needed` is
+ *   written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `opts` must be NULL or a readable `CagdReduceOptions` of `opts->struct_size` bytes;
+ * `out` NULL or `out_cap` writable doubles; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_reduce_operator(const struct CagdReduceOptions *opts,
+                                size_t degree,
+                                double *out,
+                                size_t out_cap,
+                                size_t *out_needed);
+
+/**
+ * Reads the parameters of the method a curve reduction used: for
+ * `cagd_curve_reduce_g1_optimal` the optimal tangent scales found, for
+ * `cagd_curve_reduce_exact` the operator chosen, otherwise the method asked for.
+ *
+ * Parameters:
+ * - `report` (in): the report.
+ * - `method_out` (out): on `CAGD_OK`, the `CagdReduceMethod` code.
+ * - `r_out` (out): on `CAGD_OK`, the derivative order kept at t = 0 (`-1` for methods
+ *   without `r`).
+ * - `p_out` (out): on `CAGD_OK`, the order kept at t = 1 (`-1` likewise).
+ * - `l1_out` (out): on `CAGD_OK`, the tangent scale at t = 0 of `CAGD_METHOD_PERTURB_G1`
+ *   (0 for other methods).
+ * - `l2_out` (out): on `CAGD_OK`, the scale at t = 1 (0 for other methods).
+ *
+ * Returns:
+ * - `CAGD_OK`: all outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the report is not of a curve reduction (one curve or to a
+ *   tolerance).
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `report` must be NULL or a live report handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_report_method_params(const struct CagdReport *report,
+                                     int32_t *method_out,
+                                     int32_t *r_out,
+                                     int32_t *p_out,
+                                     double *l1_out,
+                                     double *l2_out);
 
 /**
  * Fills `opts` with the defaults: `struct_size = sizeof(CagdReduceOptions)`,

@@ -65,6 +65,8 @@ mod patch_reduce;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod reduce;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod reduce_extra;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod reduce_options;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod reduce_tolerance;
@@ -119,6 +121,10 @@ pub use patch_reduce::{
     cagd_tripatch_reduce, cagd_tripatch_reduce_to_tolerance,
 };
 pub use reduce::{cagd_curve_reduce, cagd_curve_reduce_batch};
+pub use reduce_extra::{
+    CAGD_EXACT_DEGREE_REL_TOL, cagd_curve_exact_degree, cagd_curve_reduce_exact,
+    cagd_curve_reduce_g1_optimal, cagd_reduce_operator, cagd_report_method_params,
+};
 pub use reduce_options::{
     CagdErrorSpace, CagdMerge, CagdPatchConstraint, CagdPatchMethod, CagdReduceMethod,
     CagdReduceOptions, cagd_reduce_options_init,

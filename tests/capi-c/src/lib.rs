@@ -91,6 +91,11 @@ c_tests![
     bspline_reduce_uniform_001,
     bspline_reduce_tolerance,
     bspline_reduce_bad_input,
+    // c/reduce_extra.c
+    curve_exact_degree,
+    curve_reduce_g1_optimal,
+    reduce_operator_matrix,
+    reduce_extra_bad_input,
     // c/patch_ops.c
     tensorpatch_ops,
     tripatch_ops,
