@@ -363,6 +363,14 @@ typedef int32_t CagdMerge;
 typedef struct CagdBSpline CagdBSpline;
 
 /**
+ * Opaque handle to a tensor-product B-spline surface of degrees `(p, q)` (each `0..=64`)
+ * with `n_u * n_v` control points stored i-major (`P_ij` is point `i * n_v + j`, `i` along
+ * u), knot vectors of `n_u + p + 1` and `n_v + q + 1` knots, polynomial or NURBS.
+ * Immutable; release with `cagd_bsplinesurface_free`.
+ */
+typedef struct CagdBSplineSurface CagdBSplineSurface;
+
+/**
  * Opaque handle to a Bézier curve of degree `n` (`n + 1` control points of `dim`
  * coordinates, `0 <= n <= 64`, `dim >= 1`), polynomial or rational (Euclidean points plus
  * positive weights). Immutable once created; release with `cagd_curve_free`.
@@ -1042,6 +1050,203 @@ CagdStatus cagd_report_spline(const struct CagdReport *report,
                               size_t *pieces_out,
                               size_t *spans_in_out,
                               size_t *spans_out_out);
+
+/**
+ * Creates a B-spline or NURBS surface (`weights` NULL for a polynomial one)
+ * `S(u, v) = sum_ij N_i,p(u) N_j,q(v) w_ij P_ij / sum_ij N_i,p(u) N_j,q(v) w_ij`.
+ *
+ * Parameters:
+ * - `deg_u` (in), `deg_v` (in): the degrees `p`, `q`, each `0..=64`.
+ * - `knots_u` (in): `n_knots_u` doubles, non-decreasing, finite, multiplicities at most
+ *   `p + 1`; `n_knots_u` must equal `n_u + p + 1`. Borrowed and copied.
+ * - `n_knots_u` (in): the length of `knots_u`.
+ * - `knots_v` (in): `n_knots_v = n_v + q + 1` doubles, likewise. Borrowed and copied.
+ * - `n_knots_v` (in): the length of `knots_v`.
+ * - `points` (in): `n_u * n_v * dim` doubles, i-major: coordinate k of `P_ij` at
+ *   `points[(i * n_v + j) * dim + k]`, Euclidean. Borrowed and copied.
+ * - `weights` (in): NULL (polynomial) or `n_u * n_v` doubles, i-major, each finite and
+ *   `> 0`. Borrowed and copied.
+ * - `n_u` (in), `n_v` (in): control points in u and v, `>= p + 1`, `>= q + 1`.
+ * - `dim` (in): coordinates per point, `>= 1`.
+ * - `surface_out` (out): on `CAGD_OK`, a new handle owned by the caller (release with
+ *   `cagd_bsplinesurface_free`). Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*surface_out` holds the new surface.
+ * - `CAGD_ERR_NULL_POINTER`: `knots_u`, `knots_v`, `points` or `surface_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a length formula overflows, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_u < p + 1` or `n_v < q + 1` (or zero).
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `p > 64` or `q > 64`.
+ * - `CAGD_ERR_NON_FINITE`: a coordinate or a knot is NaN or infinite.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0`, NaN or infinite.
+ * - `CAGD_ERR_BAD_KNOTS`: a knot count is wrong, knots decrease, or a domain is empty.
+ * - `CAGD_ERR_MULTIPLICITY`: a knot value appears more than degree + 1 times.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * Each array pointer must be NULL or point to the documented number of readable doubles;
+ * `surface_out` NULL or writable.
+ */
+CagdStatus cagd_bsplinesurface_new(size_t deg_u,
+                                   size_t deg_v,
+                                   const double *knots_u,
+                                   size_t n_knots_u,
+                                   const double *knots_v,
+                                   size_t n_knots_v,
+                                   const double *points,
+                                   const double *weights,
+                                   size_t n_u,
+                                   size_t n_v,
+                                   size_t dim,
+                                   struct CagdBSplineSurface **surface_out);
+
+/**
+ * Releases a surface. NULL is accepted and ignored; a non-NULL handle must be released
+ * exactly once and not used afterwards.
+ *
+ * Parameters:
+ * - `surface` (in, consumed): a handle made by cagd, or NULL.
+ *
+ * Does not change `cagd_last_error_message()`.
+ *
+ * # Safety
+ * `surface` must be NULL or a live handle created by cagd that is not used afterwards.
+ */
+void cagd_bsplinesurface_free(struct CagdBSplineSurface *surface);
+
+/**
+ * Reads the shape of a surface: degrees, control-point counts, dimension, rationality.
+ * The knot counts are `n_u + deg_u + 1` and `n_v + deg_v + 1`.
+ *
+ * Parameters:
+ * - `surface` (in): the surface.
+ * - `shape_out` (out): on `CAGD_OK`, 5 `size_t`: `deg_u, deg_v, n_u, n_v, dim`.
+ * - `rational_out` (out): on `CAGD_OK`, `true` for a NURBS surface.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `surface` must be NULL or a live surface handle; `shape_out` NULL or 5 writable
+ * `size_t`; `rational_out` NULL or writable.
+ */
+CagdStatus cagd_bsplinesurface_shape(const struct CagdBSplineSurface *surface,
+                                     size_t *shape_out,
+                                     bool *rational_out);
+
+/**
+ * Copies one array of a surface (`part`: 0 knots in u, 1 knots in v, 2 points, 3 weights).
+ *
+ * Parameters:
+ * - `surface` (in): the surface.
+ * - `part` (in): which array: 0 = knots in u (`n_u + deg_u + 1` doubles), 1 = knots in v
+ *   (`n_v + deg_v + 1`), 2 = control points (`n_u * n_v * dim`, i-major, Euclidean), 3 =
+ *   weights (`n_u * n_v`, i-major; all 1.0 for a polynomial surface).
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `*out_needed`
+ *   doubles hold the array. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, the length.
+ *
+ * Returns:
+ * - `CAGD_OK`: the array is in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `surface` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `part` is not 0..=3, or a pointer is misaligned.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the length; only `*out_needed` is
+ *   written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `surface` must be NULL or a live surface handle; `out` NULL or `out_cap` writable
+ * doubles; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_bsplinesurface_array(const struct CagdBSplineSurface *surface,
+                                     int32_t part,
+                                     double *out,
+                                     size_t out_cap,
+                                     size_t *out_needed);
+
+/**
+ * Evaluates a surface at `(u, v)` (de Boor in each direction; homogeneous for NURBS).
+ * Inside the domain `[knots_u[p], knots_u[n_u]] x [knots_v[q], knots_v[n_v]]` it is the
+ * surface; other finite values extrapolate.
+ *
+ * Parameters:
+ * - `surface` (in): the surface.
+ * - `u` (in), `v` (in): the parameters, finite.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `dim` doubles hold
+ *   the point. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, `dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the point is in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `surface` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `u` or `v` is NaN or infinite, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `surface` must be NULL or a live surface handle; `out` NULL or `out_cap` writable
+ * doubles; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_bsplinesurface_eval(const struct CagdBSplineSurface *surface,
+                                    double u,
+                                    double v,
+                                    double *out,
+                                    size_t out_cap,
+                                    size_t *out_needed);
+
+/**
+ * Reduces a B-spline / NURBS surface of degrees `(p, q)` to
+ * `(opts->target, opts->target_v)` patch by patch: each Bézier patch is reduced in u by
+ * the curve operator of `opts->method` (`CAGD_METHOD_CONSTRAINED_CHEBYSHEV`, seed 000
+ * §14.5, or `CAGD_METHOD_L2`) on every column, then in v on every row, with end orders
+ * `min(continuity, p - s)` at each knot line (0 at the boundary), so patches sharing a
+ * knot line keep the same derivatives across it; the merged surface stores interior knots
+ * of multiplicity `target` / `target_v` (structurally C0; surface knot removal is not
+ * implemented). Certified bound of `max ||S - S'||` (Euclidean, model space).
+ *
+ * Options used: `method`, `target`, `target_v` (`1 <= target <= p`,
+ * `1 <= target_v <= q`, not both equal: an equal one leaves that direction alone),
+ * `continuity` (at most `floor((m - 1) / 2)` for a reduced direction; default 0),
+ * `measure` (17 x 17 samples per input patch).
+ *
+ * Parameters:
+ * - `surface` (in): the surface.
+ * - `opts` (in): the options. Borrowed for the call.
+ * - `surface_out` (out): on `CAGD_OK`, the reduced surface, owned by the caller: release
+ *   with `cagd_bsplinesurface_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report (`cagd_report_bound`,
+ *   `cagd_report_max_error`, `cagd_report_patch` with patch method -1 and the number of
+ *   Bézier patches), owned by the caller: release with `cagd_report_free`. Neither output
+ *   is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `surface`, `opts`, `surface_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` below `sizeof(CagdReduceOptions)`,
+ *   an invalid method code or a method other than the two above, the two outputs are the
+ *   same address, or a pointer is misaligned.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: a target 0 or above its degree, or both equal.
+ * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `continuity` too large for a reduced direction.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced NURBS weight is not positive.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `surface` must be NULL or a live surface handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; the outputs NULL or writable.
+ */
+CagdStatus cagd_bsplinesurface_reduce(const struct CagdBSplineSurface *surface,
+                                      const struct CagdReduceOptions *opts,
+                                      struct CagdBSplineSurface **surface_out,
+                                      struct CagdReport **report_out);
 
 /**
  * Creates a polynomial Bézier curve of degree `n_points - 1`.
@@ -1787,13 +1992,14 @@ CagdStatus cagd_tripatch_reduce_to_tolerance(const struct CagdTriPatch *patch,
                                              struct CagdReport **report_out);
 
 /**
- * Reads what a patch reduction did: the `CagdPatchMethod` code, the source and target
- * degrees in u and v (for a triangle both are its degree), and the number of pieces (1
- * for `cagd_tensorpatch_reduce` / `cagd_tripatch_reduce`).
+ * Reads what a patch reduction did: the `CagdPatchMethod` code (-1 for
+ * `cagd_bsplinesurface_reduce`), the source and target degrees in u and v (for a triangle
+ * both are its degree), and the number of pieces (1 for `cagd_tensorpatch_reduce` /
+ * `cagd_tripatch_reduce`; the Bézier patches for `cagd_bsplinesurface_reduce`).
  *
  * Parameters:
  * - `report` (in): the report.
- * - `patch_method_out` (out): on `CAGD_OK`, the `CagdPatchMethod` code.
+ * - `patch_method_out` (out): on `CAGD_OK`, the `CagdPatchMethod` code, or -1.
  * - `degrees_out` (out): on `CAGD_OK`, 4 `size_t`: `from_u, from_v, to_u, to_v`.
  * - `n_pieces_out` (out): on `CAGD_OK`, the number of pieces.
  *

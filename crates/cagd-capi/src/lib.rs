@@ -48,6 +48,8 @@ mod bspline_ops;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod bspline_reduce;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod bspline_surface;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod curve;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod curve_list;
@@ -98,6 +100,11 @@ pub use bspline_ops::{
     cagd_bspline_derivatives, cagd_bspline_eval, cagd_bspline_insert_knot, cagd_bspline_to_beziers,
 };
 pub use bspline_reduce::{cagd_bspline_reduce, cagd_bspline_reduce_uniform, cagd_report_spline};
+pub use bspline_surface::{
+    CagdBSplineSurface, cagd_bsplinesurface_array, cagd_bsplinesurface_eval,
+    cagd_bsplinesurface_free, cagd_bsplinesurface_new, cagd_bsplinesurface_reduce,
+    cagd_bsplinesurface_shape,
+};
 pub use curve::{
     CagdCurve, cagd_curve_degree, cagd_curve_dim, cagd_curve_free, cagd_curve_is_rational,
     cagd_curve_new, cagd_curve_new_rational, cagd_curve_points, cagd_curve_weights,

@@ -367,13 +367,14 @@ pub unsafe extern "C" fn cagd_tripatch_reduce_to_tolerance(
     })
 }
 
-/// Reads what a patch reduction did: the `CagdPatchMethod` code, the source and target
-/// degrees in u and v (for a triangle both are its degree), and the number of pieces (1
-/// for `cagd_tensorpatch_reduce` / `cagd_tripatch_reduce`).
+/// Reads what a patch reduction did: the `CagdPatchMethod` code (-1 for
+/// `cagd_bsplinesurface_reduce`), the source and target degrees in u and v (for a triangle
+/// both are its degree), and the number of pieces (1 for `cagd_tensorpatch_reduce` /
+/// `cagd_tripatch_reduce`; the Bézier patches for `cagd_bsplinesurface_reduce`).
 ///
 /// Parameters:
 /// - `report` (in): the report.
-/// - `patch_method_out` (out): on `CAGD_OK`, the `CagdPatchMethod` code.
+/// - `patch_method_out` (out): on `CAGD_OK`, the `CagdPatchMethod` code, or -1.
 /// - `degrees_out` (out): on `CAGD_OK`, 4 `size_t`: `from_u, from_v, to_u, to_v`.
 /// - `n_pieces_out` (out): on `CAGD_OK`, the number of pieces.
 ///

@@ -96,6 +96,10 @@ c_tests![
     curve_reduce_g1_optimal,
     reduce_operator_matrix,
     reduce_extra_bad_input,
+    // c/bspline_surface.c
+    bsplinesurface_roundtrip,
+    bsplinesurface_reduce,
+    bsplinesurface_bad_input,
     // c/patch_ops.c
     tensorpatch_ops,
     tripatch_ops,
