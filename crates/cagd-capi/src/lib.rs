@@ -31,6 +31,22 @@
 //! assert_eq!((p, needed), ([1.0, 1.0], 2));
 //! ```
 //!
+//! ## What is exposed
+//!
+//! - Handles: `CagdCurve` (Bézier, polynomial or rational), `CagdBSpline` (B-spline /
+//!   NURBS curve), `CagdBSplineSurface`, `CagdTensorPatch`, `CagdTriPatch`, `CagdReport`,
+//!   and the piecewise results `CagdCurveList`, `CagdTensorPatchList`, `CagdTriPatchList`.
+//! - Operations: evaluation, derivatives, elevation, subdivision, knot insertion, Bézier
+//!   extraction.
+//! - Every reduction of cagd-reduce: `cagd_curve_reduce` (twelve methods, with report),
+//!   `cagd_curve_reduce_batch`, `cagd_curve_reduce_to_tolerance` (C^k B-spline) and
+//!   `_stepwise` (seed 000 Algorithm 14.2.1), `cagd_curve_reduce_exact` /
+//!   `cagd_curve_exact_degree`, `cagd_curve_reduce_g1_optimal`, `cagd_reduce_operator`,
+//!   `cagd_bspline_reduce` (to a tolerance) and `cagd_bspline_reduce_uniform` (seed 001),
+//!   `cagd_bsplinesurface_reduce`, `cagd_tensorpatch_reduce` / `cagd_tripatch_reduce` and
+//!   their `_to_tolerance` forms. All take one `CagdReduceOptions` (versioned by its
+//!   leading `struct_size`, filled by `cagd_reduce_options_init`).
+//!
 //! ## Supported range and accuracy
 //!
 //! That of cagd-core (degrees `0..=64`, any `dim >= 1`); the C layer adds no numerics, it
