@@ -245,15 +245,24 @@ pub(crate) unsafe fn read_options(opts: *const CagdReduceOptions) -> CResult<Cag
     }
     // Copy the known prefix over the defaults; today the whole struct is known, so this
     // copies all of it. When fields are appended, a smaller (older) struct keeps the
-    // defaults of the fields it lacks.
-    let mut out = CagdReduceOptions::default();
+    // defaults of the fields it lacks. The copy goes through raw bytes, and the one field
+    // with invalid bit patterns (`bool measure`: a C caller may store any byte there) is
+    // normalised before the struct is used, so no invalid `bool` ever exists.
+    let mut out = std::mem::MaybeUninit::new(CagdReduceOptions::default());
     let n = size.min(size_of::<CagdReduceOptions>());
-    // SAFETY: `n` readable bytes at `opts` by the caller's contract; `out` has at least `n`
-    // bytes; the regions do not overlap (`out` is a local). Every field is plain data whose
-    // bytes a C caller wrote through the same layout.
+    let base = out.as_mut_ptr().cast::<u8>();
+    // SAFETY: `n` readable bytes at `opts` by the caller's contract; `out` has at least
+    // `n` bytes; the regions do not overlap (`out` is a local).
+    unsafe { std::ptr::copy_nonoverlapping(opts.cast::<u8>(), base, n) };
+    let at = std::mem::offset_of!(CagdReduceOptions, measure);
+    // SAFETY: `at` is inside `out`; the byte is initialised (default, then maybe copied).
     unsafe {
-        std::ptr::copy_nonoverlapping(opts.cast::<u8>(), (&raw mut out).cast::<u8>(), n);
+        let b = base.add(at);
+        b.write(u8::from(b.read() != 0));
     }
+    // SAFETY: every field now holds a valid value: plain numbers (any bit pattern is
+    // valid) and a normalised `bool`; padding needs no particular value.
+    let mut out = unsafe { out.assume_init() };
     out.struct_size = size;
     Ok(out)
 }
@@ -414,6 +423,18 @@ mod size_tests {
         o.struct_size = 0;
         // SAFETY: as above.
         assert!(unsafe { read_options(&o) }.is_err());
+        // A C caller may store any byte in the bool: read as true, never UB.
+        let mut raw = std::mem::MaybeUninit::new(CagdReduceOptions::default());
+        // SAFETY: writes the byte of `measure` through a byte pointer, as C could (a
+        // MaybeUninit may hold any bytes).
+        unsafe {
+            raw.as_mut_ptr()
+                .cast::<u8>()
+                .add(std::mem::offset_of!(CagdReduceOptions, measure))
+                .write(7);
+        }
+        // SAFETY: memory laid out as CagdReduceOptions; read_options reads it as bytes.
+        assert!(unsafe { read_options(raw.as_ptr()) }.unwrap().measure);
         // SAFETY: NULL is allowed by the contract.
         let e = unsafe { read_options(std::ptr::null()) }.unwrap_err();
         assert_eq!(e.status, CagdStatus::ERR_NULL_POINTER);
