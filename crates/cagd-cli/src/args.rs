@@ -7,7 +7,7 @@ use std::path::PathBuf;
 pub(crate) const USAGE: &str = "\
 usage:
   cagd reduce --to M[,N] [--method NAME] [--r R] [--p P] [--tol T] [--continuity K]
-              [-i FILE] [-o FILE] [--svg FILE]
+              [--merge exact|lossy] [-i FILE] [-o FILE] [--svg FILE]
   cagd demo [--out DIR]
   cagd --help
 
@@ -16,6 +16,9 @@ reduce reads one JSON object or an array of objects (stdin by default) and write
 pinv-ends, chebyshev (with --r/--p), eck, watkins-worsey, bogacki, l2 (with --r/--p).
 --tol T turns on reduction to a tolerance (pieces within T, joined with C^K, K from
 --continuity). --to M,N gives a tensor patch's target degrees (--to M means M in both).
+A B-spline with uniform knots and no --tol goes through seed 001's matrix pipeline, its
+segments merged exactly (--merge exact, multiple knots) or by averaging (--merge lossy);
+with --tol any B-spline / NURBS is reduced within the tolerance, keeping its continuity.
 ";
 
 /// Options of `cagd reduce`.
@@ -30,6 +33,7 @@ pub(crate) struct ReduceArgs {
     pub(crate) input: Option<PathBuf>,
     pub(crate) output: Option<PathBuf>,
     pub(crate) svg: Option<PathBuf>,
+    pub(crate) lossy_merge: bool,
 }
 
 /// A parsed command line.
@@ -80,6 +84,7 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
                 input: None,
                 output: None,
                 svg: None,
+                lossy_merge: false,
             };
             let mut have_to = false;
             while let Some(a) = it.next() {
@@ -106,6 +111,15 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
                     "-i" | "--input" => r.input = Some(PathBuf::from(value(&mut it, a)?)),
                     "-o" | "--output" => r.output = Some(PathBuf::from(value(&mut it, a)?)),
                     "--svg" => r.svg = Some(PathBuf::from(value(&mut it, a)?)),
+                    "--merge" => {
+                        r.lossy_merge = match value(&mut it, a)? {
+                            "exact" => false,
+                            "lossy" => true,
+                            other => {
+                                return Err(format!("--merge: {other:?} is not exact or lossy"));
+                            }
+                        }
+                    }
                     other => return Err(format!("reduce: unknown argument {other:?}")),
                 }
             }

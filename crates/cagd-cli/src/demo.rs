@@ -182,6 +182,8 @@ pub(crate) fn run(out: &Path) -> Result<(), String> {
             .map_err(|e| format!("{}: {e}", file.display()))?;
         let _ = writeln!(table, "{:<22} pictures: {}", "", file.display());
     }
+    crate::demo_patches::run(out, &mut table)?;
+    crate::demo_splines::run(out, &mut table)?;
     print!("{table}");
     Ok(())
 }

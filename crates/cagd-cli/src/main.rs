@@ -6,12 +6,15 @@
 
 mod args;
 mod demo;
+mod demo_patches;
+mod demo_splines;
 mod input;
 mod methods;
 mod patch_cmd;
 mod picture;
 mod reduce_cmd;
 mod shape;
+mod spline_cmd;
 mod svg;
 
 use std::io::{Read, Write};

@@ -63,7 +63,17 @@ pub(crate) fn curve_panels(
 pub(crate) fn panels(title: &str, input: &Shape, output: &Shape) -> Vec<Panel> {
     match (input, output) {
         (Shape::Bezier(a), Shape::Bezier(b)) => curve_panels(title, a, b).to_vec(),
-        (Shape::Bezier(a), Shape::BSpline(b)) => spline_panels(title, a, b).to_vec(),
+        (Shape::Bezier(a), Shape::BSpline(b)) => {
+            spline_panels(title, &|t| a.eval(t), polygon(a), a.degree(), b).to_vec()
+        }
+        (Shape::BSpline(a), Shape::BSpline(b)) => spline_panels(
+            title,
+            &|t| a.eval(t).unwrap_or_else(|_| vec![0.0; a.dim()]),
+            a.points().chunks(a.dim()).map(project).collect(),
+            a.degree(),
+            b,
+        )
+        .to_vec(),
         (Shape::Tensor(a), Shape::Tensor(b)) => vec![wireframe(
             format!(
                 "{title}: tensor {:?} (black) -> {:?} (red)",
@@ -88,45 +98,55 @@ pub(crate) fn panels(title: &str, input: &Shape, output: &Shape) -> Vec<Panel> {
     }
 }
 
-/// Two panels for a reduction to a tolerance: the original and the degree-m B-spline (with
-/// its control polygon and the piece breaks), and the error along the parameter.
-pub(crate) fn spline_panels(
+/// Two panels for a reduction whose result is a B-spline: the original (a Bézier curve or a
+/// B-spline, evaluated by `orig` on the result's domain) and the B-spline with their control
+/// polygons, and the error along the parameter.
+fn spline_panels(
     title: &str,
-    original: &BezierCurve,
+    orig: &dyn Fn(f64) -> Vec<f64>,
+    orig_polygon: Vec<(f64, f64)>,
+    degree_from: usize,
     result: &BSplineCurve,
 ) -> [Panel; 2] {
+    let (lo, hi) = result.domain();
     let eval = |t: f64| result.eval(t).unwrap_or_else(|_| vec![0.0; result.dim()]);
+    let param = |i: usize| lo + (hi - lo) * i as f64 / (4 * SAMPLES) as f64;
     let mut geo = Panel {
         title: format!(
-            "{title}: degree {} (black) -> degree-{} B-spline (red)",
-            original.degree(),
+            "{title}: degree {degree_from} (black) -> degree-{} B-spline (red)",
             result.degree()
         ),
         equal_aspect: true,
         ..Panel::default()
     };
-    geo.polygon(polygon(original), "#888888");
+    geo.polygon(orig_polygon, "#888888");
     geo.polygon(
         result.points().chunks(result.dim()).map(project).collect(),
         "#e08080",
     );
-    geo.line(curve_line(original), "black", 1.6);
     geo.line(
         (0..=4 * SAMPLES)
-            .map(|i| project(&eval(i as f64 / (4 * SAMPLES) as f64)))
+            .map(|i| project(&orig(param(i))))
+            .collect(),
+        "black",
+        1.6,
+    );
+    geo.line(
+        (0..=4 * SAMPLES)
+            .map(|i| project(&eval(param(i))))
             .collect(),
         "#d01010",
         1.2,
     );
     let mut err = Panel {
-        title: "error |P(t) - S(t)| over t in [0, 1]".into(),
+        title: format!("error along the parameter, t in [{lo}, {hi}]"),
         equal_aspect: false,
         ..Panel::default()
     };
     let pts = (0..=4 * SAMPLES)
         .map(|i| {
-            let t = i as f64 / (4 * SAMPLES) as f64;
-            let (p, q) = (original.eval(t), eval(t));
+            let t = param(i);
+            let (p, q) = (orig(t), eval(t));
             let d = p
                 .iter()
                 .zip(&q)

@@ -153,10 +153,27 @@ pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<O
                     pair: Some((shape.clone(), result)),
                 });
             }
-            Shape::BSpline(_) => {
-                return Err(Failure {
-                    path: path.clone(),
-                    message: "B-spline reduction is not available in this build".into(),
+            Shape::BSpline(c) => {
+                let method = match how_tol {
+                    Plan::Linear(m) => m,
+                    Plan::PerturbationG1 => {
+                        return Err(Failure {
+                            path: "--method".into(),
+                            message: "perturbation-g1 is not available for B-splines".into(),
+                        });
+                    }
+                };
+                let (json, result) =
+                    crate::spline_cmd::reduce(c, args, method).map_err(|e| match e {
+                        crate::spline_cmd::SplineError::Usage(message) => Failure {
+                            path: "--method".into(),
+                            message,
+                        },
+                        crate::spline_cmd::SplineError::Reduce(e) => fail(e),
+                    })?;
+                out.push(Output {
+                    json,
+                    pair: Some((shape.clone(), result)),
                 });
             }
             Shape::Tensor(p) => {

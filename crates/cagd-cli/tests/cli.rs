@@ -291,3 +291,64 @@ fn patches_through_the_command() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).starts_with("cagd: --to: "));
 }
+
+#[test]
+fn bsplines_through_the_command() {
+    // Seed 001's example (vector 001-example): degree 7, 9 points, uniform knots 0..16, C1
+    // Hermite segments, lossy merge -> the printed merged points (SPEC-reduce §8).
+    let v = vector("vectors-reduce.json", "001-example");
+    let input = json!({"type": "bspline", "degree": 7, "knots": v["params"]["knots"], "points": v["input"]["P"]});
+    let out = json_out(&cagd(
+        &[
+            "reduce",
+            "--to",
+            "3",
+            "--method",
+            "chebyshev",
+            "--r",
+            "1",
+            "--p",
+            "1",
+            "--merge",
+            "lossy",
+        ],
+        &input.to_string(),
+    ));
+    let merged = [
+        6.787434, 4.882407, 8.209788, 6.409987, 9.790344, 5.288558, 11.209788, 6.186376, 12.790476,
+        6.141931,
+    ];
+    assert_close(
+        "001 merged points (6 decimals)",
+        &flat(&out["points"]),
+        &merged,
+        1e-7,
+    );
+    let r = &out["report"];
+    assert!(r["max_error"].as_f64().expect("m") <= r["error_bound"].as_f64().expect("b"));
+    // Any B-spline to a tolerance.
+    for tol in ["1e-2", "1e-5"] {
+        let out = json_out(&cagd(
+            &["reduce", "--to", "3", "--tol", tol],
+            &input.to_string(),
+        ));
+        let r = &out["report"];
+        let t: f64 = tol.parse().expect("number");
+        let (b, m) = (
+            r["error_bound"].as_f64().expect("b"),
+            r["max_error"].as_f64().expect("m"),
+        );
+        assert!(m <= b && b <= t, "{tol}: {m} {b}");
+        assert_eq!(out["degree"], 3);
+    }
+    // Non-uniform knots need a tolerance.
+    let nonuniform = json!({"type": "bspline", "degree": 2, "knots": [0, 0, 0, 0.3, 1, 1, 1], "points": [[0, 0], [1, 2], [2, 0], [3, 1]]});
+    let o = cagd(&["reduce", "--to", "1"], &nonuniform.to_string());
+    assert_eq!(o.status.code(), Some(2));
+    // Bad knots name the field.
+    let bad =
+        json!({"type": "bspline", "degree": 1, "knots": [0, 1, 0.5, 2], "points": [[0], [1]]});
+    let o = cagd(&["reduce", "--to", "0", "--tol", "1"], &bad.to_string());
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).starts_with("cagd: input.knots[2]: "));
+}

@@ -33,36 +33,42 @@ impl LocalBounds {
     }
 
     /// Tries to remove one copy of the interior knot `v` of `c` within `tol` on every span
-    /// it touches; on success charges the bound to those spans and returns the new curve.
-    fn try_remove_one(
-        &mut self,
-        c: &BSplineCurve,
-        v: f64,
-        tol: f64,
-    ) -> Result<Option<BSplineCurve>> {
-        let (m, u) = (c.degree(), c.knots());
-        let s = knot_multiplicity(u, v);
-        let (d0, d1) = c.domain();
+    /// it touches; on success charges the bound to those spans and updates `c`.
+    ///
+    /// The removal is done by [`BSplineCurve::remove_knot`] on a local window of `c` (the
+    /// points `r-2p-1 .. r-s+p+2` and their knots), which holds every point the removal
+    /// and its certificate involve, so each removal costs `O(p^2)` plus a splice instead of
+    /// `O(n)` allocations.
+    fn try_remove_one(&mut self, c: &mut Raw, v: f64, tol: f64) -> Result<bool> {
+        let (m, n) = (c.degree, c.n_points());
+        let s = knot_multiplicity(&c.knots, v);
+        let (d0, d1) = (c.knots[m], c.knots[n]);
         if s == 0 || v <= d0 || v >= d1 {
-            return Ok(None);
+            return Ok(false);
         }
-        let r = u.partition_point(|x| *x <= v) - 1;
+        let r = c.knots.partition_point(|x| *x <= v) - 1;
         // The points r-m..=r-s move; their basis functions live on [u_{r-m}, u_{r-s+m+1}].
-        let (a, b) = (u[r - m], u[(r + m + 1 - s).min(u.len() - 1)]);
+        let (a, b) = (
+            c.knots[r - m],
+            c.knots[(r + m + 1 - s).min(c.knots.len() - 1)],
+        );
         let span = self.range(a, b);
         let worst = self.err[span.clone()].iter().copied().fold(0.0, f64::max);
         let avail = tol - worst;
         if avail <= 0.0 {
-            return Ok(None);
+            return Ok(false);
         }
-        let out = c.remove_knot(v, 1, avail)?;
+        let (lo, hi) = (r.saturating_sub(2 * m + 1), (r + m + 2 - s).min(n));
+        let window = c.window(lo, hi)?;
+        let out = window.remove_knot(v, 1, avail)?;
         if out.removed == 0 {
-            return Ok(None);
+            return Ok(false);
         }
+        c.splice(lo, hi, &out.curve);
         for e in &mut self.err[span] {
             *e += out.error_bound;
         }
-        Ok(Some(out.curve))
+        Ok(true)
     }
 
     /// Removes `count` copies of each joint `(v, count)` (joints that are `C^count` by
@@ -70,36 +76,30 @@ impl LocalBounds {
     /// within `tol`.
     pub(crate) fn remove_joint_copies(
         &mut self,
-        mut c: BSplineCurve,
+        c: &mut Raw,
         joints: &[(f64, usize)],
         tol: f64,
-    ) -> Result<Option<BSplineCurve>> {
+    ) -> Result<bool> {
         for &(v, count) in joints {
             for _ in 0..count {
-                match self.try_remove_one(&c, v, tol)? {
-                    Some(next) => c = next,
-                    None => return Ok(None),
+                if !self.try_remove_one(c, v, tol)? {
+                    return Ok(false);
                 }
             }
         }
-        Ok(Some(c))
+        Ok(true)
     }
 
     /// Greedy passes over the distinct interior knots, removing copies while every span a
     /// removal touches keeps its accumulated bound `<= tol`, until a pass removes nothing
     /// (at most [`MAX_PASSES`]; each pass costs `O(knots * points)`).
-    pub(crate) fn remove_greedily(
-        &mut self,
-        mut c: BSplineCurve,
-        tol: f64,
-    ) -> Result<BSplineCurve> {
+    pub(crate) fn remove_greedily(&mut self, c: &mut Raw, tol: f64) -> Result<()> {
         for _ in 0..MAX_PASSES {
             let mut removed_any = false;
-            let mut values = c.knots().to_vec();
+            let mut values = c.knots.clone();
             values.dedup();
             for v in values {
-                while let Some(next) = self.try_remove_one(&c, v, tol)? {
-                    c = next;
+                while self.try_remove_one(c, v, tol)? {
                     removed_any = true;
                 }
             }
@@ -107,7 +107,65 @@ impl LocalBounds {
                 break;
             }
         }
-        Ok(c)
+        Ok(())
+    }
+}
+
+/// A spline as plain buffers, edited in place by the knot removal.
+#[derive(Debug, Clone)]
+pub(crate) struct Raw {
+    degree: usize,
+    dim: usize,
+    knots: Vec<f64>,
+    points: Vec<f64>,
+    weights: Option<Vec<f64>>,
+}
+
+impl Raw {
+    pub(crate) fn new(c: &BSplineCurve) -> Self {
+        Self {
+            degree: c.degree(),
+            dim: c.dim(),
+            knots: c.knots().to_vec(),
+            points: c.points().to_vec(),
+            weights: c.weights().map(<[f64]>::to_vec),
+        }
+    }
+
+    fn n_points(&self) -> usize {
+        self.points.len() / self.dim
+    }
+
+    /// The sub-spline of the points `lo..hi` (with their knots).
+    fn window(&self, lo: usize, hi: usize) -> Result<BSplineCurve> {
+        let (p, d) = (self.degree, self.dim);
+        let knots = self.knots[lo..hi + p + 1].to_vec();
+        let pts = self.points[lo * d..hi * d].to_vec();
+        match &self.weights {
+            None => BSplineCurve::new(p, knots, pts, d),
+            Some(w) => BSplineCurve::new_rational(p, knots, pts, w[lo..hi].to_vec(), d),
+        }
+    }
+
+    /// Replaces the window `lo..hi` by `w` (one point and one knot fewer).
+    fn splice(&mut self, lo: usize, hi: usize, w: &BSplineCurve) {
+        let (p, d) = (self.degree, self.dim);
+        self.knots.splice(lo..hi + p + 1, w.knots().iter().copied());
+        self.points
+            .splice(lo * d..hi * d, w.points().iter().copied());
+        if let (Some(ws), Some(nw)) = (&mut self.weights, w.weights()) {
+            ws.splice(lo..hi, nw.iter().copied());
+        }
+    }
+
+    /// The curve (validated again).
+    pub(crate) fn into_curve(self) -> Result<BSplineCurve> {
+        match self.weights {
+            None => BSplineCurve::new(self.degree, self.knots, self.points, self.dim),
+            Some(w) => {
+                BSplineCurve::new_rational(self.degree, self.knots, self.points, w, self.dim)
+            }
+        }
     }
 }
 

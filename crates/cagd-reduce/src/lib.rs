@@ -109,6 +109,7 @@ mod ends;
 mod exact;
 mod exact_degree;
 mod g1;
+mod hull;
 mod least_squares;
 mod measure;
 mod method;
@@ -137,7 +138,7 @@ pub use bspline_uniform::{Merge, UniformReduction, reduce_uniform_bspline};
 pub use cagd_core::{Error, Result};
 pub use exact_degree::{DEFAULT_REL_TOL, exact_degree, reduce_exact};
 pub use g1::reduce_g1_optimal;
-pub use measure::{SAMPLES, max_deviation};
+pub use measure::max_deviation;
 pub use method::Method;
 pub use operator::{Operator, operator};
 pub use patch_report::{

@@ -1,64 +1,19 @@
-//! Measured (sampled) error between two curves with the same parametrisation.
+//! Measured error between two curves with the same parametrisation.
 
-use cagd_core::{BezierCurve, Error, Result};
+use cagd_core::{BezierCurve, Result};
 
-/// Number of uniform samples (SPEC-reduce §0: "sampled = maximum over a dense grid, 4001
-/// points").
-pub const SAMPLES: usize = 4001;
-
-/// `max_t ||p(t) - q(t)||` (Euclidean) estimated from below: the maximum over
-/// [`SAMPLES`] uniform parameters, refined by golden-section search around the largest
-/// samples. Rational curves are compared in Euclidean space.
+/// `max_t ||p(t) - q(t)||` (Euclidean; rational curves are compared in Euclidean space): the
+/// parametric distance of cagd-core ([`cagd_core::curve_distance`]: dense sampling plus
+/// Brent refinement of every local maximum; for polynomial curves the difference curve is
+/// formed first, so the result is accurate relative to the error itself).
 ///
 /// Being a maximum over evaluated points it never exceeds the true maximum by more than
-/// the evaluation rounding (a few ulp of the curve size), so a certified bound must be at
-/// least this value.
+/// the evaluation rounding, so a certified bound must be at least this value.
 ///
 /// # Errors
-/// [`Error::LengthMismatch`] when the dimensions differ.
+/// [`cagd_core::Error::LengthMismatch`] when the dimensions differ.
 pub fn max_deviation(p: &BezierCurve, q: &BezierCurve) -> Result<f64> {
-    if p.dim() != q.dim() {
-        return Err(Error::LengthMismatch {
-            what: "curve dimensions",
-            got: q.dim(),
-            expected: p.dim(),
-        });
-    }
-    let dist = |t: f64| {
-        let (a, b) = (p.eval(t), q.eval(t));
-        a.iter()
-            .zip(&b)
-            .map(|(x, y)| (x - y) * (x - y))
-            .sum::<f64>()
-            .sqrt()
-    };
-    let h = 1.0 / (SAMPLES - 1) as f64;
-    let vals: Vec<f64> = (0..SAMPLES).map(|i| dist(i as f64 * h)).collect();
-    let mut best = vals.iter().copied().fold(0.0, f64::max);
-    // Refine the five largest local maxima.
-    let mut peaks: Vec<usize> = (0..SAMPLES)
-        .filter(|&i| {
-            (i == 0 || vals[i] >= vals[i - 1]) && (i + 1 == SAMPLES || vals[i] >= vals[i + 1])
-        })
-        .collect();
-    peaks.sort_by(|&a, &b| vals[b].total_cmp(&vals[a]));
-    for &i in peaks.iter().take(5) {
-        let (mut a, mut b) = ((i as f64 - 1.0) * h, (i as f64 + 1.0) * h);
-        a = a.max(0.0);
-        b = b.min(1.0);
-        let g = (5f64.sqrt() - 1.0) / 2.0;
-        for _ in 0..40 {
-            let c = b - g * (b - a);
-            let d = a + g * (b - a);
-            if dist(c) > dist(d) {
-                b = d;
-            } else {
-                a = c;
-            }
-        }
-        best = best.max(dist(0.5 * (a + b)));
-    }
-    Ok(best)
+    cagd_core::curve_distance(p, q)
 }
 
 #[cfg(test)]

@@ -242,25 +242,19 @@ pub(crate) fn max_norm(x: &[f64], dim: usize) -> f64 {
 }
 
 /// The convex-hull bound of seed 000 §14.4.3 on *computed* reduced points (their rounding
-/// is included by construction): `max_i ||P_i - (E Q)_i||`, `E` = elevation `m -> n`, plus
-/// an allowance for the rounding of the elevation and the subtraction.
+/// is included by construction), refined by subdivision of the difference curve
+/// ([`crate::hull::refined_hull_bound`]): `D = P - E Q`, `E` = elevation `m -> n`, plus an
+/// allowance for the rounding of the elevation and the subtraction.
 pub(crate) fn hull_bound(points: &[f64], reduced: &[f64], dim: usize) -> f64 {
     let n = points.len() / dim - 1;
     let m = reduced.len() / dim - 1;
     let eps = f64::EPSILON;
-    let mut elevated = vec![0.0; (n + 1) * dim];
-    cagd_core::kernel::elevate(reduced, dim, n - m, &mut elevated);
-    let hull = points
-        .chunks_exact(dim)
-        .zip(elevated.chunks_exact(dim))
-        .map(|(p, e)| {
-            p.iter()
-                .zip(e)
-                .map(|(a, b)| (a - b) * (a - b))
-                .sum::<f64>()
-                .sqrt()
-        })
-        .fold(0.0, f64::max);
+    let mut diff = vec![0.0; (n + 1) * dim];
+    cagd_core::kernel::elevate(reduced, dim, n - m, &mut diff);
+    for (d, p) in diff.iter_mut().zip(points) {
+        *d = p - *d;
+    }
+    let hull = crate::hull::refined_hull_bound(&diff, dim, crate::hull::DEPTH);
     let slack = 2.0 * (n as f64 + 3.0) * eps * (max_norm(points, dim) + max_norm(reduced, dim));
     hull * (1.0 + 4.0 * eps) + slack
 }

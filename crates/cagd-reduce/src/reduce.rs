@@ -56,7 +56,8 @@ pub struct ReduceOptions {
     pub method: Method,
     /// The target degree `m < n`.
     pub target: usize,
-    /// Also measure the error by dense sampling (costs `2 * 4001` evaluations).
+    /// Also measure the error ([`crate::max_deviation`]: dense sampling plus local
+    /// maximisation).
     pub measure: bool,
     /// The space the reported numbers refer to (matters for rational curves only).
     pub space: ErrorSpace,
