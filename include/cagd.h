@@ -36,6 +36,14 @@
 #include <stdint.h>
 
 /**
+ * The default relative tolerance of `cagd_curve_exact_degree`: a difference
+ * `Delta^j P_0` counts as zero when `||Delta^j P_0||_inf <= tol * 2^j * max ||P_i||_inf`
+ * (an `f64`-elevated curve stays below `(n + 4) eps <= 1.6e-14`; 1e-12 leaves a margin
+ * of 60). Becomes `#define CAGD_EXACT_DEGREE_REL_TOL`.
+ */
+#define CAGD_EXACT_DEGREE_REL_TOL 1e-12
+
+/**
  * Major version of cagd (the `x` of `x.y.z`); becomes `#define CAGD_VERSION_MAJOR`.
  */
 #define CAGD_VERSION_MAJOR 0
@@ -246,6 +254,123 @@ typedef int32_t CagdErrorSpace;
 #endif // __cplusplus
 
 /**
+ * How a patch is reduced (`CagdReduceOptions.patch_method`, an `int32_t`).
+ *
+ */
+enum CagdPatchMethod
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : int32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  /**
+   * Control-point perturbation, one degree in each direction (seed 000 §14.3.1 for
+   * tensor patches, `(m, n) -> (m - 1, n - 1)`, with any `CagdPatchConstraint`;
+   * §14.3.2 for triangles, `n -> n - 1`, constraint `CAGD_CONSTRAINT_NONE` only).
+   * Minimises the sum of squared control-point perturbations.
+   */
+  CAGD_PATCH_PERTURB = 0,
+  /**
+   * Tensor patches only: every column by `method` (`m -> target`), then every row
+   * (`n -> target_v`), with the curve options `method`, `r`, `p`, `l1`, `l2`;
+   * constraint `CAGD_CONSTRAINT_NONE` only. With `CAGD_METHOD_L2` and `r = p = -1` it is
+   * the L2-best reduction over the unit square (the L2 projection is separable).
+   */
+  CAGD_PATCH_BY_CURVES = 1,
+  /**
+   * Triangular patches only: L2-optimal reduction `n -> target` over the triangle,
+   * under the constraint.
+   */
+  CAGD_PATCH_L2 = 2,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum CagdPatchMethod CagdPatchMethod;
+#else
+typedef int32_t CagdPatchMethod;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
+ * Extra conditions on a patch reduction (`CagdReduceOptions.constraint`, an `int32_t`).
+ *
+ */
+enum CagdPatchConstraint
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : int32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  /**
+   * No condition.
+   */
+  CAGD_CONSTRAINT_NONE = 0,
+  /**
+   * The corner points are kept (target degrees `>= 1`; tensor `>= 2` for perturbation).
+   */
+  CAGD_CONSTRAINT_CORNERS = 1,
+  /**
+   * The boundary curves of the result are the reductions of the input's boundary curves
+   * by the curve method `method` (with `r`, `p`, `l1`, `l2`), which must interpolate
+   * both end points: patches sharing an edge still share it after reduction (C0).
+   */
+  CAGD_CONSTRAINT_BOUNDARY = 2,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum CagdPatchConstraint CagdPatchConstraint;
+#else
+typedef int32_t CagdPatchConstraint;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
+ * How the reduced segments of a uniform B-spline are joined
+ * (`CagdReduceOptions.merge`, an `int32_t`; seed 001 §4).
+ *
+ */
+enum CagdMerge
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : int32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  /**
+   * §4.1: the reduced segments become one clamped spline with interior knots of
+   * multiplicity `target - k`, `k` the end order the method keeps; exact (the spline is
+   * the reduced segments). Needs a method that interpolates the segment ends.
+   */
+  CAGD_MERGE_EXACT = 0,
+  /**
+   * §4.2: local uniform B-spline points of each segment, overlapping points averaged:
+   * keeps uniform simple knots (`C^(target-1)`) at the price of an extra change, which
+   * the certified bound includes.
+   */
+  CAGD_MERGE_LOSSY = 1,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum CagdMerge CagdMerge;
+#else
+typedef int32_t CagdMerge;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
+ * Opaque handle to a B-spline curve of degree `p` (`0..=64`) with `n_points >= p + 1`
+ * control points of `dim >= 1` coordinates and a full knot vector of
+ * `n_points + p + 1` non-decreasing knots (clamped or not; the domain is
+ * `[knots[p], knots[n_points]]`), polynomial or NURBS (Euclidean points plus positive
+ * weights). Immutable once created; release with `cagd_bspline_free`.
+ */
+typedef struct CagdBSpline CagdBSpline;
+
+/**
+ * Opaque handle to a tensor-product B-spline surface of degrees `(p, q)` (each `0..=64`)
+ * with `n_u * n_v` control points stored i-major (`P_ij` is point `i * n_v + j`, `i` along
+ * u), knot vectors of `n_u + p + 1` and `n_v + q + 1` knots, polynomial or NURBS.
+ * Immutable; release with `cagd_bsplinesurface_free`.
+ */
+typedef struct CagdBSplineSurface CagdBSplineSurface;
+
+/**
  * Opaque handle to a Bézier curve of degree `n` (`n + 1` control points of `dim`
  * coordinates, `0 <= n <= 64`, `dim >= 1`), polynomial or rational (Euclidean points plus
  * positive weights). Immutable once created; release with `cagd_curve_free`.
@@ -253,9 +378,17 @@ typedef int32_t CagdErrorSpace;
 typedef struct CagdCurve CagdCurve;
 
 /**
+ * Opaque handle to an ordered list of Bézier curves, each the piece of a whole on a
+ * parameter interval `[a_i, b_i]` (`piece_i(s) = whole(a_i + s (b_i - a_i))`,
+ * `s` in `[0, 1]`), made by `cagd_bspline_to_beziers` or a piecewise reduction.
+ * Immutable; release with `cagd_curvelist_free`.
+ */
+typedef struct CagdCurveList CagdCurveList;
+
+/**
  * Opaque handle to the report of a reduction: the method, the degrees, the certified
- * error bound, and (on request) the measured error. Immutable; release with
- * `cagd_report_free`.
+ * error bound, and (on request) the measured error; for a piecewise reduction (to a
+ * tolerance) also the pieces. Immutable; release with `cagd_report_free`.
  */
 typedef struct CagdReport CagdReport;
 
@@ -268,6 +401,13 @@ typedef struct CagdReport CagdReport;
 typedef struct CagdTensorPatch CagdTensorPatch;
 
 /**
+ * Opaque handle to the reduced pieces of a tensor-product patch, in u-major order: piece
+ * `i` is the reduction of the input on the sub-domain `[u0, u1] x [v0, v1]`, parametrised
+ * over `[0, 1]^2`. Immutable; release with `cagd_tensorpatchlist_free`.
+ */
+typedef struct CagdTensorPatchList CagdTensorPatchList;
+
+/**
  * Opaque handle to a triangular Bézier patch of degree `n` (`0..=64`) with
  * `(n + 1)(n + 2) / 2` control points `T_ij` (`i + j <= n`) of `dim` coordinates, stored
  * i-major: for i in 0..=n, for j in 0..=n-i. Domain `u, v >= 0, u + v <= 1`,
@@ -277,13 +417,37 @@ typedef struct CagdTensorPatch CagdTensorPatch;
 typedef struct CagdTriPatch CagdTriPatch;
 
 /**
+ * Opaque handle to the reduced pieces of a triangular patch: piece `i` is the reduction
+ * of the input on the sub-triangle `(A, B, C)` of its parameter domain,
+ * `T_i(u', v') ~ T(C + u' (A - C) + v' (B - C))`. Immutable; release with
+ * `cagd_tripatchlist_free`.
+ */
+typedef struct CagdTriPatchList CagdTriPatchList;
+
+/**
  * How to reduce: a plain struct the caller owns. Fill it with
  * `cagd_reduce_options_init`, then change the fields you need.
+ *
+ * Versioning rule: the first field, `struct_size`, is set by `cagd_reduce_options_init`
+ * to `sizeof(CagdReduceOptions)` of the header the caller was compiled with. Every
+ * function taking options reads it first and fails with `CAGD_ERR_INVALID_ARGUMENT` when
+ * it is smaller than the size of this first version of the struct (so a struct that was
+ * not initialised is most likely caught). Later versions only append fields; a library
+ * reads at most the fields it knows, and the fields a smaller (older) struct lacks take
+ * their defaults, so a program compiled against an older header keeps working. Never set
+ * `struct_size` by hand to anything but `sizeof(CagdReduceOptions)`.
  */
 typedef struct CagdReduceOptions {
   /**
+   * `sizeof(CagdReduceOptions)` in bytes, set by `cagd_reduce_options_init` (see the
+   * versioning rule above).
+   */
+  size_t struct_size;
+  /**
    * A `CagdReduceMethod` value (an `int32_t`, so that any value a caller stores is
-   * checked rather than undefined). Default `CAGD_METHOD_CONSTRAINED_CHEBYSHEV`.
+   * checked rather than undefined). Default `CAGD_METHOD_L2` (with `r = p = 0`: the end
+   * points are interpolated; among the end-interpolating methods it had the smallest
+   * errors in our measurements).
    */
   int32_t method;
   /**
@@ -309,8 +473,8 @@ typedef struct CagdReduceOptions {
    */
   double l2;
   /**
-   * Also measure the error by dense sampling (costs about 8000 evaluations). Default
-   * false.
+   * Also measure the error by dense sampling (costs about 8000 evaluations per piece).
+   * Default false.
    */
   bool measure;
   /**
@@ -318,11 +482,771 @@ typedef struct CagdReduceOptions {
    * `CAGD_SPACE_EUCLIDEAN`.
    */
   int32_t space;
+  /**
+   * Reduction to a tolerance only: the tolerance `delta` (model units, Euclidean) the
+   * certified error bound must meet; finite and `> 0`. Default 0, which is rejected
+   * (`CAGD_ERR_INVALID_ARGUMENT`): a tolerance depends on the model's size, so the
+   * caller must choose it.
+   */
+  double tolerance;
+  /**
+   * Reduction to a tolerance only: the order `k` of parametric continuity `C^k` at the
+   * joins of the pieces (interior knots of multiplicity `target - k`); needs
+   * `k < target` and a method that keeps derivatives up to order `k` at both ends
+   * (e.g. `CAGD_METHOD_L2` with `r = p = k`). Default 0 (`C^0`).
+   */
+  size_t continuity;
+  /**
+   * Reduction of a curve to a tolerance only: the deepest midpoint-subdivision level
+   * allowed (pieces of length `2^-max_depth` of the parameter range). Default 30.
+   * (Patches to a tolerance stop at level 8, `4^8` pieces.)
+   */
+  size_t max_depth;
+  /**
+   * Tensor-product patches only: the target degree in v (`target` is the one in u).
+   * Default 3.
+   */
+  size_t target_v;
+  /**
+   * Patches only: a `CagdPatchMethod` value. Default `CAGD_PATCH_PERTURB`.
+   */
+  int32_t patch_method;
+  /**
+   * Patches only: a `CagdPatchConstraint` value. Default `CAGD_CONSTRAINT_NONE`.
+   */
+  int32_t constraint;
+  /**
+   * `cagd_bspline_reduce_uniform` only: a `CagdMerge` value. Default
+   * `CAGD_MERGE_EXACT`.
+   */
+  int32_t merge;
 } CagdReduceOptions;
 
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/**
+ * Creates a polynomial B-spline curve
+ * `C(t) = sum_i N_{i,degree}(t) P_i`, `t` in `[knots[degree], knots[n_points]]`.
+ *
+ * Parameters:
+ * - `degree` (in): the degree `p`, `0..=64`.
+ * - `knots` (in): `n_knots` doubles, non-decreasing, finite, each value at most
+ *   `degree + 1` times, with `knots[degree] < knots[n_points]`. Borrowed and copied.
+ * - `n_knots` (in): must equal `n_points + degree + 1` (checked, not assumed).
+ * - `points` (in): `n_points * dim` doubles, row-major: coordinate k of control point i
+ *   at `points[i * dim + k]`. Borrowed and copied.
+ * - `n_points` (in): number of control points, `>= degree + 1`.
+ * - `dim` (in): coordinates per point, `>= 1`.
+ * - `spline_out` (out): on `CAGD_OK`, a new handle owned by the caller, to be released
+ *   with `cagd_bspline_free` exactly once. Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*spline_out` holds the new spline.
+ * - `CAGD_ERR_NULL_POINTER`: `knots`, `points` or `spline_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, `n_points * dim` overflows, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_points == 0` or `n_points < degree + 1`.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
+ * - `CAGD_ERR_NON_FINITE`: a coordinate or a knot is NaN or infinite.
+ * - `CAGD_ERR_BAD_KNOTS`: `n_knots != n_points + degree + 1`, the knots decrease
+ *   somewhere (the message gives the index), or the domain is empty.
+ * - `CAGD_ERR_MULTIPLICITY`: a knot value appears more than `degree + 1` times.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `knots` must be NULL or point to `n_knots` readable doubles, `points` NULL or
+ * `n_points * dim` readable doubles; `spline_out` NULL or writable.
+ */
+CagdStatus cagd_bspline_new(size_t degree,
+                            const double *knots,
+                            size_t n_knots,
+                            const double *points,
+                            size_t n_points,
+                            size_t dim,
+                            struct CagdBSpline **spline_out);
+
+/**
+ * Creates a NURBS curve from Euclidean control points and weights:
+ * `C(t) = sum_i N_{i,p}(t) w_i P_i / sum_i N_{i,p}(t) w_i`.
+ *
+ * Parameters:
+ * - `degree` (in): the degree `p`, `0..=64`.
+ * - `knots` (in): `n_knots` doubles, as in `cagd_bspline_new`. Borrowed and copied.
+ * - `n_knots` (in): must equal `n_points + degree + 1`.
+ * - `points` (in): `n_points * dim` doubles, row-major, Euclidean (not multiplied by the
+ *   weights). Borrowed and copied.
+ * - `weights` (in): `n_points` doubles, each finite and `> 0`. Borrowed and copied.
+ * - `n_points` (in): number of control points, `>= degree + 1`.
+ * - `dim` (in): coordinates per point, `>= 1`.
+ * - `spline_out` (out): on `CAGD_OK`, a new handle owned by the caller (release with
+ *   `cagd_bspline_free`). Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*spline_out` holds the new spline.
+ * - `CAGD_ERR_NULL_POINTER`: `knots`, `points`, `weights` or `spline_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, `n_points * dim` overflows, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_points == 0` or `n_points < degree + 1`.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
+ * - `CAGD_ERR_NON_FINITE`: a coordinate or a knot is NaN or infinite.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0`, NaN or infinite (the message
+ *   gives its index and value).
+ * - `CAGD_ERR_BAD_KNOTS`: wrong `n_knots`, decreasing knots, or an empty domain.
+ * - `CAGD_ERR_MULTIPLICITY`: a knot value appears more than `degree + 1` times.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `knots` must be NULL or point to `n_knots` readable doubles, `points` NULL or
+ * `n_points * dim` readable doubles, `weights` NULL or `n_points` readable doubles;
+ * `spline_out` NULL or writable.
+ */
+CagdStatus cagd_bspline_new_rational(size_t degree,
+                                     const double *knots,
+                                     size_t n_knots,
+                                     const double *points,
+                                     const double *weights,
+                                     size_t n_points,
+                                     size_t dim,
+                                     struct CagdBSpline **spline_out);
+
+/**
+ * Releases a spline. NULL is accepted and ignored, so freeing NULL twice is fine; a
+ * non-NULL handle must be released exactly once and not used afterwards.
+ *
+ * Parameters:
+ * - `spline` (in, consumed): a handle from `cagd_bspline_new*` or a `CagdBSpline **`
+ *   output of another function, or NULL.
+ *
+ * Does not change `cagd_last_error_message()`.
+ *
+ * # Safety
+ * `spline` must be NULL or a live handle created by cagd that is not used afterwards.
+ */
+void cagd_bspline_free(struct CagdBSpline *spline);
+
+/**
+ * Reads the degree `p` of a spline (`0..=64`).
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `degree_out` (out): on `CAGD_OK`, the degree.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*degree_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `degree_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `degree_out` NULL or writable.
+ */
+CagdStatus cagd_bspline_degree(const struct CagdBSpline *spline, size_t *degree_out);
+
+/**
+ * Reads the number of coordinates per point of a spline (`>= 1`).
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `dim_out` (out): on `CAGD_OK`, the dimension.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*dim_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `dim_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `dim_out` NULL or writable.
+ */
+CagdStatus cagd_bspline_dim(const struct CagdBSpline *spline, size_t *dim_out);
+
+/**
+ * Reads the number of control points of a spline (`>= degree + 1`); the knot count is
+ * `n_points + degree + 1`.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `n_points_out` (out): on `CAGD_OK`, the number of control points.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*n_points_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `n_points_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `n_points_out` NULL or writable.
+ */
+CagdStatus cagd_bspline_n_points(const struct CagdBSpline *spline, size_t *n_points_out);
+
+/**
+ * Tells whether a spline is rational (NURBS, created with weights).
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `rational_out` (out): on `CAGD_OK`, `true` for a NURBS curve.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*rational_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `rational_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `rational_out` NULL or writable.
+ */
+CagdStatus cagd_bspline_is_rational(const struct CagdBSpline *spline, bool *rational_out);
+
+/**
+ * Reads the parameter domain `[a, b] = [knots[degree], knots[n_points]]` of a spline
+ * (`a < b`).
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `a_out` (out): on `CAGD_OK`, the start of the domain.
+ * - `b_out` (out): on `CAGD_OK`, the end of the domain.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_bspline_domain(const struct CagdBSpline *spline, double *a_out, double *b_out);
+
+/**
+ * Copies the knot vector of a spline (`n_points + degree + 1` doubles, non-decreasing).
+ * Call with `out_cap = 0` (and `out` NULL) to ask the size.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
+ *   `n_points + degree + 1` doubles hold the knots. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
+ *   `n_points + degree + 1`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the knots are in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the count; only `*out_needed` is
+ *   written.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `out` NULL or `out_cap` writable
+ * doubles; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_bspline_knots(const struct CagdBSpline *spline,
+                              double *out,
+                              size_t out_cap,
+                              size_t *out_needed);
+
+/**
+ * Copies the control points of a spline, row-major, Euclidean (for a NURBS curve, not
+ * multiplied by the weights). Call with `out_cap = 0` (and `out` NULL) to ask the size.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `n_points * dim`
+ *   doubles hold the points (`out[i * dim + k]`). May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
+ *   `n_points * dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the points are in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < n_points * dim`; only `*out_needed` is
+ *   written.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `out` NULL or `out_cap` writable
+ * doubles; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_bspline_points(const struct CagdBSpline *spline,
+                               double *out,
+                               size_t out_cap,
+                               size_t *out_needed);
+
+/**
+ * Copies the weights of a spline; a polynomial spline reports `n_points` weights equal
+ * to 1.0 (the same curve as a NURBS one). Call with `out_cap = 0` (and `out` NULL) to
+ * ask the size.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `n_points` doubles
+ *   hold the weights. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, `n_points`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the weights are in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < n_points`; only `*out_needed` is written.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `out` NULL or `out_cap` writable
+ * doubles; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_bspline_weights(const struct CagdBSpline *spline,
+                                double *out,
+                                size_t out_cap,
+                                size_t *out_needed);
+
+/**
+ * Evaluates a spline at one parameter `t` (de Boor; in homogeneous coordinates for a
+ * NURBS curve). `t` in the domain `[a, b]` (`cagd_bspline_domain`) is the curve; at `b`
+ * the last piece is used (so a clamped spline gives its last control point); other finite
+ * `t` extrapolate the first or last piece.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `t` (in): the parameter, finite.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `dim` doubles hold
+ *   the point. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, `dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the point is in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `t` is NaN or infinite, or a pointer is misaligned.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `out` NULL or `out_cap` writable
+ * doubles; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_bspline_eval(const struct CagdBSpline *spline,
+                             double t,
+                             double *out,
+                             size_t out_cap,
+                             size_t *out_needed);
+
+/**
+ * Evaluates the derivatives of orders `0..=order` of a spline at `t` (Euclidean also for
+ * NURBS, by the quotient rule). At an interior knot the derivative from the right is
+ * returned (from the left at the end of the domain); orders above the degree of a
+ * polynomial spline are zero.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `t` (in): the parameter, finite.
+ * - `order` (in): the highest derivative order, `0..=130`.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
+ *   `(order + 1) * dim` doubles hold the derivatives: coordinate k of the derivative of
+ *   order j at `out[j * dim + k]` (order 0 is the point). May be NULL only when
+ *   `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
+ *   `(order + 1) * dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the derivatives are in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `t` is NaN or infinite, `order > 130`, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < (order + 1) * dim`; only `*out_needed` is
+ *   written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `out` NULL or `out_cap` writable
+ * doubles; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_bspline_derivatives(const struct CagdBSpline *spline,
+                                    double t,
+                                    size_t order,
+                                    double *out,
+                                    size_t out_cap,
+                                    size_t *out_needed);
+
+/**
+ * Inserts the knot `t` `times` times (Boehm's algorithm): the same curve on a finer knot
+ * vector, with `times` more control points and knots.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `t` (in): the knot, finite, in the domain `[a, b]`.
+ * - `times` (in): how many times to insert it; the multiplicity of `t` afterwards must be
+ *   at most `degree + 1`. 0 gives a copy.
+ * - `spline_out` (out): on `CAGD_OK`, the refined spline (`n_points + times` control
+ *   points, `n_points + degree + 1 + times` knots), owned by the caller: release with
+ *   `cagd_bspline_free`. Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*spline_out` holds the refined spline.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `spline_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `t` is NaN, infinite or outside the domain, or a pointer
+ *   is misaligned.
+ * - `CAGD_ERR_MULTIPLICITY`: the multiplicity of `t` would exceed `degree + 1`.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `spline_out` NULL or writable.
+ */
+CagdStatus cagd_bspline_insert_knot(const struct CagdBSpline *spline,
+                                    double t,
+                                    size_t times,
+                                    struct CagdBSpline **spline_out);
+
+/**
+ * Splits a spline into its Bézier pieces, one per non-empty knot span of the domain, in
+ * order (rational pieces for a NURBS curve). Piece `i` on `[a_i, b_i]` is the Bézier
+ * curve of degree `degree` with `piece_i(s) = spline(a_i + s (b_i - a_i))`.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `list_out` (out): on `CAGD_OK`, the pieces (read with `cagd_curvelist_count`,
+ *   `cagd_curvelist_get`, `cagd_curvelist_interval`), owned by the caller: release with
+ *   `cagd_curvelist_free`. Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*list_out` holds the pieces.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `list_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: a piece overflows (control points near the `double` range).
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `list_out` NULL or writable.
+ */
+CagdStatus cagd_bspline_to_beziers(const struct CagdBSpline *spline,
+                                   struct CagdCurveList **list_out);
+
+/**
+ * Reduces a B-spline or NURBS curve of degree `p` to degree `opts->target` within
+ * `opts->tolerance` (certified, Euclidean, model space): every knot span is extracted as
+ * a Bézier piece, reduced by `opts->method` (`CAGD_METHOD_CONSTRAINED_CHEBYSHEV`, seed 000
+ * §14.5, or `CAGD_METHOD_L2`; their `r`, `p` are set per end from the continuity to keep)
+ * keeping derivatives `0..=min(continuity, p - s_j)` at each knot of multiplicity `s_j`,
+ * split at midpoints until each piece meets half the tolerance, merged exactly (seed 001
+ * §4.1), then knots are removed while the tracked local bound stays within the tolerance
+ * (after Piegl & Tiller 1995). The result is clamped on the input's domain; rational
+ * input is reduced in homogeneous coordinates.
+ *
+ * Options used: `method`, `target` (`1 <= target < p`), `tolerance`, `continuity` (at
+ * most `floor((target - 1) / 2)`: per-segment Hermite data need `2k + 1 <= target`;
+ * default 0), `measure`.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `opts` (in): the options. Borrowed for the call.
+ * - `spline_out` (out): on `CAGD_OK`, the reduced spline of degree `target`, owned by the
+ *   caller: release with `cagd_bspline_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report (`cagd_report_bound`,
+ *   `cagd_report_max_error`, `cagd_report_spline`), owned by the caller: release with
+ *   `cagd_report_free`. Neither output is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `spline`, `opts`, `spline_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` below `sizeof(CagdReduceOptions)`,
+ *   an invalid method code or a method other than the two above, `tolerance` not finite
+ *   and `> 0`, the two outputs are the same address, or a pointer is misaligned.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target == 0` or `target >= p`.
+ * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `continuity > floor((target - 1) / 2)`.
+ * - `CAGD_ERR_BAD_KNOTS`: an interior knot of multiplicity `p + 1` (the input may be
+ *   discontinuous there).
+ * - `CAGD_ERR_CONDITION_NOT_MET`: a span cannot meet the tolerance (e.g. a tolerance
+ *   below the rounding level of the curve).
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; the outputs NULL or writable.
+ */
+CagdStatus cagd_bspline_reduce(const struct CagdBSpline *spline,
+                               const struct CagdReduceOptions *opts,
+                               struct CagdBSpline **spline_out,
+                               struct CagdReport **report_out);
+
+/**
+ * Reduces a uniform B-spline or NURBS curve (equally spaced knots) of degree `n` to
+ * degree `opts->target` segment by segment, seed 001's pipeline (model (1)): the B-spline
+ * points of each segment go to its Bézier points by `S^(n)` (eq. 5), `opts->method`
+ * reduces them, and `opts->merge` joins the results (§4). Not driven by a tolerance: the
+ * report gives the certified bound of what was done.
+ *
+ * Options used: `method` (with `r`, `p`, `l1`, `l2`), `target`, `merge`, `measure`.
+ *
+ * Parameters:
+ * - `spline` (in): the spline, uniform knots (all gaps equal within `1e-12` relative).
+ * - `opts` (in): the options. Borrowed for the call.
+ * - `spline_out` (out): on `CAGD_OK`, the merged spline of degree `target` on the
+ *   input's domain (`CAGD_MERGE_EXACT`: clamped, interior knots of multiplicity
+ *   `target - k`; `CAGD_MERGE_LOSSY`: uniform knots of the input's spacing), owned by the
+ *   caller: release with `cagd_bspline_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report (`cagd_report_bound`: the certified
+ *   bound of the merged spline; `cagd_report_spline`: the bound of the reduction step
+ *   alone), owned by the caller: release with `cagd_report_free`. Neither output is
+ *   written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `spline`, `opts`, `spline_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` below `sizeof(CagdReduceOptions)`,
+ *   an invalid `method` or `merge` code, `CAGD_MERGE_EXACT` with a method that does not
+ *   interpolate the segment ends, the two outputs are the same address, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_BAD_KNOTS`: the knots are not uniform.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS`: as `cagd_curve_reduce`
+ *   for the pair `(n, target)`.
+ * - `CAGD_ERR_CONDITION_NOT_MET`: the exact merge finds joints that do not meet.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a NURBS is not positive.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; the outputs NULL or writable.
+ */
+CagdStatus cagd_bspline_reduce_uniform(const struct CagdBSpline *spline,
+                                       const struct CagdReduceOptions *opts,
+                                       struct CagdBSpline **spline_out,
+                                       struct CagdReport **report_out);
+
+/**
+ * Reads what a B-spline reduction did: the largest certified bound of a reduced Bézier
+ * segment (the reduction step alone, before merging and knot removal), the number of
+ * reduced segments, and the non-empty knot spans of the input and of the result.
+ *
+ * Parameters:
+ * - `report` (in): the report.
+ * - `segment_bound_out` (out): on `CAGD_OK`, the bound of the reduction step.
+ * - `pieces_out` (out): on `CAGD_OK`, the number of reduced segments.
+ * - `spans_in_out` (out): on `CAGD_OK`, the non-empty spans of the input.
+ * - `spans_out_out` (out): on `CAGD_OK`, the non-empty spans of the result.
+ *
+ * Returns:
+ * - `CAGD_OK`: all outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the report is not of a B-spline reduction.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `report` must be NULL or a live report handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_report_spline(const struct CagdReport *report,
+                              double *segment_bound_out,
+                              size_t *pieces_out,
+                              size_t *spans_in_out,
+                              size_t *spans_out_out);
+
+/**
+ * Creates a B-spline or NURBS surface (`weights` NULL for a polynomial one)
+ * `S(u, v) = sum_ij N_i,p(u) N_j,q(v) w_ij P_ij / sum_ij N_i,p(u) N_j,q(v) w_ij`.
+ *
+ * Parameters:
+ * - `deg_u` (in), `deg_v` (in): the degrees `p`, `q`, each `0..=64`.
+ * - `knots_u` (in): `n_knots_u` doubles, non-decreasing, finite, multiplicities at most
+ *   `p + 1`; `n_knots_u` must equal `n_u + p + 1`. Borrowed and copied.
+ * - `n_knots_u` (in): the length of `knots_u`.
+ * - `knots_v` (in): `n_knots_v = n_v + q + 1` doubles, likewise. Borrowed and copied.
+ * - `n_knots_v` (in): the length of `knots_v`.
+ * - `points` (in): `n_u * n_v * dim` doubles, i-major: coordinate k of `P_ij` at
+ *   `points[(i * n_v + j) * dim + k]`, Euclidean. Borrowed and copied.
+ * - `weights` (in): NULL (polynomial) or `n_u * n_v` doubles, i-major, each finite and
+ *   `> 0`. Borrowed and copied.
+ * - `n_u` (in), `n_v` (in): control points in u and v, `>= p + 1`, `>= q + 1`.
+ * - `dim` (in): coordinates per point, `>= 1`.
+ * - `surface_out` (out): on `CAGD_OK`, a new handle owned by the caller (release with
+ *   `cagd_bsplinesurface_free`). Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*surface_out` holds the new surface.
+ * - `CAGD_ERR_NULL_POINTER`: `knots_u`, `knots_v`, `points` or `surface_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a length formula overflows, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_u < p + 1` or `n_v < q + 1` (or zero).
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `p > 64` or `q > 64`.
+ * - `CAGD_ERR_NON_FINITE`: a coordinate or a knot is NaN or infinite.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0`, NaN or infinite.
+ * - `CAGD_ERR_BAD_KNOTS`: a knot count is wrong, knots decrease, or a domain is empty.
+ * - `CAGD_ERR_MULTIPLICITY`: a knot value appears more than degree + 1 times.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * Each array pointer must be NULL or point to the documented number of readable doubles;
+ * `surface_out` NULL or writable.
+ */
+CagdStatus cagd_bsplinesurface_new(size_t deg_u,
+                                   size_t deg_v,
+                                   const double *knots_u,
+                                   size_t n_knots_u,
+                                   const double *knots_v,
+                                   size_t n_knots_v,
+                                   const double *points,
+                                   const double *weights,
+                                   size_t n_u,
+                                   size_t n_v,
+                                   size_t dim,
+                                   struct CagdBSplineSurface **surface_out);
+
+/**
+ * Releases a surface. NULL is accepted and ignored; a non-NULL handle must be released
+ * exactly once and not used afterwards.
+ *
+ * Parameters:
+ * - `surface` (in, consumed): a handle made by cagd, or NULL.
+ *
+ * Does not change `cagd_last_error_message()`.
+ *
+ * # Safety
+ * `surface` must be NULL or a live handle created by cagd that is not used afterwards.
+ */
+void cagd_bsplinesurface_free(struct CagdBSplineSurface *surface);
+
+/**
+ * Reads the shape of a surface: degrees, control-point counts, dimension, rationality.
+ * The knot counts are `n_u + deg_u + 1` and `n_v + deg_v + 1`.
+ *
+ * Parameters:
+ * - `surface` (in): the surface.
+ * - `shape_out` (out): on `CAGD_OK`, 5 `size_t`: `deg_u, deg_v, n_u, n_v, dim`.
+ * - `rational_out` (out): on `CAGD_OK`, `true` for a NURBS surface.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `surface` must be NULL or a live surface handle; `shape_out` NULL or 5 writable
+ * `size_t`; `rational_out` NULL or writable.
+ */
+CagdStatus cagd_bsplinesurface_shape(const struct CagdBSplineSurface *surface,
+                                     size_t *shape_out,
+                                     bool *rational_out);
+
+/**
+ * Copies one array of a surface (`part`: 0 knots in u, 1 knots in v, 2 points, 3 weights).
+ *
+ * Parameters:
+ * - `surface` (in): the surface.
+ * - `part` (in): which array: 0 = knots in u (`n_u + deg_u + 1` doubles), 1 = knots in v
+ *   (`n_v + deg_v + 1`), 2 = control points (`n_u * n_v * dim`, i-major, Euclidean), 3 =
+ *   weights (`n_u * n_v`, i-major; all 1.0 for a polynomial surface).
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `*out_needed`
+ *   doubles hold the array. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, the length.
+ *
+ * Returns:
+ * - `CAGD_OK`: the array is in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `surface` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `part` is not 0..=3, or a pointer is misaligned.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the length; only `*out_needed` is
+ *   written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `surface` must be NULL or a live surface handle; `out` NULL or `out_cap` writable
+ * doubles; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_bsplinesurface_array(const struct CagdBSplineSurface *surface,
+                                     int32_t part,
+                                     double *out,
+                                     size_t out_cap,
+                                     size_t *out_needed);
+
+/**
+ * Evaluates a surface at `(u, v)` (de Boor in each direction; homogeneous for NURBS).
+ * Inside the domain `[knots_u[p], knots_u[n_u]] x [knots_v[q], knots_v[n_v]]` it is the
+ * surface; other finite values extrapolate.
+ *
+ * Parameters:
+ * - `surface` (in): the surface.
+ * - `u` (in), `v` (in): the parameters, finite.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `dim` doubles hold
+ *   the point. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, `dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the point is in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `surface` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `u` or `v` is NaN or infinite, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `surface` must be NULL or a live surface handle; `out` NULL or `out_cap` writable
+ * doubles; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_bsplinesurface_eval(const struct CagdBSplineSurface *surface,
+                                    double u,
+                                    double v,
+                                    double *out,
+                                    size_t out_cap,
+                                    size_t *out_needed);
+
+/**
+ * Reduces a B-spline / NURBS surface of degrees `(p, q)` to
+ * `(opts->target, opts->target_v)` patch by patch: each Bézier patch is reduced in u by
+ * the curve operator of `opts->method` (`CAGD_METHOD_CONSTRAINED_CHEBYSHEV`, seed 000
+ * §14.5, or `CAGD_METHOD_L2`) on every column, then in v on every row, with end orders
+ * `min(continuity, p - s)` at each knot line (0 at the boundary), so patches sharing a
+ * knot line keep the same derivatives across it; the merged surface stores interior knots
+ * of multiplicity `target` / `target_v` (structurally C0; surface knot removal is not
+ * implemented). Certified bound of `max ||S - S'||` (Euclidean, model space).
+ *
+ * Options used: `method`, `target`, `target_v` (`1 <= target <= p`,
+ * `1 <= target_v <= q`, not both equal: an equal one leaves that direction alone),
+ * `continuity` (at most `floor((m - 1) / 2)` for a reduced direction; default 0),
+ * `measure` (17 x 17 samples per input patch).
+ *
+ * Parameters:
+ * - `surface` (in): the surface.
+ * - `opts` (in): the options. Borrowed for the call.
+ * - `surface_out` (out): on `CAGD_OK`, the reduced surface, owned by the caller: release
+ *   with `cagd_bsplinesurface_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report (`cagd_report_bound`,
+ *   `cagd_report_max_error`, `cagd_report_patch` with patch method -1 and the number of
+ *   Bézier patches), owned by the caller: release with `cagd_report_free`. Neither output
+ *   is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `surface`, `opts`, `surface_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` below `sizeof(CagdReduceOptions)`,
+ *   an invalid method code or a method other than the two above, the two outputs are the
+ *   same address, or a pointer is misaligned.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: a target 0 or above its degree, or both equal.
+ * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `continuity` too large for a reduced direction.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced NURBS weight is not positive.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `surface` must be NULL or a live surface handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; the outputs NULL or writable.
+ */
+CagdStatus cagd_bsplinesurface_reduce(const struct CagdBSplineSurface *surface,
+                                      const struct CagdReduceOptions *opts,
+                                      struct CagdBSplineSurface **surface_out,
+                                      struct CagdReport **report_out);
 
 /**
  * Creates a polynomial Bézier curve of degree `n_points - 1`.
@@ -519,6 +1443,110 @@ CagdStatus cagd_curve_weights(const struct CagdCurve *curve,
                               size_t *out_needed);
 
 /**
+ * Releases a curve list (not the curves obtained from it with `cagd_curvelist_get`,
+ * which are independent handles). NULL is accepted and ignored; a non-NULL handle must be
+ * released exactly once and not used afterwards.
+ *
+ * Parameters:
+ * - `list` (in, consumed): a `CagdCurveList **` output of a cagd function, or NULL.
+ *
+ * Does not change `cagd_last_error_message()`.
+ *
+ * # Safety
+ * `list` must be NULL or a live handle created by cagd that is not used afterwards.
+ */
+void cagd_curvelist_free(struct CagdCurveList *list);
+
+/**
+ * Reads the number of pieces of a list (`>= 1` for lists made by cagd).
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `count_out` (out): on `CAGD_OK`, the number of pieces.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*count_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `count_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; `count_out` NULL or writable.
+ */
+CagdStatus cagd_curvelist_count(const struct CagdCurveList *list, size_t *count_out);
+
+/**
+ * Copies piece `i` of a list into a new curve handle (parametrised on `[0, 1]`;
+ * rational when the whole is).
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `i` (in): the piece index, `0 <= i < count`, in parameter order.
+ * - `curve_out` (out): on `CAGD_OK`, a new curve handle owned by the caller, independent
+ *   of the list: release it with `cagd_curve_free` (before or after the list). Not
+ *   written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*curve_out` holds the piece.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `curve_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; `curve_out` NULL or writable.
+ */
+CagdStatus cagd_curvelist_get(const struct CagdCurveList *list,
+                              size_t i,
+                              struct CagdCurve **curve_out);
+
+/**
+ * Reads the parameter interval `[a, b]` of piece `i` in the parameter of the whole (the
+ * spline's knots for `cagd_bspline_to_beziers`, `[0, 1]` of the source curve for a
+ * piecewise reduction).
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `i` (in): the piece index, `0 <= i < count`.
+ * - `a_out` (out): on `CAGD_OK`, the start of the interval.
+ * - `b_out` (out): on `CAGD_OK`, the end of the interval (`> a`).
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `list`, `a_out` or `b_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_curvelist_interval(const struct CagdCurveList *list,
+                                   size_t i,
+                                   double *a_out,
+                                   double *b_out);
+
+/**
+ * Reads the certified error bound of piece `i` of a piecewise reduction (Euclidean,
+ * model units: the piece is within this distance of the source on its interval).
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `i` (in): the piece index, `0 <= i < count`.
+ * - `bound_out` (out): on `CAGD_OK`, the bound (finite, `>= 0`).
+ *
+ * Returns:
+ * - `CAGD_OK`: `*bound_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `bound_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the list is not the result of a reduction (e.g. from
+ *   `cagd_bspline_to_beziers`, whose pieces are exact).
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; `bound_out` NULL or writable.
+ */
+CagdStatus cagd_curvelist_bound(const struct CagdCurveList *list, size_t i, double *bound_out);
+
+/**
  * Evaluates a curve at one parameter `t` (de Casteljau; in homogeneous coordinates for a
  * rational curve). `t` in `[0, 1]` is the curve; other finite `t` extrapolate.
  *
@@ -679,6 +1707,319 @@ CagdStatus cagd_curve_segment(const struct CagdCurve *curve,
 const char *cagd_last_error_message(void);
 
 /**
+ * Releases a tensor patch list (not the patches obtained from it). NULL is accepted and
+ * ignored; a non-NULL handle must be released exactly once and not used afterwards.
+ *
+ * Parameters:
+ * - `list` (in, consumed): a `CagdTensorPatchList **` output of a cagd function, or NULL.
+ *
+ * Does not change `cagd_last_error_message()`.
+ *
+ * # Safety
+ * `list` must be NULL or a live handle created by cagd that is not used afterwards.
+ */
+void cagd_tensorpatchlist_free(struct CagdTensorPatchList *list);
+
+/**
+ * Reads the number of pieces of a tensor patch list (`4^L` for subdivision level `L`).
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `count_out` (out): on `CAGD_OK`, the number of pieces.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*count_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `count_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; `count_out` NULL or writable.
+ */
+CagdStatus cagd_tensorpatchlist_count(const struct CagdTensorPatchList *list, size_t *count_out);
+
+/**
+ * Reads piece `i` of a tensor patch list: a new patch handle, its sub-domain and its
+ * certified error bound (Euclidean, model units).
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `i` (in): the piece index, `0 <= i < count`.
+ * - `patch_out` (out): on `CAGD_OK`, the reduced piece, a new handle owned by the caller,
+ *   independent of the list: release it with `cagd_tensorpatch_free`.
+ * - `domain_out` (out): on `CAGD_OK`, 4 doubles `u0, u1, v0, v1`: the sub-domain.
+ * - `bound_out` (out): on `CAGD_OK`, the certified bound of the piece. Nothing is written
+ *   on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: all outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: any pointer argument is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; `patch_out`, `bound_out` NULL or writable;
+ * `domain_out` NULL or 4 writable doubles.
+ */
+CagdStatus cagd_tensorpatchlist_get(const struct CagdTensorPatchList *list,
+                                    size_t i,
+                                    struct CagdTensorPatch **patch_out,
+                                    double *domain_out,
+                                    double *bound_out);
+
+/**
+ * Releases a triangular patch list (not the patches obtained from it). NULL is accepted
+ * and ignored; a non-NULL handle must be released exactly once and not used afterwards.
+ *
+ * Parameters:
+ * - `list` (in, consumed): a `CagdTriPatchList **` output of a cagd function, or NULL.
+ *
+ * Does not change `cagd_last_error_message()`.
+ *
+ * # Safety
+ * `list` must be NULL or a live handle created by cagd that is not used afterwards.
+ */
+void cagd_tripatchlist_free(struct CagdTriPatchList *list);
+
+/**
+ * Reads the number of pieces of a triangular patch list (`4^L` for subdivision level
+ * `L`).
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `count_out` (out): on `CAGD_OK`, the number of pieces.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*count_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `count_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; `count_out` NULL or writable.
+ */
+CagdStatus cagd_tripatchlist_count(const struct CagdTriPatchList *list, size_t *count_out);
+
+/**
+ * Reads piece `i` of a triangular patch list: a new patch handle, its sub-triangle and
+ * its certified error bound (Euclidean, model units).
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `i` (in): the piece index, `0 <= i < count`.
+ * - `patch_out` (out): on `CAGD_OK`, the reduced piece, a new handle owned by the caller,
+ *   independent of the list: release it with `cagd_tripatch_free`.
+ * - `vertices_out` (out): on `CAGD_OK`, 6 doubles `A.u, A.v, B.u, B.v, C.u, C.v`: the
+ *   sub-triangle in the input's parameters (the piece's `(1, 0)`, `(0, 1)` and `(0, 0)`
+ *   corners).
+ * - `bound_out` (out): on `CAGD_OK`, the certified bound of the piece. Nothing is written
+ *   on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: all outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: any pointer argument is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; `patch_out`, `bound_out` NULL or writable;
+ * `vertices_out` NULL or 6 writable doubles.
+ */
+CagdStatus cagd_tripatchlist_get(const struct CagdTriPatchList *list,
+                                 size_t i,
+                                 struct CagdTriPatch **patch_out,
+                                 double *vertices_out,
+                                 double *bound_out);
+
+/**
+ * Reduces a tensor-product patch of degree `(m, n)` to degree
+ * `(opts->target, opts->target_v)` with `opts->patch_method` (seed 000 §14.3.1 for
+ * `CAGD_PATCH_PERTURB`; direction by direction with the curve method for
+ * `CAGD_PATCH_BY_CURVES`), with a certified bound of `max ||P(u,v) - Q(u,v)||` over the
+ * unit square (Euclidean).
+ *
+ * Options used: `patch_method`, `constraint`, `target`, `target_v`, `measure`, and
+ * `method`, `r`, `p`, `l1`, `l2` for `CAGD_PATCH_BY_CURVES` and
+ * `CAGD_CONSTRAINT_BOUNDARY`.
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `opts` (in): the options. Borrowed for the call.
+ * - `patch_out` (out): on `CAGD_OK`, the reduced patch
+ *   (`(target + 1) * (target_v + 1) * dim` doubles, read back with
+ *   `cagd_tensorpatch_points`), owned by the caller: release with
+ *   `cagd_tensorpatch_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report (`cagd_report_bound`,
+ *   `cagd_report_max_error`, `cagd_report_patch`), owned by the caller: release with
+ *   `cagd_report_free`. Neither output is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch`, `opts`, `patch_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` is below
+ *   `sizeof(CagdReduceOptions)`; an invalid `patch_method`, `constraint` or `method`
+ *   code; `CAGD_PATCH_L2` (triangles only); `CAGD_PATCH_BY_CURVES` with a constraint;
+ *   the two outputs are the same address; or a pointer is misaligned.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: a target degree above the source, no reduction at all, a
+ *   target other than `(m - 1, n - 1)` for `CAGD_PATCH_PERTURB`, or a pair the curve
+ *   method does not accept.
+ * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: corner / boundary constraints with a target degree
+ *   too small, a boundary method that does not interpolate the end points, or `r + p + 1`
+ *   above a target degree.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; the outputs NULL or writable.
+ */
+CagdStatus cagd_tensorpatch_reduce(const struct CagdTensorPatch *patch,
+                                   const struct CagdReduceOptions *opts,
+                                   struct CagdTensorPatch **patch_out,
+                                   struct CagdReport **report_out);
+
+/**
+ * Reduces a triangular patch of degree `n` to degree `opts->target` with
+ * `opts->patch_method` (`CAGD_PATCH_PERTURB`: seed 000 §14.3.2, `n -> n - 1`, no
+ * constraint; `CAGD_PATCH_L2`: L2-optimal over the triangle, any constraint), with a
+ * certified bound of `max ||T(u,v) - Q(u,v)||` over the triangle (Euclidean).
+ *
+ * Options used: `patch_method`, `constraint`, `target`, `measure`, and `method`, `r`, `p`,
+ * `l1`, `l2` for `CAGD_CONSTRAINT_BOUNDARY`.
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `opts` (in): the options. Borrowed for the call.
+ * - `patch_out` (out): on `CAGD_OK`, the reduced patch
+ *   (`(target + 1) * (target + 2) / 2 * dim` doubles), owned by the caller: release with
+ *   `cagd_tripatch_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report, owned by the caller: release with
+ *   `cagd_report_free`. Neither output is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch`, `opts`, `patch_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` is below
+ *   `sizeof(CagdReduceOptions)`; an invalid `patch_method`, `constraint` or `method`
+ *   code; `CAGD_PATCH_BY_CURVES` (tensor patches only); `CAGD_PATCH_PERTURB` with a
+ *   constraint; the two outputs are the same address; or a pointer is misaligned.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n`, or `target != n - 1` for
+ *   `CAGD_PATCH_PERTURB`.
+ * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: corner / boundary constraints with `target = 0`, or
+ *   a boundary method that does not interpolate the end points.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; the outputs NULL or writable.
+ */
+CagdStatus cagd_tripatch_reduce(const struct CagdTriPatch *patch,
+                                const struct CagdReduceOptions *opts,
+                                struct CagdTriPatch **patch_out,
+                                struct CagdReport **report_out);
+
+/**
+ * Reduces a tensor-product patch to degree `(opts->target, opts->target_v)` within
+ * `opts->tolerance` (certified, Euclidean): at levels `L = 0, 1, ..., 8` the patch is
+ * split into `2^L x 2^L` sub-patches by midpoint bisection and each is reduced as by
+ * `cagd_tensorpatch_reduce`; the first level at which every bound meets the tolerance is
+ * returned. Neighbouring pieces coincide along shared edges for `CAGD_PATCH_BY_CURVES`
+ * with an end-interpolating method and for `CAGD_CONSTRAINT_BOUNDARY`; otherwise each
+ * piece is within the tolerance but gaps up to twice the tolerance may appear.
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `opts` (in): the options (as `cagd_tensorpatch_reduce`, plus `tolerance`). Borrowed.
+ * - `pieces_out` (out): on `CAGD_OK`, the pieces in u-major order, owned by the caller:
+ *   release with `cagd_tensorpatchlist_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report (`cagd_report_bound`: the largest bound
+ *   of a piece, `<= tolerance`; `cagd_report_patch`: the piece count), owned by the
+ *   caller: release with `cagd_report_free`. Neither output is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch`, `opts`, `pieces_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `tolerance` not finite and `> 0`, and as
+ *   `cagd_tensorpatch_reduce`.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS`: as
+ *   `cagd_tensorpatch_reduce`.
+ * - `CAGD_ERR_NO_CONVERGENCE`: level 8 (65536 pieces) is not enough.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; the outputs NULL or writable.
+ */
+CagdStatus cagd_tensorpatch_reduce_to_tolerance(const struct CagdTensorPatch *patch,
+                                                const struct CagdReduceOptions *opts,
+                                                struct CagdTensorPatchList **pieces_out,
+                                                struct CagdReport **report_out);
+
+/**
+ * Reduces a triangular patch to degree `opts->target` within `opts->tolerance`
+ * (certified, Euclidean): at levels `L = 0, 1, ..., 8` the patch is split by the 4-way
+ * midpoint subdivision of seed 000 Theorem 14.3.1 into `4^L` pieces, each reduced as by
+ * `cagd_tripatch_reduce`; the first level at which every bound meets the tolerance is
+ * returned. With `CAGD_PATCH_L2` and `CAGD_CONSTRAINT_BOUNDARY` (and a boundary method
+ * with `r == p`) neighbouring pieces coincide along shared edges.
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `opts` (in): the options (as `cagd_tripatch_reduce`, plus `tolerance`). Borrowed.
+ * - `pieces_out` (out): on `CAGD_OK`, the pieces, owned by the caller: release with
+ *   `cagd_tripatchlist_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report, owned by the caller: release with
+ *   `cagd_report_free`. Neither output is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch`, `opts`, `pieces_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `tolerance` not finite and `> 0`, and as
+ *   `cagd_tripatch_reduce`.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS`: as
+ *   `cagd_tripatch_reduce`.
+ * - `CAGD_ERR_CONDITION_NOT_MET`: a boundary method with `r != p` (the middle
+ *   sub-triangle traverses shared edges backwards).
+ * - `CAGD_ERR_NO_CONVERGENCE`: level 8 (65536 pieces) is not enough.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; the outputs NULL or writable.
+ */
+CagdStatus cagd_tripatch_reduce_to_tolerance(const struct CagdTriPatch *patch,
+                                             const struct CagdReduceOptions *opts,
+                                             struct CagdTriPatchList **pieces_out,
+                                             struct CagdReport **report_out);
+
+/**
+ * Reads what a patch reduction did: the `CagdPatchMethod` code (-1 for
+ * `cagd_bsplinesurface_reduce`), the source and target degrees in u and v (for a triangle
+ * both are its degree), and the number of pieces (1 for `cagd_tensorpatch_reduce` /
+ * `cagd_tripatch_reduce`; the Bézier patches for `cagd_bsplinesurface_reduce`).
+ *
+ * Parameters:
+ * - `report` (in): the report.
+ * - `patch_method_out` (out): on `CAGD_OK`, the `CagdPatchMethod` code, or -1.
+ * - `degrees_out` (out): on `CAGD_OK`, 4 `size_t`: `from_u, from_v, to_u, to_v`.
+ * - `n_pieces_out` (out): on `CAGD_OK`, the number of pieces.
+ *
+ * Returns:
+ * - `CAGD_OK`: all outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the report is of a curve reduction.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `report` must be NULL or a live report handle; `patch_method_out`, `n_pieces_out` NULL
+ * or writable; `degrees_out` NULL or 4 writable `size_t`.
+ */
+CagdStatus cagd_report_patch(const struct CagdReport *report,
+                             int32_t *patch_method_out,
+                             size_t *degrees_out,
+                             size_t *n_pieces_out);
+
+/**
  * Reduces a curve of degree `n` to degree `opts->target` with `opts->method`, returning
  * the reduced curve and a report with the certified error bound (and, with
  * `opts->measure`, the measured error). Rational curves are reduced in homogeneous
@@ -698,7 +2039,9 @@ const char *cagd_last_error_message(void);
  * Returns:
  * - `CAGD_OK`: both outputs are written.
  * - `CAGD_ERR_NULL_POINTER`: `curve`, `opts`, `curve_out` or `report_out` is NULL.
- * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->method` or `opts->space` is not a valid code,
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` is below
+ *   `sizeof(CagdReduceOptions)` (options not made by `cagd_reduce_options_init`),
+ *   `opts->method` or `opts->space` is not a valid code,
  *   `l1` / `l2` of `CAGD_METHOD_PERTURB_G1` are not finite or not `> -1`,
  *   `curve_out` and `report_out` are the same address, or a pointer is misaligned.
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n`, or `target` below the method's minimum
@@ -710,7 +2053,8 @@ const char *cagd_last_error_message(void);
  *
  * # Safety
  * `curve` must be NULL or a live curve handle; `opts` NULL or a readable
- * `CagdReduceOptions`; `curve_out` and `report_out` NULL or writable.
+ * `CagdReduceOptions` of `opts->struct_size` bytes; `curve_out` and `report_out` NULL
+ * or writable.
  */
 CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
                              const struct CagdReduceOptions *opts,
@@ -743,8 +2087,9 @@ CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
  * - `CAGD_OK`: the reduced curves are in `out`.
  * - `CAGD_ERR_NULL_POINTER`: `points`, `opts` or `out_needed` is NULL, or `out` is NULL
  *   with `out_cap > 0`.
- * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a size formula overflows, an invalid
- *   `opts->method` code or `l1` / `l2`, or a pointer is misaligned.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a size formula overflows,
+ *   `opts->struct_size` below `sizeof(CagdReduceOptions)`, an invalid `opts->method` code
+ *   or `l1` / `l2`, or a pointer is misaligned.
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
@@ -769,10 +2114,176 @@ CagdStatus cagd_curve_reduce_batch(const double *points,
                                    size_t *out_needed);
 
 /**
- * Fills `opts` with the defaults: `method = CAGD_METHOD_CONSTRAINED_CHEBYSHEV`,
- * `target = 3`, `r = p = 0` (end points kept), `l1 = l2 = 0`, `measure = false`,
- * `space = CAGD_SPACE_EUCLIDEAN`. Call it before setting fields, so that fields added in
- * later versions get their defaults.
+ * Finds the true degree of a curve: the smallest `k` such that the curve is, up to
+ * `rel_tol`, a degree-`k` curve elevated to its degree `n` (every `Delta^j P_0`, `j > k`,
+ * has `||Delta^j P_0||_inf <= rel_tol * 2^j * max_i ||P_i||_inf`; rational curves are
+ * tested in homogeneous coordinates).
+ *
+ * Parameters:
+ * - `curve` (in): the curve.
+ * - `rel_tol` (in): the relative tolerance, finite and `> 0`; `CAGD_EXACT_DEGREE_REL_TOL`
+ *   (1e-12) is right for curves elevated in `double`.
+ * - `degree_out` (out): on `CAGD_OK`, the true degree `k <= n`.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*degree_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `curve` or `degree_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `rel_tol` is not finite and `> 0`, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live curve handle; `degree_out` NULL or writable.
+ */
+CagdStatus cagd_curve_exact_degree(const struct CagdCurve *curve,
+                                   double rel_tol,
+                                   size_t *degree_out);
+
+/**
+ * Reduces a curve that is (up to `CAGD_EXACT_DEGREE_REL_TOL`) an elevated lower-degree
+ * curve to that lower degree; any other curve is copied unchanged (bound 0). The reducing
+ * operator is whichever reproducing one amplifies rounding least (generalized inverse or
+ * stepwise Forrest, both exact on elevated curves); `cagd_report_method` tells which.
+ *
+ * Parameters:
+ * - `curve` (in): the curve, degree `n`.
+ * - `curve_out` (out): on `CAGD_OK`, the curve at its true degree, owned by the caller:
+ *   release with `cagd_curve_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report with the certified bound, owned by the
+ *   caller: release with `cagd_report_free`. Neither output is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `curve`, `curve_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: the two outputs are the same address, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational curve is not positive.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live curve handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_curve_reduce_exact(const struct CagdCurve *curve,
+                                   struct CagdCurve **curve_out,
+                                   struct CagdReport **report_out);
+
+/**
+ * Reduces a curve of degree `n >= 4` to degree `n - 1` by control-point perturbation
+ * keeping both end points and end tangent directions (G1), with the tangent scales
+ * `l1, l2` chosen to minimise the perturbation's own objective `sum ||eps_i||^2`
+ * (seed 000 §14.2.3, SPEC-reduce §2.3). The scales found are read with
+ * `cagd_report_method_params`.
+ *
+ * Parameters:
+ * - `curve` (in): the curve, degree `n >= 4`.
+ * - `measure` (in): also measure the error by dense sampling.
+ * - `curve_out` (out): on `CAGD_OK`, the reduced curve (degree `n - 1`), owned by the
+ *   caller: release with `cagd_curve_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report (method `CAGD_METHOD_PERTURB_G1`),
+ *   owned by the caller: release with `cagd_report_free`. Neither output is written on
+ *   failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `curve`, `curve_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: the two outputs are the same address, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `n < 4`.
+ * - `CAGD_ERR_CONDITION_NOT_MET`: an optimal scale gives `1 + l <= 0` (the tangent would
+ *   flip; eq. 14.2.12).
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational curve is not positive.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live curve handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_curve_reduce_g1_optimal(const struct CagdCurve *curve,
+                                        bool measure,
+                                        struct CagdCurve **curve_out,
+                                        struct CagdReport **report_out);
+
+/**
+ * Copies the reduction matrix of `opts->method` (with `r`, `p`, `l1`, `l2`) from degree
+ * `degree` to `opts->target`: computed once in exact rational arithmetic, rounded once,
+ * cached process-wide. Row-major `(target + 1) x (degree + 1)`: the reduced points are
+ * `Q_i = sum_j out[i * (degree + 1) + j] P_j`, per coordinate (homogeneous coordinates for
+ * a rational curve). For applying it yourself, e.g. on a GPU.
+ *
+ * Parameters:
+ * - `opts` (in): the options (`method`, `r`, `p`, `l1`, `l2`, `target`). Borrowed.
+ * - `degree` (in): the source degree `n`, `0..=64`.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
+ *   `(target + 1) * (degree + 1)` doubles hold the matrix. May be NULL only when
+ *   `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
+ *   `(target + 1) * (degree + 1)`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the matrix is in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `opts` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` below `sizeof(CagdReduceOptions)`,
+ *   an invalid method code or `l1` / `l2`, or a pointer is misaligned.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
+ * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target`, or `r`, `p` below -1.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the size; only `*out_needed` is
+ *   written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `opts` must be NULL or a readable `CagdReduceOptions` of `opts->struct_size` bytes;
+ * `out` NULL or `out_cap` writable doubles; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_reduce_operator(const struct CagdReduceOptions *opts,
+                                size_t degree,
+                                double *out,
+                                size_t out_cap,
+                                size_t *out_needed);
+
+/**
+ * Reads the parameters of the method a curve reduction used: for
+ * `cagd_curve_reduce_g1_optimal` the optimal tangent scales found, for
+ * `cagd_curve_reduce_exact` the operator chosen, otherwise the method asked for.
+ *
+ * Parameters:
+ * - `report` (in): the report.
+ * - `method_out` (out): on `CAGD_OK`, the `CagdReduceMethod` code.
+ * - `r_out` (out): on `CAGD_OK`, the derivative order kept at t = 0 (`-1` for methods
+ *   without `r`).
+ * - `p_out` (out): on `CAGD_OK`, the order kept at t = 1 (`-1` likewise).
+ * - `l1_out` (out): on `CAGD_OK`, the tangent scale at t = 0 of `CAGD_METHOD_PERTURB_G1`
+ *   (0 for other methods).
+ * - `l2_out` (out): on `CAGD_OK`, the scale at t = 1 (0 for other methods).
+ *
+ * Returns:
+ * - `CAGD_OK`: all outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the report is not of a curve reduction (one curve or to a
+ *   tolerance).
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `report` must be NULL or a live report handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_report_method_params(const struct CagdReport *report,
+                                     int32_t *method_out,
+                                     int32_t *r_out,
+                                     int32_t *p_out,
+                                     double *l1_out,
+                                     double *l2_out);
+
+/**
+ * Fills `opts` with the defaults: `struct_size = sizeof(CagdReduceOptions)`,
+ * `method = CAGD_METHOD_L2`, `target = 3`, `r = p = 0` (end points interpolated),
+ * `l1 = l2 = 0`, `measure = false`, `space = CAGD_SPACE_EUCLIDEAN`, `tolerance = 0`
+ * (must be set before a reduction to a tolerance), `continuity = 0`, `max_depth = 30`,
+ * `target_v = 3`, `patch_method = CAGD_PATCH_PERTURB`, `constraint = CAGD_CONSTRAINT_NONE`,
+ * `merge = CAGD_MERGE_EXACT`.
+ * Call it before setting fields, so that `struct_size` is right and fields added in later
+ * versions get their defaults.
  *
  * Parameters:
  * - `opts` (out): the struct to fill (caller-owned, e.g. on the stack).
@@ -789,11 +2300,107 @@ CagdStatus cagd_curve_reduce_batch(const double *points,
 CagdStatus cagd_reduce_options_init(struct CagdReduceOptions *opts);
 
 /**
+ * Reduces a Bézier curve of degree `n` (polynomial or rational) to a B-spline of degree
+ * `opts->target` whose certified distance to the curve is at most `opts->tolerance`, with
+ * `C^k` joins, `k = opts->continuity` (seed 000 §14.2.2 and Algorithm 14.2.1 generalised
+ * to every linear method; SPEC-reduce §2.2). The curve is split at midpoints until every
+ * piece's certified bound (of `opts->method`) meets the tolerance; the reduced pieces are
+ * merged into one spline on `[0, 1]` whose interior knots have multiplicity
+ * `target - k`; what the merge moved is added to the bound.
+ *
+ * Options used: `method` (with `r`, `p`, `l1`, `l2`), `target`, `tolerance`,
+ * `continuity`, `measure`, `max_depth`; `space` is ignored (the numbers are Euclidean).
+ *
+ * Parameters:
+ * - `curve` (in): the curve, degree `n > target`.
+ * - `opts` (in): the options (start from `cagd_reduce_options_init`, then set at least
+ *   `tolerance`). Borrowed for the call.
+ * - `spline_out` (out): on `CAGD_OK`, the reduced spline of degree `target` on `[0, 1]`
+ *   (NURBS when the curve is rational), owned by the caller: release with
+ *   `cagd_bspline_free`. Its size is known only afterwards (`cagd_bspline_n_points`).
+ * - `report_out` (out): on `CAGD_OK`, the report, owned by the caller: release with
+ *   `cagd_report_free`. `cagd_report_bound` gives the certified bound of the whole
+ *   (`<= tolerance`); `cagd_report_piecewise` the piece count and depth;
+ *   `cagd_report_pieces` the reduced pieces with their intervals and bounds. Neither
+ *   output is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `curve`, `opts`, `spline_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` is below
+ *   `sizeof(CagdReduceOptions)`, `opts->method` is not a valid code, `tolerance` is not
+ *   finite and `> 0` (the default 0 must be changed), `continuity >= target`, the method
+ *   does not keep derivatives up to order `continuity` at both ends (use
+ *   `CAGD_METHOD_L2` or `CAGD_METHOD_CONSTRAINED_CHEBYSHEV` with `r = p = continuity`),
+ *   `l1` / `l2` invalid, the two outputs are the same address, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n` or below the method's minimum.
+ * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target`, or `r`, `p` below -1.
+ * - `CAGD_ERR_NO_CONVERGENCE`: the tolerance was not reached within `max_depth`
+ *   subdivision levels or 2^20 pieces (the message gives the bound reached).
+ * - `CAGD_ERR_CONDITION_NOT_MET`: the pieces do not join within `tolerance / 128` (only
+ *   for a tolerance near the rounding level).
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational piece is not positive.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live curve handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; the outputs NULL or writable.
+ */
+CagdStatus cagd_curve_reduce_to_tolerance(const struct CagdCurve *curve,
+                                          const struct CagdReduceOptions *opts,
+                                          struct CagdBSpline **spline_out,
+                                          struct CagdReport **report_out);
+
+/**
+ * Reduces a polynomial Bézier curve of degree `n` to a `C^0` B-spline of degree
+ * `opts->target` within `opts->tolerance` by seed 000's Algorithm 14.2.1 as corrected in
+ * SPEC-reduce §2.2: one degree at a time by control-point perturbation (eq. 14.2.5),
+ * subdividing before each step so that every step's error stays below
+ * `tolerance / (n - target)`. The per-step maxima are read with
+ * `cagd_report_step_bounds` (their sum is the seed's certified total).
+ *
+ * Options used: `method` (must be `CAGD_METHOD_PERTURB`), `target`, `tolerance`,
+ * `continuity` (must be 0), `measure`, `max_depth` (total over all steps).
+ *
+ * Parameters:
+ * - `curve` (in): the curve, polynomial, degree `n > target`.
+ * - `opts` (in): the options. Borrowed for the call.
+ * - `spline_out` (out): on `CAGD_OK`, the reduced spline of degree `target` on `[0, 1]`,
+ *   owned by the caller: release with `cagd_bspline_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report, owned by the caller: release with
+ *   `cagd_report_free`. Neither output is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `curve`, `opts`, `spline_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` is below
+ *   `sizeof(CagdReduceOptions)`, an invalid `opts->method` code, `tolerance` not finite
+ *   and `> 0`, the two outputs are the same address, or a pointer is misaligned.
+ * - `CAGD_ERR_CONDITION_NOT_MET`: `method` is not `CAGD_METHOD_PERTURB`,
+ *   `continuity > 0`, or the curve is rational (the algorithm's preconditions; use
+ *   `cagd_curve_reduce_to_tolerance`).
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n` or `target == 0`.
+ * - `CAGD_ERR_NO_CONVERGENCE`: more than `max_depth` levels or 2^20 pieces would be
+ *   needed.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live curve handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; the outputs NULL or writable.
+ */
+CagdStatus cagd_curve_reduce_to_tolerance_stepwise(const struct CagdCurve *curve,
+                                                   const struct CagdReduceOptions *opts,
+                                                   struct CagdBSpline **spline_out,
+                                                   struct CagdReport **report_out);
+
+/**
  * Releases a report. NULL is accepted and ignored (freeing NULL twice is fine); a
  * non-NULL handle must be released exactly once and not used afterwards.
  *
  * Parameters:
- * - `report` (in, consumed): a `CagdReport **` output of `cagd_curve_reduce`, or NULL.
+ * - `report` (in, consumed): a `CagdReport **` output of `cagd_curve_reduce` or another
+ *   reduction, or NULL.
  *
  * Does not change `cagd_last_error_message()`.
  *
@@ -803,7 +2410,8 @@ CagdStatus cagd_reduce_options_init(struct CagdReduceOptions *opts);
 void cagd_report_free(struct CagdReport *report);
 
 /**
- * Reads the method and the degrees of a reduction.
+ * Reads the method and the degrees of a reduction. For a patch reduction: the curve
+ * method option (`opts->method`) and the degrees in u (`cagd_report_patch` gives all).
  *
  * Parameters:
  * - `report` (in): the report.
@@ -881,7 +2489,9 @@ CagdStatus cagd_report_max_error(const struct CagdReport *report, double *error_
  * Returns:
  * - `CAGD_OK`: both outputs are written.
  * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
- * - `CAGD_ERR_NOT_AVAILABLE`: no bound could be formed for this reduction.
+ * - `CAGD_ERR_NOT_AVAILABLE`: no bound could be formed for this reduction, or the report
+ *   is of a reduction to a tolerance, of a B-spline or of a patch (whose numbers are
+ *   always Euclidean).
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
@@ -891,6 +2501,91 @@ CagdStatus cagd_report_max_error(const struct CagdReport *report, double *error_
 CagdStatus cagd_report_space(const struct CagdReport *report,
                              int32_t *space_out,
                              double *homogeneous_bound_out);
+
+/**
+ * Reads the shape of a piecewise reduction (to a tolerance): the number of pieces, the
+ * deepest midpoint-subdivision level used (0: the curve was not split), the continuity
+ * order `k` of the joins, and the largest certified bound of a single piece (the bound
+ * of the whole, `cagd_report_bound`, adds what merging into the spline moved).
+ *
+ * Parameters:
+ * - `report` (in): the report.
+ * - `n_pieces_out` (out): on `CAGD_OK`, the number of pieces (`>= 1`).
+ * - `depth_out` (out): on `CAGD_OK`, the deepest subdivision level.
+ * - `continuity_out` (out): on `CAGD_OK`, the order `k` of the `C^k` joins.
+ * - `pieces_bound_out` (out): on `CAGD_OK`, the largest bound of a piece.
+ *
+ * Returns:
+ * - `CAGD_OK`: all outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the report is not of a curve reduction to a tolerance.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `report` must be NULL or a live report handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_report_piecewise(const struct CagdReport *report,
+                                 size_t *n_pieces_out,
+                                 size_t *depth_out,
+                                 size_t *continuity_out,
+                                 double *pieces_bound_out);
+
+/**
+ * Copies the reduced pieces of a piecewise reduction, before they were merged into the
+ * spline: piece `i` approximates the source curve on its interval
+ * (`cagd_curvelist_interval`, in `[0, 1]`) within its certified bound
+ * (`cagd_curvelist_bound`).
+ *
+ * Parameters:
+ * - `report` (in): the report.
+ * - `list_out` (out): on `CAGD_OK`, a new list owned by the caller: release with
+ *   `cagd_curvelist_free`. Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*list_out` holds the pieces.
+ * - `CAGD_ERR_NULL_POINTER`: `report` or `list_out` is NULL.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the report is not of a curve reduction to a tolerance.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `report` must be NULL or a live report handle; `list_out` NULL or writable.
+ */
+CagdStatus cagd_report_pieces(const struct CagdReport *report, struct CagdCurveList **list_out);
+
+/**
+ * Copies the per-step bounds of `cagd_curve_reduce_to_tolerance_stepwise`: the largest
+ * bound of each one-degree step, `n -> n-1` first (`n - target` doubles; their sum is the
+ * seed's certified total). Empty (`*out_needed = 0`) for
+ * `cagd_curve_reduce_to_tolerance`. Call with `out_cap = 0` (and `out` NULL) to ask the
+ * size.
+ *
+ * Parameters:
+ * - `report` (in): the report.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `*out_needed`
+ *   doubles hold the bounds. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, the count.
+ *
+ * Returns:
+ * - `CAGD_OK`: the bounds are in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `report` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the count; only `*out_needed` is
+ *   written.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the report is not of a curve reduction to a tolerance.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `report` must be NULL or a live report handle; `out` NULL or `out_cap` writable
+ * doubles; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_report_step_bounds(const struct CagdReport *report,
+                                   double *out,
+                                   size_t out_cap,
+                                   size_t *out_needed);
 
 /**
  * The name of a status code: `"CAGD_OK"`, `"CAGD_ERR_NULL_POINTER"`, ….
@@ -1008,6 +2703,124 @@ CagdStatus cagd_tensorpatch_points(const struct CagdTensorPatch *patch,
                                    size_t *out_needed);
 
 /**
+ * Evaluates a tensor-product patch at `(u, v)` (de Casteljau along v in every row, then
+ * along u). `(u, v)` in `[0, 1]^2` is the patch; other finite values extrapolate.
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `u` (in): the first parameter (along `i`), finite.
+ * - `v` (in): the second parameter (along `j`), finite.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `dim` doubles hold
+ *   the point. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, `dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the point is in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `u` or `v` is NaN or infinite, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; `out` NULL or `out_cap` writable doubles;
+ * `out_needed` NULL or writable.
+ */
+CagdStatus cagd_tensorpatch_eval(const struct CagdTensorPatch *patch,
+                                 double u,
+                                 double v,
+                                 double *out,
+                                 size_t out_cap,
+                                 size_t *out_needed);
+
+/**
+ * Elevates a tensor-product patch from degree `(deg_u, deg_v)` to
+ * `(deg_u + r_u, deg_v + r_v)` (curve elevation of every column, then of every row). The
+ * surface is unchanged.
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `r_u` (in): degrees to add in u (0 keeps it).
+ * - `r_v` (in): degrees to add in v (0 keeps it).
+ * - `patch_out` (out): on `CAGD_OK`, the elevated patch
+ *   (`(deg_u + r_u + 1) * (deg_v + r_v + 1) * dim` doubles, read back with
+ *   `cagd_tensorpatch_points`), owned by the caller: release with
+ *   `cagd_tensorpatch_free`. Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*patch_out` holds the elevated patch.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `patch_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `deg_u + r_u > 64` or `deg_v + r_v > 64`.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; `patch_out` NULL or writable.
+ */
+CagdStatus cagd_tensorpatch_elevate(const struct CagdTensorPatch *patch,
+                                    size_t r_u,
+                                    size_t r_v,
+                                    struct CagdTensorPatch **patch_out);
+
+/**
+ * Splits a tensor-product patch at `u = s` into the pieces on `[0, s] x [0, 1]` and
+ * `[s, 1] x [0, 1]`, each reparametrised to `[0, 1]^2` (same degrees; de Casteljau on
+ * every column).
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `s` (in): the split parameter, finite, in `[0, 1]`.
+ * - `first_out` (out): on `CAGD_OK`, the piece on `[0, s]` in u.
+ * - `second_out` (out): on `CAGD_OK`, the piece on `[s, 1]` in u. Both are new handles
+ *   owned by the caller (release each with `cagd_tensorpatch_free`); neither is written
+ *   on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch`, `first_out` or `second_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `s` is NaN, infinite or outside `[0, 1]`, the two
+ *   outputs are the same address, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_tensorpatch_subdivide_u(const struct CagdTensorPatch *patch,
+                                        double s,
+                                        struct CagdTensorPatch **first_out,
+                                        struct CagdTensorPatch **second_out);
+
+/**
+ * Splits a tensor-product patch at `v = s` into the pieces on `[0, 1] x [0, s]` and
+ * `[0, 1] x [s, 1]`, each reparametrised to `[0, 1]^2` (same degrees; de Casteljau on
+ * every row).
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `s` (in): the split parameter, finite, in `[0, 1]`.
+ * - `first_out` (out): on `CAGD_OK`, the piece on `[0, s]` in v.
+ * - `second_out` (out): on `CAGD_OK`, the piece on `[s, 1]` in v. Both are new handles
+ *   owned by the caller (release each with `cagd_tensorpatch_free`); neither is written
+ *   on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch`, `first_out` or `second_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `s` is NaN, infinite or outside `[0, 1]`, the two
+ *   outputs are the same address, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_tensorpatch_subdivide_v(const struct CagdTensorPatch *patch,
+                                        double s,
+                                        struct CagdTensorPatch **first_out,
+                                        struct CagdTensorPatch **second_out);
+
+/**
  * Creates a triangular Bézier patch of degree `degree`.
  *
  * Parameters:
@@ -1103,6 +2916,94 @@ CagdStatus cagd_tripatch_points(const struct CagdTriPatch *patch,
                                 double *out,
                                 size_t out_cap,
                                 size_t *out_needed);
+
+/**
+ * Evaluates a triangular patch at `(u, v)` (triangular de Casteljau at the barycentric
+ * point `(u, v, 1 - u - v)`): `T(u, v) = sum_{i+j<=n} n!/(i! j! k!) u^i v^j w^k T_ij`,
+ * `w = 1 - u - v`, `k = n - i - j`, so `T(0, 0) = T_00`, `T(1, 0) = T_n0`,
+ * `T(0, 1) = T_0n`. `u, v >= 0`, `u + v <= 1` is the patch; other finite values
+ * extrapolate.
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `u` (in): the first parameter (weight of index `i`), finite.
+ * - `v` (in): the second parameter (weight of index `j`), finite.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `dim` doubles hold
+ *   the point. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, `dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the point is in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `u` or `v` is NaN or infinite, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; `out` NULL or `out_cap` writable doubles;
+ * `out_needed` NULL or writable.
+ */
+CagdStatus cagd_tripatch_eval(const struct CagdTriPatch *patch,
+                              double u,
+                              double v,
+                              double *out,
+                              size_t out_cap,
+                              size_t *out_needed);
+
+/**
+ * Elevates a triangular patch from degree `n` to `n + r`. The surface is unchanged.
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `r` (in): degrees to add (0 gives a copy).
+ * - `patch_out` (out): on `CAGD_OK`, the elevated patch
+ *   (`(n + r + 1) * (n + r + 2) / 2 * dim` doubles, read back with
+ *   `cagd_tripatch_points`), owned by the caller: release with `cagd_tripatch_free`. Not
+ *   written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*patch_out` holds the elevated patch.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `patch_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n + r > 64`.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; `patch_out` NULL or writable.
+ */
+CagdStatus cagd_tripatch_elevate(const struct CagdTriPatch *patch,
+                                 size_t r,
+                                 struct CagdTriPatch **patch_out);
+
+/**
+ * Splits a triangular patch into the four midpoint sub-triangles (seed 000 Theorem
+ * 14.3.1, parametrised as SPEC-reduce §5 fixes, local axes parallel to the original):
+ * - `pieces_out[0]`: corner at `(0, 0)`: `(u, v) = (u'/2, v'/2)`;
+ * - `pieces_out[1]`: corner at `(1/2, 0)`: `(u, v) = (1/2 + u'/2, v'/2)`;
+ * - `pieces_out[2]`: corner at `(0, 1/2)`: `(u, v) = (u'/2, 1/2 + v'/2)`;
+ * - `pieces_out[3]`: the middle one: `(u, v) = (1/2 - u'/2, 1/2 - v'/2)`.
+ *
+ * Parameters:
+ * - `patch` (in): the patch, degree `n`.
+ * - `pieces_out` (out): an array of 4 `CagdTriPatch *`; on `CAGD_OK` each holds a new
+ *   degree-`n` patch owned by the caller (release each with `cagd_tripatch_free`).
+ *   Nothing is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: the four pieces are written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `pieces_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; `pieces_out` NULL or an array of 4
+ * writable `CagdTriPatch *`.
+ */
+CagdStatus cagd_tripatch_subdivide_midpoint(const struct CagdTriPatch *patch,
+                                            struct CagdTriPatch **pieces_out);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -9,8 +9,8 @@ use crate::boundary::{
     slice_out,
 };
 use crate::curve::CagdCurve;
-use crate::reduce_options::CagdReduceOptions;
-use crate::report::CagdReport;
+use crate::reduce_options::{CagdReduceOptions, read_options};
+use crate::report::{CagdReport, ReportKind};
 use crate::status::CagdStatus;
 
 /// Reduces a curve of degree `n` to degree `opts->target` with `opts->method`, returning
@@ -32,7 +32,9 @@ use crate::status::CagdStatus;
 /// Returns:
 /// - `CAGD_OK`: both outputs are written.
 /// - `CAGD_ERR_NULL_POINTER`: `curve`, `opts`, `curve_out` or `report_out` is NULL.
-/// - `CAGD_ERR_INVALID_ARGUMENT`: `opts->method` or `opts->space` is not a valid code,
+/// - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` is below
+///   `sizeof(CagdReduceOptions)` (options not made by `cagd_reduce_options_init`),
+///   `opts->method` or `opts->space` is not a valid code,
 ///   `l1` / `l2` of `CAGD_METHOD_PERTURB_G1` are not finite or not `> -1`,
 ///   `curve_out` and `report_out` are the same address, or a pointer is misaligned.
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n`, or `target` below the method's minimum
@@ -44,7 +46,8 @@ use crate::status::CagdStatus;
 ///
 /// # Safety
 /// `curve` must be NULL or a live curve handle; `opts` NULL or a readable
-/// `CagdReduceOptions`; `curve_out` and `report_out` NULL or writable.
+/// `CagdReduceOptions` of `opts->struct_size` bytes; `curve_out` and `report_out` NULL
+/// or writable.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cagd_curve_reduce(
     curve: *const CagdCurve,
@@ -56,7 +59,7 @@ pub unsafe extern "C" fn cagd_curve_reduce(
         // SAFETY: the caller's contract (see # Safety).
         let c = unsafe { handle_ref(curve, "curve") }?;
         // SAFETY: as above.
-        let o = unsafe { handle_ref(opts, "opts") }?;
+        let o = unsafe { read_options(opts) }?;
         nonnull(curve_out, "curve_out")?;
         nonnull(report_out, "report_out")?;
         if curve_out.addr() == report_out.addr() {
@@ -74,7 +77,7 @@ pub unsafe extern "C" fn cagd_curve_reduce(
         let red = reduce_with(&c.0, &o.rust_options()?)?;
         *c_out = into_handle(CagdCurve(red.curve));
         *r_out = into_handle(CagdReport {
-            report: red.report,
+            kind: ReportKind::Single(red.report),
             method: o.method,
         });
         Ok(())
@@ -106,8 +109,9 @@ pub unsafe extern "C" fn cagd_curve_reduce(
 /// - `CAGD_OK`: the reduced curves are in `out`.
 /// - `CAGD_ERR_NULL_POINTER`: `points`, `opts` or `out_needed` is NULL, or `out` is NULL
 ///   with `out_cap > 0`.
-/// - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a size formula overflows, an invalid
-///   `opts->method` code or `l1` / `l2`, or a pointer is misaligned.
+/// - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a size formula overflows,
+///   `opts->struct_size` below `sizeof(CagdReduceOptions)`, an invalid `opts->method` code
+///   or `l1` / `l2`, or a pointer is misaligned.
 /// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
 /// - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
@@ -135,7 +139,7 @@ pub unsafe extern "C" fn cagd_curve_reduce_batch(
     boundary(|| {
         nonnull(points, "points")?;
         // SAFETY: the caller's contract (see # Safety).
-        let o = unsafe { handle_ref(opts, "opts") }?;
+        let o = unsafe { read_options(opts) }?;
         // SAFETY: as above.
         let dst = unsafe { slice_out(out, out_cap, out_needed, &OUT) }?;
         cagd_core::check_degree(degree)?;

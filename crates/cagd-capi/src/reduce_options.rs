@@ -3,7 +3,7 @@
 
 use cagd_reduce::{ErrorSpace, Method, ReduceOptions};
 
-use crate::boundary::{CResult, Failure, boundary, out_ref};
+use crate::boundary::{CResult, Failure, boundary, nonnull, out_ref};
 use crate::status::CagdStatus;
 
 /// The degree-reduction methods (cagd-reduce `Method`; seed 000 chapter 14 and the
@@ -64,13 +64,93 @@ pub enum CagdErrorSpace {
     SPACE_HOMOGENEOUS = 1,
 }
 
+/// How a patch is reduced (`CagdReduceOptions.patch_method`, an `int32_t`).
+///
+/// cbindgen:rename-all=prefix:CAGD_
+#[repr(i32)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[allow(
+    non_camel_case_types,
+    reason = "C names: the variants become CAGD_PATCH_*"
+)]
+pub enum CagdPatchMethod {
+    /// Control-point perturbation, one degree in each direction (seed 000 §14.3.1 for
+    /// tensor patches, `(m, n) -> (m - 1, n - 1)`, with any `CagdPatchConstraint`;
+    /// §14.3.2 for triangles, `n -> n - 1`, constraint `CAGD_CONSTRAINT_NONE` only).
+    /// Minimises the sum of squared control-point perturbations.
+    PATCH_PERTURB = 0,
+    /// Tensor patches only: every column by `method` (`m -> target`), then every row
+    /// (`n -> target_v`), with the curve options `method`, `r`, `p`, `l1`, `l2`;
+    /// constraint `CAGD_CONSTRAINT_NONE` only. With `CAGD_METHOD_L2` and `r = p = -1` it is
+    /// the L2-best reduction over the unit square (the L2 projection is separable).
+    PATCH_BY_CURVES = 1,
+    /// Triangular patches only: L2-optimal reduction `n -> target` over the triangle,
+    /// under the constraint.
+    PATCH_L2 = 2,
+}
+
+/// Extra conditions on a patch reduction (`CagdReduceOptions.constraint`, an `int32_t`).
+///
+/// cbindgen:rename-all=prefix:CAGD_
+#[repr(i32)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[allow(
+    non_camel_case_types,
+    reason = "C names: the variants become CAGD_CONSTRAINT_*"
+)]
+pub enum CagdPatchConstraint {
+    /// No condition.
+    CONSTRAINT_NONE = 0,
+    /// The corner points are kept (target degrees `>= 1`; tensor `>= 2` for perturbation).
+    CONSTRAINT_CORNERS = 1,
+    /// The boundary curves of the result are the reductions of the input's boundary curves
+    /// by the curve method `method` (with `r`, `p`, `l1`, `l2`), which must interpolate
+    /// both end points: patches sharing an edge still share it after reduction (C0).
+    CONSTRAINT_BOUNDARY = 2,
+}
+
+/// How the reduced segments of a uniform B-spline are joined
+/// (`CagdReduceOptions.merge`, an `int32_t`; seed 001 §4).
+///
+/// cbindgen:rename-all=prefix:CAGD_
+#[repr(i32)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[allow(
+    non_camel_case_types,
+    reason = "C names: the variants become CAGD_MERGE_*"
+)]
+pub enum CagdMerge {
+    /// §4.1: the reduced segments become one clamped spline with interior knots of
+    /// multiplicity `target - k`, `k` the end order the method keeps; exact (the spline is
+    /// the reduced segments). Needs a method that interpolates the segment ends.
+    MERGE_EXACT = 0,
+    /// §4.2: local uniform B-spline points of each segment, overlapping points averaged:
+    /// keeps uniform simple knots (`C^(target-1)`) at the price of an extra change, which
+    /// the certified bound includes.
+    MERGE_LOSSY = 1,
+}
+
 /// How to reduce: a plain struct the caller owns. Fill it with
 /// `cagd_reduce_options_init`, then change the fields you need.
+///
+/// Versioning rule: the first field, `struct_size`, is set by `cagd_reduce_options_init`
+/// to `sizeof(CagdReduceOptions)` of the header the caller was compiled with. Every
+/// function taking options reads it first and fails with `CAGD_ERR_INVALID_ARGUMENT` when
+/// it is smaller than the size of this first version of the struct (so a struct that was
+/// not initialised is most likely caught). Later versions only append fields; a library
+/// reads at most the fields it knows, and the fields a smaller (older) struct lacks take
+/// their defaults, so a program compiled against an older header keeps working. Never set
+/// `struct_size` by hand to anything but `sizeof(CagdReduceOptions)`.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CagdReduceOptions {
+    /// `sizeof(CagdReduceOptions)` in bytes, set by `cagd_reduce_options_init` (see the
+    /// versioning rule above).
+    pub struct_size: usize,
     /// A `CagdReduceMethod` value (an `int32_t`, so that any value a caller stores is
-    /// checked rather than undefined). Default `CAGD_METHOD_CONSTRAINED_CHEBYSHEV`.
+    /// checked rather than undefined). Default `CAGD_METHOD_L2` (with `r = p = 0`: the end
+    /// points are interpolated; among the end-interpolating methods it had the smallest
+    /// errors in our measurements).
     pub method: i32,
     /// The target degree `m`, below the source degree. Default 3.
     pub target: usize,
@@ -84,18 +164,47 @@ pub struct CagdReduceOptions {
     pub l1: f64,
     /// Tangent scale at t = 1 for `CAGD_METHOD_PERTURB_G1` (finite, `> -1`). Default 0.
     pub l2: f64,
-    /// Also measure the error by dense sampling (costs about 8000 evaluations). Default
-    /// false.
+    /// Also measure the error by dense sampling (costs about 8000 evaluations per piece).
+    /// Default false.
     pub measure: bool,
     /// A `CagdErrorSpace` value: the space of the report's numbers. Default
     /// `CAGD_SPACE_EUCLIDEAN`.
     pub space: i32,
+    /// Reduction to a tolerance only: the tolerance `delta` (model units, Euclidean) the
+    /// certified error bound must meet; finite and `> 0`. Default 0, which is rejected
+    /// (`CAGD_ERR_INVALID_ARGUMENT`): a tolerance depends on the model's size, so the
+    /// caller must choose it.
+    pub tolerance: f64,
+    /// Reduction to a tolerance only: the order `k` of parametric continuity `C^k` at the
+    /// joins of the pieces (interior knots of multiplicity `target - k`); needs
+    /// `k < target` and a method that keeps derivatives up to order `k` at both ends
+    /// (e.g. `CAGD_METHOD_L2` with `r = p = k`). Default 0 (`C^0`).
+    pub continuity: usize,
+    /// Reduction of a curve to a tolerance only: the deepest midpoint-subdivision level
+    /// allowed (pieces of length `2^-max_depth` of the parameter range). Default 30.
+    /// (Patches to a tolerance stop at level 8, `4^8` pieces.)
+    pub max_depth: usize,
+    /// Tensor-product patches only: the target degree in v (`target` is the one in u).
+    /// Default 3.
+    pub target_v: usize,
+    /// Patches only: a `CagdPatchMethod` value. Default `CAGD_PATCH_PERTURB`.
+    pub patch_method: i32,
+    /// Patches only: a `CagdPatchConstraint` value. Default `CAGD_CONSTRAINT_NONE`.
+    pub constraint: i32,
+    /// `cagd_bspline_reduce_uniform` only: a `CagdMerge` value. Default
+    /// `CAGD_MERGE_EXACT`.
+    pub merge: i32,
 }
+
+/// The size of the first published version of `CagdReduceOptions` (this one): the
+/// smallest `struct_size` accepted.
+pub(crate) const OPTIONS_MIN_SIZE: usize = size_of::<CagdReduceOptions>();
 
 impl Default for CagdReduceOptions {
     fn default() -> Self {
         Self {
-            method: CagdReduceMethod::METHOD_CONSTRAINED_CHEBYSHEV as i32,
+            struct_size: size_of::<CagdReduceOptions>(),
+            method: CagdReduceMethod::METHOD_L2 as i32,
             target: 3,
             r: 0,
             p: 0,
@@ -103,8 +212,59 @@ impl Default for CagdReduceOptions {
             l2: 0.0,
             measure: false,
             space: CagdErrorSpace::SPACE_EUCLIDEAN as i32,
+            tolerance: 0.0,
+            continuity: 0,
+            max_depth: 30,
+            target_v: 3,
+            patch_method: CagdPatchMethod::PATCH_PERTURB as i32,
+            constraint: CagdPatchConstraint::CONSTRAINT_NONE as i32,
+            merge: CagdMerge::MERGE_EXACT as i32,
         }
     }
+}
+
+/// Reads the caller's options under the versioning rule of `CagdReduceOptions`: NULL →
+/// `CAGD_ERR_NULL_POINTER`; `struct_size` below the first version's size →
+/// `CAGD_ERR_INVALID_ARGUMENT`; the fields beyond `struct_size` take their defaults.
+///
+/// # Safety
+/// `opts` must be NULL or point to at least `opts->struct_size` readable bytes (at least
+/// a `size_t`) laid out as `CagdReduceOptions`.
+pub(crate) unsafe fn read_options(opts: *const CagdReduceOptions) -> CResult<CagdReduceOptions> {
+    nonnull(opts, "opts")?;
+    if !opts.is_aligned() {
+        return Err(Failure::invalid("argument `opts` is misaligned"));
+    }
+    // SAFETY: non-NULL and aligned; the first field is a size_t by the caller's contract.
+    let size = unsafe { opts.cast::<usize>().read() };
+    if size < OPTIONS_MIN_SIZE {
+        return Err(Failure::invalid(format!(
+            "opts->struct_size = {size} is below sizeof(CagdReduceOptions) = \
+             {OPTIONS_MIN_SIZE}: initialise the options with cagd_reduce_options_init"
+        )));
+    }
+    // Copy the known prefix over the defaults; today the whole struct is known, so this
+    // copies all of it. When fields are appended, a smaller (older) struct keeps the
+    // defaults of the fields it lacks. The copy goes through raw bytes, and the one field
+    // with invalid bit patterns (`bool measure`: a C caller may store any byte there) is
+    // normalised before the struct is used, so no invalid `bool` ever exists.
+    let mut out = std::mem::MaybeUninit::new(CagdReduceOptions::default());
+    let n = size.min(size_of::<CagdReduceOptions>());
+    let base = out.as_mut_ptr().cast::<u8>();
+    // SAFETY: `n` readable bytes at `opts` by the caller's contract; `out` has at least
+    // `n` bytes; the regions do not overlap (`out` is a local).
+    unsafe { std::ptr::copy_nonoverlapping(opts.cast::<u8>(), base, n) };
+    let at = std::mem::offset_of!(CagdReduceOptions, measure);
+    // SAFETY: `at` is inside `out`; the byte is initialised (default, then maybe copied).
+    unsafe {
+        let b = base.add(at);
+        b.write(u8::from(b.read() != 0));
+    }
+    // SAFETY: every field now holds a valid value: plain numbers (any bit pattern is
+    // valid) and a normalised `bool`; padding needs no particular value.
+    let mut out = unsafe { out.assume_init() };
+    out.struct_size = size;
+    Ok(out)
 }
 
 impl CagdReduceOptions {
@@ -135,32 +295,41 @@ impl CagdReduceOptions {
         })
     }
 
+    /// The error space these options name.
+    ///
+    /// # Errors
+    /// `CAGD_ERR_INVALID_ARGUMENT` for a `space` code that is not a `CagdErrorSpace`.
+    pub(crate) fn space(&self) -> CResult<ErrorSpace> {
+        match self.space {
+            0 => Ok(ErrorSpace::Euclidean),
+            1 => Ok(ErrorSpace::Homogeneous),
+            other => Err(Failure::invalid(format!(
+                "opts->space = {other} is not a CagdErrorSpace (0 or 1)"
+            ))),
+        }
+    }
+
     /// The cagd-reduce options these options describe.
     ///
     /// # Errors
     /// `CAGD_ERR_INVALID_ARGUMENT` for an unknown `method` or `space` code.
     pub(crate) fn rust_options(&self) -> CResult<ReduceOptions> {
-        let space = match self.space {
-            0 => ErrorSpace::Euclidean,
-            1 => ErrorSpace::Homogeneous,
-            other => {
-                return Err(Failure::invalid(format!(
-                    "opts->space = {other} is not a CagdErrorSpace (0 or 1)"
-                )));
-            }
-        };
         Ok(ReduceOptions {
             measure: self.measure,
-            space,
+            space: self.space()?,
             ..ReduceOptions::new(self.method()?, self.target)
         })
     }
 }
 
-/// Fills `opts` with the defaults: `method = CAGD_METHOD_CONSTRAINED_CHEBYSHEV`,
-/// `target = 3`, `r = p = 0` (end points kept), `l1 = l2 = 0`, `measure = false`,
-/// `space = CAGD_SPACE_EUCLIDEAN`. Call it before setting fields, so that fields added in
-/// later versions get their defaults.
+/// Fills `opts` with the defaults: `struct_size = sizeof(CagdReduceOptions)`,
+/// `method = CAGD_METHOD_L2`, `target = 3`, `r = p = 0` (end points interpolated),
+/// `l1 = l2 = 0`, `measure = false`, `space = CAGD_SPACE_EUCLIDEAN`, `tolerance = 0`
+/// (must be set before a reduction to a tolerance), `continuity = 0`, `max_depth = 30`,
+/// `target_v = 3`, `patch_method = CAGD_PATCH_PERTURB`, `constraint = CAGD_CONSTRAINT_NONE`,
+/// `merge = CAGD_MERGE_EXACT`.
+/// Call it before setting fields, so that `struct_size` is right and fields added in later
+/// versions get their defaults.
 ///
 /// Parameters:
 /// - `opts` (out): the struct to fill (caller-owned, e.g. on the stack).
@@ -217,6 +386,11 @@ mod tests {
         }
         assert_eq!(CagdErrorSpace::SPACE_EUCLIDEAN as i32, 0);
         assert_eq!(CagdErrorSpace::SPACE_HOMOGENEOUS as i32, 1);
+        assert_eq!(
+            CagdReduceOptions::default().method().unwrap().name(),
+            "l2",
+            "the default method"
+        );
         for bad in [-1, 12, i32::MAX] {
             let opts = CagdReduceOptions {
                 method: bad,
@@ -227,5 +401,42 @@ mod tests {
                 CagdStatus::ERR_INVALID_ARGUMENT
             );
         }
+    }
+}
+
+#[cfg(test)]
+mod size_tests {
+    use super::*;
+
+    #[test]
+    fn struct_size_rule() {
+        let mut o = CagdReduceOptions::default();
+        assert_eq!(o.struct_size, size_of::<CagdReduceOptions>());
+        o.target = 7;
+        // SAFETY: a valid, initialised struct.
+        let r = unsafe { read_options(&o) }.unwrap();
+        assert_eq!(r, o);
+        o.struct_size = OPTIONS_MIN_SIZE - 1;
+        // SAFETY: as above.
+        let e = unsafe { read_options(&o) }.unwrap_err();
+        assert_eq!(e.status, CagdStatus::ERR_INVALID_ARGUMENT);
+        o.struct_size = 0;
+        // SAFETY: as above.
+        assert!(unsafe { read_options(&o) }.is_err());
+        // A C caller may store any byte in the bool: read as true, never UB.
+        let mut raw = std::mem::MaybeUninit::new(CagdReduceOptions::default());
+        // SAFETY: writes the byte of `measure` through a byte pointer, as C could (a
+        // MaybeUninit may hold any bytes).
+        unsafe {
+            raw.as_mut_ptr()
+                .cast::<u8>()
+                .add(std::mem::offset_of!(CagdReduceOptions, measure))
+                .write(7);
+        }
+        // SAFETY: memory laid out as CagdReduceOptions; read_options reads it as bytes.
+        assert!(unsafe { read_options(raw.as_ptr()) }.unwrap().measure);
+        // SAFETY: NULL is allowed by the contract.
+        let e = unsafe { read_options(std::ptr::null()) }.unwrap_err();
+        assert_eq!(e.status, CagdStatus::ERR_NULL_POINTER);
     }
 }

@@ -1,6 +1,7 @@
-//! `CagdReport`: what a reduction did and how far the result is from the input.
+//! `CagdReport`: what a reduction did and how far the result is from the input. The
+//! accessors that only piecewise reductions answer are in `report_piecewise.rs`.
 
-use cagd_reduce::{ErrorSpace, Report};
+use cagd_reduce::{ErrorSpace, PatchReport, PiecewiseReport, ReducedPiece, Report};
 
 use crate::boundary::{
     CResult, Failure, boundary, boundary_void, free_handle, handle_ref, out_ref,
@@ -9,19 +10,95 @@ use crate::reduce_options::CagdErrorSpace;
 use crate::status::CagdStatus;
 
 /// Opaque handle to the report of a reduction: the method, the degrees, the certified
-/// error bound, and (on request) the measured error. Immutable; release with
-/// `cagd_report_free`.
+/// error bound, and (on request) the measured error; for a piecewise reduction (to a
+/// tolerance) also the pieces. Immutable; release with `cagd_report_free`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CagdReport {
-    pub(crate) report: Report,
+    pub(crate) kind: ReportKind,
     /// The `CagdReduceMethod` code that was asked for.
     pub(crate) method: i32,
 }
 
+/// The two kinds of reduction reports.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum ReportKind {
+    /// One curve reduced to one curve.
+    Single(Report),
+    /// A curve reduced to a tolerance: pieces merged into a spline.
+    Piecewise {
+        /// The report of the whole.
+        report: PiecewiseReport,
+        /// The reduced pieces, in parameter order.
+        pieces: Vec<ReducedPiece>,
+    },
+    /// A B-spline reduced to a B-spline.
+    Spline(SplineReport),
+    /// A patch reduced (to a patch, or to a tolerance: pieces).
+    Patch {
+        /// The report (for pieces: the largest bound and measured error of a piece).
+        report: PatchReport,
+        /// The `CagdPatchMethod` code that was asked for.
+        patch_method: i32,
+        /// Number of pieces (1 for a single reduction).
+        pieces: usize,
+    },
+}
+
+/// What a B-spline reduction did.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct SplineReport {
+    /// Source degree.
+    pub(crate) degree_from: usize,
+    /// Target degree.
+    pub(crate) degree_to: usize,
+    /// Certified bound of the whole (Euclidean, model space).
+    pub(crate) error_bound: f64,
+    /// Sampled error, on request.
+    pub(crate) max_error: Option<f64>,
+    /// Largest certified bound of a reduced Bézier segment (before merging / knot removal).
+    pub(crate) segment_bound: f64,
+    /// Number of reduced Bézier segments.
+    pub(crate) pieces: usize,
+    /// Non-empty knot spans of the input.
+    pub(crate) spans_in: usize,
+    /// Non-empty knot spans of the result.
+    pub(crate) spans_out: usize,
+}
+
 impl CagdReport {
-    /// The report behind the handle (for Rust callers of this crate).
-    pub fn as_report(&self) -> &Report {
-        &self.report
+    /// The report of a single reduction (for Rust callers of this crate); `None` for a
+    /// piecewise one.
+    pub fn as_report(&self) -> Option<&Report> {
+        match &self.kind {
+            ReportKind::Single(r) => Some(r),
+            ReportKind::Piecewise { .. } | ReportKind::Patch { .. } | ReportKind::Spline(_) => None,
+        }
+    }
+
+    /// The report of a piecewise reduction (for Rust callers of this crate); `None` for a
+    /// single one.
+    pub fn as_piecewise(&self) -> Option<&PiecewiseReport> {
+        match &self.kind {
+            ReportKind::Single(_) | ReportKind::Patch { .. } | ReportKind::Spline(_) => None,
+            ReportKind::Piecewise { report, .. } => Some(report),
+        }
+    }
+
+    /// `(degree_from, degree_to, error_bound, max_error)` of any kind (patches: in u).
+    fn common(&self) -> (usize, usize, Option<f64>, Option<f64>) {
+        match &self.kind {
+            ReportKind::Single(r) => (r.degree_from, r.degree_to, r.error_bound, r.max_error),
+            ReportKind::Piecewise { report: r, .. } => {
+                (r.degree_from, r.degree_to, Some(r.error_bound), r.max_error)
+            }
+            ReportKind::Patch { report: r, .. } => (
+                r.degrees_from.0,
+                r.degrees_to.0,
+                Some(r.error_bound),
+                r.max_error,
+            ),
+            ReportKind::Spline(r) => (r.degree_from, r.degree_to, Some(r.error_bound), r.max_error),
+        }
     }
 }
 
@@ -34,7 +111,8 @@ fn available(value: Option<f64>, what: &str) -> CResult<f64> {
 /// non-NULL handle must be released exactly once and not used afterwards.
 ///
 /// Parameters:
-/// - `report` (in, consumed): a `CagdReport **` output of `cagd_curve_reduce`, or NULL.
+/// - `report` (in, consumed): a `CagdReport **` output of `cagd_curve_reduce` or another
+///   reduction, or NULL.
 ///
 /// Does not change `cagd_last_error_message()`.
 ///
@@ -46,7 +124,8 @@ pub unsafe extern "C" fn cagd_report_free(report: *mut CagdReport) {
     boundary_void(|| unsafe { free_handle(report) });
 }
 
-/// Reads the method and the degrees of a reduction.
+/// Reads the method and the degrees of a reduction. For a patch reduction: the curve
+/// method option (`opts->method`) and the degrees in u (`cagd_report_patch` gives all).
 ///
 /// Parameters:
 /// - `report` (in): the report.
@@ -80,7 +159,8 @@ pub unsafe extern "C" fn cagd_report_method(
                 out_ref(degree_to_out, "degree_to_out")?,
             )
         };
-        (*m, *from, *to) = (r.method, r.report.degree_from, r.report.degree_to);
+        let (degree_from, degree_to, _, _) = r.common();
+        (*m, *from, *to) = (r.method, degree_from, degree_to);
         Ok(())
     })
 }
@@ -112,10 +192,7 @@ pub unsafe extern "C" fn cagd_report_bound(
         let r = unsafe { handle_ref(report, "report") }?;
         // SAFETY: as above.
         let out = unsafe { out_ref(bound_out, "bound_out") }?;
-        *out = available(
-            r.report.error_bound,
-            "no certified bound for this reduction",
-        )?;
+        *out = available(r.common().2, "no certified bound for this reduction")?;
         Ok(())
     })
 }
@@ -148,7 +225,7 @@ pub unsafe extern "C" fn cagd_report_max_error(
         // SAFETY: as above.
         let out = unsafe { out_ref(error_out, "error_out") }?;
         *out = available(
-            r.report.max_error,
+            r.common().3,
             "the error was not measured: set CagdReduceOptions.measure = true",
         )?;
         Ok(())
@@ -168,7 +245,9 @@ pub unsafe extern "C" fn cagd_report_max_error(
 /// Returns:
 /// - `CAGD_OK`: both outputs are written.
 /// - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
-/// - `CAGD_ERR_NOT_AVAILABLE`: no bound could be formed for this reduction.
+/// - `CAGD_ERR_NOT_AVAILABLE`: no bound could be formed for this reduction, or the report
+///   is of a reduction to a tolerance, of a B-spline or of a patch (whose numbers are
+///   always Euclidean).
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
@@ -190,11 +269,18 @@ pub unsafe extern "C" fn cagd_report_space(
                 out_ref(homogeneous_bound_out, "homogeneous_bound_out")?,
             )
         };
+        let ReportKind::Single(single) = &r.kind else {
+            return Err(Failure::new(
+                CagdStatus::ERR_NOT_AVAILABLE,
+                "reductions to a tolerance, of splines and of patches report Euclidean numbers \
+                 only",
+            ));
+        };
         let hb = available(
-            r.report.homogeneous_bound.or(r.report.error_bound),
+            single.homogeneous_bound.or(single.error_bound),
             "no certified bound for this reduction",
         )?;
-        let space = match r.report.space {
+        let space = match single.space {
             ErrorSpace::Homogeneous => CagdErrorSpace::SPACE_HOMOGENEOUS,
             ErrorSpace::Euclidean => CagdErrorSpace::SPACE_EUCLIDEAN,
         };

@@ -15,8 +15,11 @@ int cagd_ctest_reduce_bad_input(void) {
 
     CHECK_STATUS(cagd_reduce_options_init(NULL), CAGD_ERR_NULL_POINTER);
     CHECK_OK(cagd_reduce_options_init(&o));
-    CHECK(o.method == CAGD_METHOD_CONSTRAINED_CHEBYSHEV && o.target == 3 && o.r == 0 &&
-          o.p == 0 && !o.measure && o.space == CAGD_SPACE_EUCLIDEAN);
+    /* the defaults: L2 with the end points interpolated */
+    CHECK(o.struct_size == sizeof(CagdReduceOptions));
+    CHECK(o.method == CAGD_METHOD_L2 && o.target == 3 && o.r == 0 && o.p == 0 &&
+          o.l1 == 0.0 && o.l2 == 0.0 && !o.measure && o.space == CAGD_SPACE_EUCLIDEAN);
+    CHECK(o.tolerance == 0.0 && o.continuity == 0 && o.max_depth == 30);
     CHECK_OK(cagd_curve_new(P7, 8, 2, &c));
 
     CHECK_STATUS(cagd_curve_reduce(NULL, &o, &q, &rep), CAGD_ERR_NULL_POINTER);
@@ -144,5 +147,40 @@ int cagd_ctest_reduce_batch_bad_input(void) {
                  CAGD_ERR_BAD_DEGREE_PAIR);
     rc = 0;
 cleanup:
+    return rc;
+}
+
+/* The versioning rule of CagdReduceOptions: a struct_size below the first version's size
+ * (an uninitialised struct, most likely) is rejected by every function taking options. */
+int cagd_ctest_reduce_options_struct_size(void) {
+    int rc = 1;
+    CagdCurve *c = NULL, *q = NULL;
+    CagdReport *rep = NULL;
+    CagdReduceOptions o;
+    double out[8] = {0};
+    size_t needed = 0;
+
+    CHECK_OK(cagd_curve_new(P7, 8, 2, &c));
+    CHECK_OK(cagd_reduce_options_init(&o));
+    o.struct_size = 0;
+    CHECK_STATUS(cagd_curve_reduce(c, &o, &q, &rep), CAGD_ERR_INVALID_ARGUMENT);
+    CHECK_MESSAGE_HAS("struct_size");
+    o.struct_size = sizeof o - 1;
+    CHECK_STATUS(cagd_curve_reduce(c, &o, &q, &rep), CAGD_ERR_INVALID_ARGUMENT);
+    CHECK_STATUS(cagd_curve_reduce_batch(P7, 1, 7, 2, &o, out, 8, &needed),
+                 CAGD_ERR_INVALID_ARGUMENT);
+    CHECK(q == NULL && rep == NULL);
+    /* sizeof: accepted, and the default method interpolates the end points */
+    o.struct_size = sizeof o;
+    CHECK_OK(cagd_curve_reduce(c, &o, &q, &rep));
+    CHECK_OK(cagd_curve_points(q, out, 8, &needed));
+    CHECK(out[0] == 0.0 && out[1] == 0.0);
+    CHECK_NEAR(out[6], 11.0, 1e-12);
+    CHECK_NEAR(out[7], 0.0, 1e-12);
+    rc = 0;
+cleanup:
+    cagd_report_free(rep);
+    cagd_curve_free(q);
+    cagd_curve_free(c);
     return rc;
 }

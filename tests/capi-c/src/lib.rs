@@ -67,6 +67,43 @@ c_tests![
     reduce_bad_input,
     report_accessors_bad_input,
     reduce_batch_bad_input,
+    reduce_options_struct_size,
+    // c/reduce_tolerance.c
+    reduce_tolerance_stepwise_spec,
+    reduce_tolerance_exact,
+    reduce_tolerance_c1,
+    reduce_tolerance_bad_input,
+    // c/bspline.c
+    bspline_polynomial_closed_form,
+    bspline_nurbs_circle,
+    bspline_to_beziers,
+    // c/bspline_bad_input.c
+    bspline_new_bad_knots,
+    bspline_new_bad_input,
+    bspline_ops_bad_input,
+    // c/patch_reduce.c
+    tensorpatch_reduce_spec,
+    tripatch_reduce_spec,
+    patch_reduce_roundtrip,
+    patch_reduce_to_tolerance,
+    patch_reduce_bad_input,
+    // c/bspline_reduce.c
+    bspline_reduce_uniform_001,
+    bspline_reduce_tolerance,
+    bspline_reduce_bad_input,
+    // c/reduce_extra.c
+    curve_exact_degree,
+    curve_reduce_g1_optimal,
+    reduce_operator_matrix,
+    reduce_extra_bad_input,
+    // c/bspline_surface.c
+    bsplinesurface_roundtrip,
+    bsplinesurface_reduce,
+    bsplinesurface_bad_input,
+    // c/patch_ops.c
+    tensorpatch_ops,
+    tripatch_ops,
+    patch_ops_bad_input,
     // cpp/header_compiles.cpp
     cpp_header,
 ];
