@@ -2455,8 +2455,9 @@ CagdStatus cagd_report_method(const struct CagdReport *report,
 CagdStatus cagd_report_bound(const struct CagdReport *report, double *bound_out);
 
 /**
- * Reads the error measured by dense sampling (`max_t |P(t) - Q(t)|` at 4001 parameters
- * plus local refinement, in the space given by `cagd_report_space`), available when the
+ * Reads the error measured by dense sampling (`max_t |P(t) - Q(t)|` over a dense grid
+ * plus Brent refinement of every local maximum, in the space given by `cagd_report_space`),
+ * available when the
  * reduction ran with `opts->measure = true`. Never above the certified bound.
  *
  * Parameters:

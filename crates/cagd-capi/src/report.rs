@@ -197,8 +197,9 @@ pub unsafe extern "C" fn cagd_report_bound(
     })
 }
 
-/// Reads the error measured by dense sampling (`max_t |P(t) - Q(t)|` at 4001 parameters
-/// plus local refinement, in the space given by `cagd_report_space`), available when the
+/// Reads the error measured by dense sampling (`max_t |P(t) - Q(t)|` over a dense grid
+/// plus Brent refinement of every local maximum, in the space given by `cagd_report_space`),
+/// available when the
 /// reduction ran with `opts->measure = true`. Never above the certified bound.
 ///
 /// Parameters:
