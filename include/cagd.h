@@ -354,6 +354,50 @@ typedef int32_t CagdMerge;
 #endif // __cplusplus
 
 /**
+ * The polynomial bases of `cagd_basis_matrix` (cagd-core `Basis`). Passed as an
+ * `int32_t`.
+ *
+ */
+enum CagdBasis
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : int32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  /**
+   * Monomials `t^k`, `k = 0..=n`.
+   */
+  CAGD_BASIS_POWER = 0,
+  /**
+   * Shifted Chebyshev polynomials `T_k(2t - 1)` (seed 000 Lemma 14.5.3).
+   */
+  CAGD_BASIS_CHEBYSHEV = 1,
+  /**
+   * Shifted Legendre polynomials `P_k(2t - 1)`, `P_k(1) = 1`.
+   */
+  CAGD_BASIS_LEGENDRE = 2,
+  /**
+   * The Said–Ball basis (WSGB with `L = 0`).
+   */
+  CAGD_BASIS_SAID_BALL = 3,
+  /**
+   * The Wang–Ball basis (WSGB with `L = max(floor(n/2) - 1, 0)`).
+   */
+  CAGD_BASIS_WANG_BALL = 4,
+  /**
+   * The Wang–Said generalized Ball basis WSGB(n, L) of seed 003 (SPEC-reduce §9.1),
+   * `0 <= L <= max(floor(n/2) - 1, 0)`, `L` given by `param_l`.
+   */
+  CAGD_BASIS_WSGB = 5,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum CagdBasis CagdBasis;
+#else
+typedef int32_t CagdBasis;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
  * Opaque handle to a B-spline curve of degree `p` (`0..=64`) with `n_points >= p + 1`
  * control points of `dim >= 1` coordinates and a full knot vector of
  * `n_points + p + 1` non-decreasing knots (clamped or not; the domain is
@@ -1693,6 +1737,184 @@ CagdStatus cagd_curve_segment(const struct CagdCurve *curve,
                               struct CagdCurve **curve_out);
 
 /**
+ * The forward difference `Delta^n P_0 = sum_{i=0..n} (-1)^(n-i) C(n,i) P_i` of a degree-`n`
+ * curve (seed 000 eq. 14.1.1): the curve has degree `< n` exactly when it is zero, and it is
+ * the vector `F` whose norm enters the perturbation error bound (SPEC-reduce §2.1). For a
+ * rational curve it is taken of the homogeneous points `(w_i P_i, w_i)`. Computed in `f64`
+ * with the exact binomials; its rounding error is a few `2^n` ulp of the largest point.
+ *
+ * Parameters:
+ * - `curve` (in): the curve, degree `n`.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `dim` doubles
+ *   (polynomial curve) or `dim + 1` doubles (rational curve: the homogeneous coordinates
+ *   `sum (-1)^(n-i) C(n,i) w_i P_i` followed by `sum (-1)^(n-i) C(n,i) w_i`) hold `F`.
+ *   May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, `dim` (polynomial)
+ *   or `dim + 1` (rational).
+ *
+ * Returns:
+ * - `CAGD_OK`: `F` is in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `curve` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the size; only `*out_needed` is
+ *   written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live curve handle; `out` NULL or `out_cap` writable doubles;
+ * `out_needed` NULL or writable.
+ */
+CagdStatus cagd_curve_forward_difference(const struct CagdCurve *curve,
+                                         double *out,
+                                         size_t out_cap,
+                                         size_t *out_needed);
+
+/**
+ * The degeneracy invariants of a tensor-product patch of degree `(m, n)` (seed 000
+ * eq. 14.1.2, Theorem 14.1.1): `F_j = sum_i (-1)^(m-i) C(m,i) P_ij` for `j = 0..=n` (all
+ * zero iff the patch has degree `< m` in `u`) and `G_i = sum_j (-1)^(n-j) C(n,j) P_ij` for
+ * `i = 0..=m` (all zero iff degree `< n` in `v`). Computed in `f64` with exact binomials.
+ *
+ * Parameters:
+ * - `patch` (in): the patch, degrees `(m, n)`, dimension `dim`.
+ * - `f_out` (out): buffer of `f_cap` doubles; on `CAGD_OK` its first `(n + 1) * dim`
+ *   doubles hold `F`, row-major (coordinate k of `F_j` at `f_out[j * dim + k]`). May be
+ *   NULL only when `f_cap == 0`.
+ * - `f_cap` (in): capacity of `f_out` in doubles.
+ * - `f_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, `(n + 1) * dim`.
+ * - `g_out` (out): buffer of `g_cap` doubles; on `CAGD_OK` its first `(m + 1) * dim`
+ *   doubles hold `G` (coordinate k of `G_i` at `g_out[i * dim + k]`). May be NULL only
+ *   when `g_cap == 0`. Must not overlap `f_out`.
+ * - `g_cap` (in): capacity of `g_out` in doubles.
+ * - `g_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, `(m + 1) * dim`.
+ *   Must differ from `f_needed`.
+ *
+ * Returns:
+ * - `CAGD_OK`: `F` and `G` are written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch`, `f_needed` or `g_needed` is NULL, or `f_out` /
+ *   `g_out` is NULL with a capacity `> 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `f_needed == g_needed`, the two buffers overlap, or a
+ *   pointer is misaligned.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `f_cap` or `g_cap` is below its size; both `*f_needed`
+ *   and `*g_needed` are written, nothing else.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; `f_out` NULL or `f_cap` writable doubles;
+ * `g_out` NULL or `g_cap` writable doubles; `f_needed`, `g_needed` NULL or writable.
+ */
+CagdStatus cagd_tensorpatch_degeneracy(const struct CagdTensorPatch *patch,
+                                       double *f_out,
+                                       size_t f_cap,
+                                       size_t *f_needed,
+                                       double *g_out,
+                                       size_t g_cap,
+                                       size_t *g_needed);
+
+/**
+ * The degeneracy invariants of a degree-`n` triangular patch (seed 000 eq. 14.1.3,
+ * SPEC-reduce §1): `F_k = Delta_1^k Delta_2^(n-k) T_00
+ * = sum_{i<=k} sum_{j<=n-k} (-1)^(n-i-j) C(k,i) C(n-k,j) T_ij`, `k = 0..=n`. The patch has
+ * degree `< n` exactly when all `F_k` vanish. Computed in `f64` with exact binomials.
+ *
+ * Parameters:
+ * - `patch` (in): the patch, degree `n`, dimension `dim`.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `(n + 1) * dim`
+ *   doubles hold `F`, row-major (coordinate d of `F_k` at `out[k * dim + d]`). May be NULL
+ *   only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, `(n + 1) * dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: `F` is in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < (n + 1) * dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live patch handle; `out` NULL or `out_cap` writable doubles;
+ * `out_needed` NULL or writable.
+ */
+CagdStatus cagd_tripatch_degeneracy(const struct CagdTriPatch *patch,
+                                    double *out,
+                                    size_t out_cap,
+                                    size_t *out_needed);
+
+/**
+ * The parametric distance `max_{t in [0,1]} ||a(t) - b(t)||` (Euclidean norm) between two
+ * Bézier curves of any degrees, polynomial or rational (cagd_core::curve_distance: dense
+ * sampling of the difference refined by golden-section search; relative accuracy `1e-12`
+ * up to degree 10, `2.4e-10` measured at degree 20).
+ *
+ * Parameters:
+ * - `a`, `b` (in): the curves, of the same dimension.
+ * - `out` (out): on `CAGD_OK`, the distance. Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*out` holds the distance.
+ * - `CAGD_ERR_NULL_POINTER`: `a`, `b` or `out` is NULL.
+ * - `CAGD_ERR_DIMENSION_MISMATCH`: the dimensions differ.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `a` and `b` must be NULL or live curve handles; `out` NULL or writable.
+ */
+CagdStatus cagd_curve_distance(const struct CagdCurve *a, const struct CagdCurve *b, double *out);
+
+/**
+ * The parametric distance `max_{(u,v) in [0,1]^2} ||a(u,v) - b(u,v)||` (Euclidean norm)
+ * between two tensor-product patches of any degrees (cagd_core::tensor_patch_distance:
+ * both elevated to the common degree, control points subtracted, grid of
+ * `4 (m_a + n_a + m_b + n_b) + 32` intervals per side refined locally).
+ *
+ * Parameters:
+ * - `a`, `b` (in): the patches, of the same dimension.
+ * - `out` (out): on `CAGD_OK`, the distance. Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*out` holds the distance.
+ * - `CAGD_ERR_NULL_POINTER`: `a`, `b` or `out` is NULL.
+ * - `CAGD_ERR_DIMENSION_MISMATCH`: the dimensions differ.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `a` and `b` must be NULL or live tensor-patch handles; `out` NULL or writable.
+ */
+CagdStatus cagd_tensorpatch_distance(const struct CagdTensorPatch *a,
+                                     const struct CagdTensorPatch *b,
+                                     double *out);
+
+/**
+ * The parametric distance `max ||a(u,v) - b(u,v)||` (Euclidean norm) over the unit
+ * triangle `u, v >= 0, u + v <= 1` between two triangular patches of any degrees
+ * (cagd_core::tri_patch_distance: elevated to the common degree, control points
+ * subtracted, grid of `4 (n_a + n_b) + 32` intervals per side refined locally).
+ *
+ * Parameters:
+ * - `a`, `b` (in): the patches, of the same dimension.
+ * - `out` (out): on `CAGD_OK`, the distance. Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*out` holds the distance.
+ * - `CAGD_ERR_NULL_POINTER`: `a`, `b` or `out` is NULL.
+ * - `CAGD_ERR_DIMENSION_MISMATCH`: the dimensions differ.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `a` and `b` must be NULL or live triangular-patch handles; `out` NULL or writable.
+ */
+CagdStatus cagd_tripatch_distance(const struct CagdTriPatch *a,
+                                  const struct CagdTriPatch *b,
+                                  double *out);
+
+/**
  * A human-readable description of the last failure of a `cagd_*` function on the calling
  * thread, naming the argument and the offending value (e.g.
  * `"weights[3] = -0.5 must be finite and > 0"`).
@@ -1705,6 +1927,132 @@ CagdStatus cagd_curve_segment(const struct CagdCurve *curve,
  * should depend on the returned `CagdStatus`, never on this text.
  */
 const char *cagd_last_error_message(void);
+
+/**
+ * Copies seed 001's matrix `S^(n)` (uniform B-spline control points of one segment to its
+ * Bézier points, seed 001 §4.1), or its inverse `S^(-n)` (seed 001 §4.2), computed once in
+ * exact rational arithmetic, rounded once to `f64`, cached process-wide. Row-major
+ * `(n + 1) x (n + 1)`: `b_i = sum_j out[i * (n + 1) + j] p_j` (row `i` is Bézier point
+ * `i`, column `j` B-spline point `j`). The entries of `S^(-n)` grow fast (largest entry
+ * `1.6e106` at `n = 64`): usable in `f64` only for small degrees.
+ *
+ * Parameters:
+ * - `n` (in): the degree, `0..=64`.
+ * - `inverse` (in): `false` for `S^(n)`, `true` for `S^(-n)`.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `(n + 1)^2` doubles
+ *   hold the matrix. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, `(n + 1)^2`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the matrix is in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `out_needed` is NULL, or `out` is NULL with `out_cap > 0`.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n > 64` (`*out_needed` is not written).
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < (n + 1)^2`; only `*out_needed` is written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `out` must be NULL or point to `out_cap` writable doubles; `out_needed` NULL or
+ * writable.
+ */
+CagdStatus cagd_uniform_bspline_matrix(size_t n,
+                                       bool inverse,
+                                       double *out,
+                                       size_t out_cap,
+                                       size_t *out_needed);
+
+/**
+ * Copies the basis conversion matrix of degree `n` between `basis` and the Bernstein
+ * basis (cagd_core::to_bernstein / from_bernstein): computed once in exact rational
+ * arithmetic, rounded once to `f64`, cached process-wide. With `to_bernstein` the matrix
+ * `M` gives Bernstein coefficients `b = M c` from coefficients `c` in `basis`; otherwise
+ * its inverse, `c = M^(-1) b`. Row-major `(n + 1) x (n + 1)`: `b_i = sum_j
+ * out[i * (n + 1) + j] c_j`. Each entry is correctly rounded; the inverse matrices of the
+ * Power, Chebyshev and Legendre bases have large entries at high degree, so converting
+ * given coefficients to Bernstein loses accuracy beyond degree ~15.
+ *
+ * Parameters:
+ * - `basis` (in): a `CagdBasis` code.
+ * - `param_l` (in): the order `L` of `CAGD_BASIS_WSGB`,
+ *   `0 <= L <= max(floor(n/2) - 1, 0)`; ignored for the other bases.
+ * - `n` (in): the degree, `0..=64`.
+ * - `to_bernstein` (in): `true` for `M` (basis to Bernstein), `false` for `M^(-1)`.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `(n + 1)^2` doubles
+ *   hold the matrix. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, `(n + 1)^2`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the matrix is in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `out_needed` is NULL, or `out` is NULL with `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `basis` is not a `CagdBasis`, or a pointer is
+ *   misaligned.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n > 64`.
+ * - `CAGD_ERR_CONDITION_NOT_MET`: `CAGD_BASIS_WSGB` with `param_l` outside its range.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < (n + 1)^2`; only `*out_needed` is written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `out` must be NULL or point to `out_cap` writable doubles; `out_needed` NULL or
+ * writable.
+ */
+CagdStatus cagd_basis_matrix(int32_t basis,
+                             size_t param_l,
+                             size_t n,
+                             bool to_bernstein,
+                             double *out,
+                             size_t out_cap,
+                             size_t *out_needed);
+
+/**
+ * The perturbation error factor `W_n = max_{t in [0,1]} |w_n(t)|` of seed 000 §14.2.1
+ * (SPEC-reduce §2.1, vector `W_n-table`), rounded up so that the certified error of the
+ * perturbation reduction, `W_n ||Delta^n P_0|| / (C(2n,n) - 2)`, is an upper bound.
+ *
+ * Parameters:
+ * - `n` (in): the source degree, `2..=64`.
+ * - `out` (out): on `CAGD_OK`, `W_n`. Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*out` holds `W_n`.
+ * - `CAGD_ERR_NULL_POINTER`: `out` is NULL.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n > 64`.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `n < 2` (the perturbation reduction needs `n >= 2`).
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `out` is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `out` must be NULL or writable.
+ */
+CagdStatus cagd_perturbation_error_factor(size_t n, double *out);
+
+/**
+ * The number `N` of midpoint-subdivision levels after which every piece of a degree-`n`
+ * curve with `||Delta^n P_0|| = norm_f` reduces one degree by the perturbation method
+ * within `delta` (seed 000 eq. 14.2.11 as corrected in SPEC-reduce §2.2, vector
+ * `N-formula-1`): `N = max(0, ceil((1/n) log2(W_n ||F|| / ((C(2n,n) - 2) delta))))`.
+ *
+ * Parameters:
+ * - `n` (in): the source degree, `2..=64`.
+ * - `norm_f` (in): `||Delta^n P_0||`, finite and `>= 0` (e.g. the Euclidean norm of
+ *   `cagd_curve_forward_difference`).
+ * - `delta` (in): the tolerance, finite and `> 0`.
+ * - `out` (out): on `CAGD_OK`, `N`. Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*out` holds `N`.
+ * - `CAGD_ERR_NULL_POINTER`: `out` is NULL.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n > 64`.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `n < 2`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `delta` not finite and `> 0`, `norm_f` negative or not
+ *   finite, or `out` misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `out` must be NULL or writable.
+ */
+CagdStatus cagd_subdivision_levels(size_t n, double norm_f, double delta, size_t *out);
 
 /**
  * Releases a tensor patch list (not the patches obtained from it). NULL is accepted and

@@ -71,11 +71,15 @@ mod curve;
 mod curve_list;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod curve_ops;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod invariants;
 #[allow(
     unsafe_code,
     reason = "C entry points (no_mangle) returning static strings"
 )]
 mod last_error;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod matrices;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod patch_list;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
@@ -133,7 +137,15 @@ pub use curve_ops::{
     cagd_curve_elevate, cagd_curve_eval, cagd_curve_eval_many, cagd_curve_segment,
     cagd_curve_subdivide,
 };
+pub use invariants::{
+    cagd_curve_distance, cagd_curve_forward_difference, cagd_tensorpatch_degeneracy,
+    cagd_tensorpatch_distance, cagd_tripatch_degeneracy, cagd_tripatch_distance,
+};
 pub use last_error::{cagd_last_error_message, last_error_string};
+pub use matrices::{
+    CagdBasis, cagd_basis_matrix, cagd_perturbation_error_factor, cagd_subdivision_levels,
+    cagd_uniform_bspline_matrix,
+};
 pub use patch_list::{
     CagdTensorPatchList, CagdTriPatchList, cagd_tensorpatchlist_count, cagd_tensorpatchlist_free,
     cagd_tensorpatchlist_get, cagd_tripatchlist_count, cagd_tripatchlist_free,

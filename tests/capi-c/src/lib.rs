@@ -91,6 +91,15 @@ c_tests![
     bspline_reduce_uniform_001,
     bspline_reduce_tolerance,
     bspline_reduce_bad_input,
+    // c/core_invariants.c
+    curve_forward_difference,
+    tensorpatch_degeneracy,
+    tripatch_degeneracy,
+    distances,
+    // c/core_matrices.c
+    uniform_bspline_matrix,
+    basis_matrix,
+    perturbation_scalars,
     // c/reduce_extra.c
     curve_exact_degree,
     curve_reduce_g1_optimal,
