@@ -117,7 +117,9 @@
 //! not). [`reduce_bspline`]: any B-spline / NURBS to a tolerance — Bézier extraction,
 //! segments reduced with the end constraints that keep the continuity present at each knot
 //! (up to `C^floor((m-1)/2)`), subdivision where a segment exceeds its share, merge, and knot
-//! removal within the rest of the tolerance. [`reduce_bspline_surface`]: patch-wise.
+//! removal within the rest of the tolerance. [`reduce_bspline_surface`]: patch-wise;
+//! [`reduce_bspline_surface_to_tolerance`]: with uniform knot refinement until the certified
+//! bound meets a tolerance.
 #![forbid(unsafe_code)]
 
 mod alg_14_2_1;
@@ -126,6 +128,7 @@ mod bspline_knots;
 mod bspline_measure;
 mod bspline_reduce;
 mod bspline_surface_reduce;
+mod bspline_surface_tolerance;
 mod bspline_uniform;
 mod chebyshev;
 mod ends;
@@ -157,6 +160,7 @@ pub use batch::reduce_batch;
 pub use bspline_measure::spline_max_deviation;
 pub use bspline_reduce::{BSplineOptions, BSplineReduction, BSplineReport, reduce_bspline};
 pub use bspline_surface_reduce::{SurfaceOptions, SurfaceReduction, reduce_bspline_surface};
+pub use bspline_surface_tolerance::{MAX_SURFACE_LEVEL, reduce_bspline_surface_to_tolerance};
 pub use bspline_uniform::{Merge, UniformReduction, reduce_uniform_bspline};
 pub use cagd_core::{Error, Result};
 pub use exact_degree::{DEFAULT_REL_TOL, exact_degree, reduce_exact};
