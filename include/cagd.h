@@ -1293,6 +1293,43 @@ CagdStatus cagd_bsplinesurface_reduce(const struct CagdBSplineSurface *surface,
                                       struct CagdReport **report_out);
 
 /**
+ * Reduces a B-spline / NURBS surface to `(opts->target, opts->target_v)` with a certified
+ * bound `<= opts->tolerance` (Euclidean, model space): the surface is refined uniformly
+ * (every knot span split into `2^L` equal spans by exact knot insertion, `L = 0..=6`) and
+ * reduced as by `cagd_bsplinesurface_reduce`; the first level whose bound meets the
+ * tolerance is returned.
+ *
+ * Options used: as `cagd_bsplinesurface_reduce`, plus `tolerance` (finite, `> 0`).
+ *
+ * Parameters:
+ * - `surface` (in): the surface.
+ * - `opts` (in): the options. Borrowed for the call.
+ * - `surface_out` (out): on `CAGD_OK`, the reduced surface, owned by the caller: release
+ *   with `cagd_bsplinesurface_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report, as for `cagd_bsplinesurface_reduce`
+ *   (its number of pieces is the number of Bézier patches of the refined surface), owned
+ *   by the caller: release with `cagd_report_free`. Neither output is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `surface`, `opts`, `surface_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `tolerance` not finite and `> 0`, and as
+ *   `cagd_bsplinesurface_reduce`.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS`,
+ *   `CAGD_ERR_NON_POSITIVE_WEIGHT`: as `cagd_bsplinesurface_reduce`.
+ * - `CAGD_ERR_NO_CONVERGENCE`: level 6 is not enough.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `surface` must be NULL or a live surface handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; the outputs NULL or writable.
+ */
+CagdStatus cagd_bsplinesurface_reduce_to_tolerance(const struct CagdBSplineSurface *surface,
+                                                   const struct CagdReduceOptions *opts,
+                                                   struct CagdBSplineSurface **surface_out,
+                                                   struct CagdReport **report_out);
+
+/**
  * Creates a polynomial Bézier curve of degree `n_points - 1`.
  *
  * Parameters:

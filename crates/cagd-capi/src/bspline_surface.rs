@@ -2,7 +2,9 @@
 //! evaluation, release, and their degree reduction (`cagd_bsplinesurface_reduce`).
 
 use cagd_core::BSplineSurface;
-use cagd_reduce::{PatchReport, SurfaceOptions, reduce_bspline_surface};
+use cagd_reduce::{
+    PatchReport, SurfaceOptions, reduce_bspline_surface, reduce_bspline_surface_to_tolerance,
+};
 
 use crate::boundary::{
     CResult, Failure, OUT, boundary, boundary_void, checked_len, free_handle, handle_ref,
@@ -347,29 +349,94 @@ pub unsafe extern "C" fn cagd_bsplinesurface_reduce(
         let o = unsafe { read_options(opts) }?;
         // SAFETY: as above.
         let (s_out, r_out) = unsafe { outputs(surface_out, report_out) }?;
-        let sopts = SurfaceOptions {
-            continuity: Some(o.continuity),
-            method: o.method()?,
-            measure: o.measure,
-            ..SurfaceOptions::new((o.target, o.target_v))
-        };
-        let red = reduce_bspline_surface(&s.0, &sopts).map_err(spline_failure)?;
-        let report = PatchReport {
-            method: "bspline-surface",
-            degrees_from: s.0.degrees(),
-            degrees_to: red.surface.degrees(),
-            error_bound: red.error_bound,
-            max_error: red.max_error,
-        };
-        *s_out = into_handle(CagdBSplineSurface(red.surface));
-        *r_out = into_handle(CagdReport {
-            kind: ReportKind::Patch {
-                report,
-                patch_method: -1,
-                pieces: red.patches,
-            },
-            method: o.method,
-        });
-        Ok(())
+        surface_reduce(&s.0, &o, None, s_out, r_out)
     })
+}
+
+/// Reduces a B-spline / NURBS surface to `(opts->target, opts->target_v)` with a certified
+/// bound `<= opts->tolerance` (Euclidean, model space): the surface is refined uniformly
+/// (every knot span split into `2^L` equal spans by exact knot insertion, `L = 0..=6`) and
+/// reduced as by `cagd_bsplinesurface_reduce`; the first level whose bound meets the
+/// tolerance is returned.
+///
+/// Options used: as `cagd_bsplinesurface_reduce`, plus `tolerance` (finite, `> 0`).
+///
+/// Parameters:
+/// - `surface` (in): the surface.
+/// - `opts` (in): the options. Borrowed for the call.
+/// - `surface_out` (out): on `CAGD_OK`, the reduced surface, owned by the caller: release
+///   with `cagd_bsplinesurface_free`.
+/// - `report_out` (out): on `CAGD_OK`, the report, as for `cagd_bsplinesurface_reduce`
+///   (its number of pieces is the number of Bézier patches of the refined surface), owned
+///   by the caller: release with `cagd_report_free`. Neither output is written on failure.
+///
+/// Returns:
+/// - `CAGD_OK`: both outputs are written.
+/// - `CAGD_ERR_NULL_POINTER`: `surface`, `opts`, `surface_out` or `report_out` is NULL.
+/// - `CAGD_ERR_INVALID_ARGUMENT`: `tolerance` not finite and `> 0`, and as
+///   `cagd_bsplinesurface_reduce`.
+/// - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS`,
+///   `CAGD_ERR_NON_POSITIVE_WEIGHT`: as `cagd_bsplinesurface_reduce`.
+/// - `CAGD_ERR_NO_CONVERGENCE`: level 6 is not enough.
+/// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+///
+/// # Safety
+/// `surface` must be NULL or a live surface handle; `opts` NULL or a readable
+/// `CagdReduceOptions` of `opts->struct_size` bytes; the outputs NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cagd_bsplinesurface_reduce_to_tolerance(
+    surface: *const CagdBSplineSurface,
+    opts: *const CagdReduceOptions,
+    surface_out: *mut *mut CagdBSplineSurface,
+    report_out: *mut *mut CagdReport,
+) -> CagdStatus {
+    boundary(|| {
+        // SAFETY: the caller's contract (see # Safety).
+        let s = unsafe { handle_ref(surface, "surface") }?;
+        // SAFETY: as above.
+        let o = unsafe { read_options(opts) }?;
+        // SAFETY: as above.
+        let (s_out, r_out) = unsafe { outputs(surface_out, report_out) }?;
+        surface_reduce(&s.0, &o, Some(o.tolerance), s_out, r_out)
+    })
+}
+
+/// The body shared by [`cagd_bsplinesurface_reduce`] and
+/// [`cagd_bsplinesurface_reduce_to_tolerance`]: reduce (within `tolerance` when given) and
+/// write both outputs.
+fn surface_reduce(
+    s: &BSplineSurface,
+    o: &CagdReduceOptions,
+    tolerance: Option<f64>,
+    s_out: &mut *mut CagdBSplineSurface,
+    r_out: &mut *mut CagdReport,
+) -> CResult<()> {
+    let sopts = SurfaceOptions {
+        continuity: Some(o.continuity),
+        method: o.method()?,
+        measure: o.measure,
+        ..SurfaceOptions::new((o.target, o.target_v))
+    };
+    let red = match tolerance {
+        None => reduce_bspline_surface(s, &sopts),
+        Some(tol) => reduce_bspline_surface_to_tolerance(s, &sopts, tol),
+    }
+    .map_err(spline_failure)?;
+    let report = PatchReport {
+        method: "bspline-surface",
+        degrees_from: s.degrees(),
+        degrees_to: red.surface.degrees(),
+        error_bound: red.error_bound,
+        max_error: red.max_error,
+    };
+    *s_out = into_handle(CagdBSplineSurface(red.surface));
+    *r_out = into_handle(CagdReport {
+        kind: ReportKind::Patch {
+            report,
+            patch_method: -1,
+            pieces: red.patches,
+        },
+        method: o.method,
+    });
+    Ok(())
 }

@@ -123,7 +123,7 @@ pub use bspline_reduce::{cagd_bspline_reduce, cagd_bspline_reduce_uniform, cagd_
 pub use bspline_surface::{
     CagdBSplineSurface, cagd_bsplinesurface_array, cagd_bsplinesurface_eval,
     cagd_bsplinesurface_free, cagd_bsplinesurface_new, cagd_bsplinesurface_reduce,
-    cagd_bsplinesurface_shape,
+    cagd_bsplinesurface_reduce_to_tolerance, cagd_bsplinesurface_shape,
 };
 pub use curve::{
     CagdCurve, cagd_curve_degree, cagd_curve_dim, cagd_curve_free, cagd_curve_is_rational,

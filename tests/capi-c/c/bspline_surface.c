@@ -217,3 +217,70 @@ cleanup:
     cagd_bsplinesurface_free(s);
     return rc;
 }
+
+/* To a tolerance: a bicubic with a genuine cubic term (z = u^3 v on one span, Bernstein
+ * coefficients of u^3: 0, 0, 0, 1) reduced to degrees (2, 1): every tolerance is met by the
+ * certified bound, the bound is not below the error sampled here, and a smaller tolerance
+ * needs at least as many patches. */
+int cagd_ctest_bsplinesurface_reduce_to_tolerance(void) {
+    int rc = 1;
+    CagdBSplineSurface *s = NULL, *r = NULL;
+    CagdReport *rep = NULL;
+    CagdReduceOptions o;
+    double pts[48], q[3] = {0}, bound = -1;
+    size_t needed = 0, deg[4] = {0}, pieces = 0, last_pieces = 0, i, j, k;
+    int32_t pm = 0;
+    const double tols[3] = {1e-2, 1e-3, 1e-4};
+
+    for (i = 0; i < 4; ++i) {
+        for (j = 0; j < 4; ++j) {
+            double *x = pts + (i * 4 + j) * 3;
+            x[0] = i / 3.0;
+            x[1] = j / 3.0;
+            x[2] = (i == 3 ? 1.0 : 0.0) * (j / 3.0);
+        }
+    }
+    CHECK_OK(cagd_bsplinesurface_new(3, 3, K3, 8, K3, 8, pts, NULL, 4, 4, 3, &s));
+    CHECK_OK(cagd_reduce_options_init(&o));
+    o.target = 2;
+    o.target_v = 1;
+    for (k = 0; k < 3; ++k) {
+        double worst = 0.0;
+        o.tolerance = tols[k];
+        CHECK_OK(cagd_bsplinesurface_reduce_to_tolerance(s, &o, &r, &rep));
+        CHECK_OK(cagd_report_bound(rep, &bound));
+        CHECK(bound <= tols[k]);
+        CHECK_OK(cagd_report_patch(rep, &pm, deg, &pieces));
+        CHECK(deg[2] == 2 && deg[3] == 1 && pieces >= last_pieces);
+        last_pieces = pieces;
+        for (i = 0; i <= 20; ++i) {
+            for (j = 0; j <= 20; ++j) {
+                double u = i / 20.0, v = j / 20.0, d;
+                CHECK_OK(cagd_bsplinesurface_eval(r, u, v, q, 3, &needed));
+                d = fabs(q[2] - u * u * u * v) + fabs(q[0] - u) + fabs(q[1] - v);
+                worst = d > worst ? d : worst;
+            }
+        }
+        CHECK(worst <= bound);
+        cagd_report_free(rep);
+        rep = NULL;
+        cagd_bsplinesurface_free(r);
+        r = NULL;
+    }
+    o.tolerance = 0.0;
+    CHECK_STATUS(cagd_bsplinesurface_reduce_to_tolerance(s, &o, &r, &rep), CAGD_ERR_INVALID_ARGUMENT);
+    CHECK(r == NULL && rep == NULL);
+    o.tolerance = 1e-300;
+    CHECK_STATUS(cagd_bsplinesurface_reduce_to_tolerance(s, &o, &r, &rep), CAGD_ERR_NO_CONVERGENCE);
+    o.tolerance = 1e-3;
+    CHECK_STATUS(cagd_bsplinesurface_reduce_to_tolerance(NULL, &o, &r, &rep), CAGD_ERR_NULL_POINTER);
+    CHECK_STATUS(cagd_bsplinesurface_reduce_to_tolerance(s, NULL, &r, &rep), CAGD_ERR_NULL_POINTER);
+    CHECK_STATUS(cagd_bsplinesurface_reduce_to_tolerance(s, &o, NULL, &rep), CAGD_ERR_NULL_POINTER);
+    CHECK_STATUS(cagd_bsplinesurface_reduce_to_tolerance(s, &o, &r, NULL), CAGD_ERR_NULL_POINTER);
+    rc = 0;
+cleanup:
+    cagd_report_free(rep);
+    cagd_bsplinesurface_free(r);
+    cagd_bsplinesurface_free(s);
+    return rc;
+}

@@ -108,6 +108,7 @@ c_tests![
     // c/bspline_surface.c
     bsplinesurface_roundtrip,
     bsplinesurface_reduce,
+    bsplinesurface_reduce_to_tolerance,
     bsplinesurface_bad_input,
     // c/patch_ops.c
     tensorpatch_ops,
