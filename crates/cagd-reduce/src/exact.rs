@@ -64,6 +64,11 @@ impl RatMat {
         m
     }
 
+    /// A copy of a cagd-core exact matrix (same row-major layout).
+    pub(crate) fn from_exact(m: &cagd_core::ExactMatrix) -> Self {
+        Self::from_rows((0..m.nrows()).map(|i| m.row(i).to_vec()).collect())
+    }
+
     /// Entry `(i, j)`.
     pub(crate) fn at(&self, i: usize, j: usize) -> &Q {
         &self.data[i * self.cols + j]
