@@ -42,7 +42,7 @@ pub(crate) fn truncation(n: usize, m: usize) -> Result<(RatMat, Vec<(f64, Row)>)
     let c2b = chebyshev_to_bernstein(m)?;
     let kept = RatMat::from_rows((0..=m).map(|k| b2c.row(k).to_vec()).collect());
     let terms = (m + 1..=n).map(|k| (1.0, b2c.row(k).to_vec())).collect();
-    Ok((c2b.mul(&kept), terms))
+    Ok((c2b.mul(&kept)?, terms))
 }
 
 /// `x^x` for a small non-negative integer (`0^0 = 1`), exact.
@@ -80,9 +80,9 @@ pub(crate) fn constrained(n: usize, m: usize, r: i32, p: i32) -> Result<(RatMat,
         );
         let b2c = bernstein_to_chebyshev(idx(big_n))?;
         // P^III = (B->Cheb) P^II   (14.5.15)
-        let p3 = b2c.mul(&p2);
+        let p3 = b2c.mul(&p2)?;
         let kept = RatMat::from_rows((0..=big_m).map(|k| p3.row(idx(k)).to_vec()).collect());
-        let rr = chebyshev_to_bernstein(idx(big_m))?.mul(&kept);
+        let rr = chebyshev_to_bernstein(idx(big_m))?.mul(&kept)?;
         // Q_i = R_{i-r-1} C(M, i-r-1) / C(m, i)   (14.5.16)
         for i in (ri + 1)..=(mi - pi - 1) {
             let f = binom_q(big_m, i - ri - 1) / binom_q(mi, i);
@@ -107,7 +107,8 @@ mod tests {
         for nn in [0, 1, 2, 5, 9] {
             let prod = chebyshev_to_bernstein(nn)
                 .unwrap()
-                .mul(&bernstein_to_chebyshev(nn).unwrap());
+                .mul(&bernstein_to_chebyshev(nn).unwrap())
+                .unwrap();
             assert_eq!(prod, RatMat::identity(nn + 1), "N = {nn}");
         }
     }
