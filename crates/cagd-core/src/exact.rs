@@ -201,30 +201,74 @@ impl ExactMatrix {
             .collect())
     }
 
-    /// The exact inverse, by fraction-free Gauss–Jordan elimination.
+    /// The exact difference `self - rhs`.
     ///
-    /// Each row of `[A | I]` is scaled to integers; eliminations are integer row
-    /// combinations followed by division by the row's content (gcd of its entries), so the
-    /// numbers stay the size of the minors. Zero entries are skipped, which makes banded and
-    /// block-triangular matrices (Ball bases) cheap.
+    /// # Errors
+    /// [`Error::LengthMismatch`] when the shapes differ.
+    pub fn sub(&self, rhs: &ExactMatrix) -> Result<ExactMatrix> {
+        if self.rows != rhs.rows || self.cols != rhs.cols {
+            return Err(Error::LengthMismatch {
+                what: "ExactMatrix::sub (shapes must be equal; number of entries)",
+                got: rhs.data.len(),
+                expected: self.data.len(),
+            });
+        }
+        Ok(Self {
+            rows: self.rows,
+            cols: self.cols,
+            data: self
+                .data
+                .iter()
+                .zip(&rhs.data)
+                .map(|(a, b)| a - b)
+                .collect(),
+        })
+    }
+
+    /// The exact inverse, by fraction-free Gauss–Jordan elimination ([`ExactMatrix::solve`]
+    /// with the identity as right-hand side).
     ///
     /// # Errors
     /// [`Error::LengthMismatch`] for a non-square matrix, [`Error::Singular`] for a singular one.
     pub fn inverse(&self) -> Result<ExactMatrix> {
+        self.solve(&Self::identity(self.rows))
+    }
+
+    /// The exact solution `X` of `self X = rhs` (any number of right-hand-side columns), by
+    /// fraction-free Gauss–Jordan elimination.
+    ///
+    /// Each row of `[A | B]` is scaled to integers; eliminations are integer row
+    /// combinations followed by division by the row's content (gcd of its entries), so the
+    /// numbers stay the size of the minors. Zero entries are skipped, which makes banded and
+    /// block-triangular matrices (Ball bases) cheap. The pivot of each column is its non-zero
+    /// entry with the fewest bits.
+    ///
+    /// # Errors
+    /// [`Error::LengthMismatch`] for a non-square `self` or when `rhs.nrows() != self.nrows()`;
+    /// [`Error::Singular`] for a singular `self`.
+    pub fn solve(&self, rhs: &ExactMatrix) -> Result<ExactMatrix> {
         let n = self.rows;
         if self.cols != n {
             return Err(Error::LengthMismatch {
-                what: "ExactMatrix::inverse (matrix must be square)",
+                what: "ExactMatrix::solve (matrix must be square)",
                 got: self.cols,
                 expected: n,
             });
         }
-        // Row r of [S A | S], S = diag(common denominator of row r): A^-1 = (S A)^-1 S.
+        if rhs.rows != n {
+            return Err(Error::LengthMismatch {
+                what: "ExactMatrix::solve (rhs rows must equal matrix rows)",
+                got: rhs.rows,
+                expected: n,
+            });
+        }
+        let w = n + rhs.cols;
+        // Row r of [S A | S B], S = diag(common denominator of row r of [A | B]):
+        // (S A)^-1 (S B) = A^-1 B.
         let mut rows: Vec<Vec<BigInt>> = (0..n)
             .map(|r| {
-                let (mut ints, den) = scale_to_integers(self.row(r).iter());
-                ints.resize(2 * n, BigInt::zero());
-                ints[n + r] = den;
+                let (ints, _) = scale_to_integers(self.row(r).iter().chain(rhs.row(r)));
+                debug_assert_eq!(ints.len(), w);
                 ints
             })
             .collect();
@@ -234,7 +278,7 @@ impl ExactMatrix {
                 .filter(|&r| !rows[r][p].is_zero())
                 .min_by_key(|&r| rows[r][p].bits())
                 .ok_or(Error::Singular {
-                    what: "ExactMatrix::inverse",
+                    what: "ExactMatrix::solve",
                 })?;
             rows.swap(p, pivot);
             let (before, rest) = rows.split_at_mut(p);
@@ -258,7 +302,7 @@ impl ExactMatrix {
                 remove_content(row);
             }
         }
-        Ok(Self::from_fn(n, n, |i, j| {
+        Ok(Self::from_fn(n, rhs.cols, |i, j| {
             BigRational::new(rows[i][n + j].clone(), rows[i][i].clone())
         }))
     }

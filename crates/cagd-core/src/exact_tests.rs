@@ -116,3 +116,29 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn solve_matches_inverse_times_rhs_and_sub_is_entrywise() {
+    let a = hilbert(5);
+    let b = ExactMatrix::from_fn(5, 3, |i, j| q(i as i64 - 2 * j as i64, 1 + j as i64));
+    let x = a.solve(&b).unwrap();
+    assert_eq!(x, a.inverse().unwrap().mul(&b).unwrap());
+    assert!(
+        a.mul(&x)
+            .unwrap()
+            .sub(&b)
+            .unwrap()
+            .data
+            .iter()
+            .all(Zero::is_zero)
+    );
+    // A singular system and mismatched shapes are errors, not panics.
+    let s = ExactMatrix::from_fn(2, 2, |i, j| q(((i + 1) * (j + 1)) as i64, 1));
+    assert!(matches!(
+        s.solve(&ExactMatrix::identity(2)),
+        Err(Error::Singular { .. })
+    ));
+    assert!(a.solve(&ExactMatrix::zeros(4, 1)).is_err());
+    assert!(b.solve(&b).is_err());
+    assert!(a.sub(&b).is_err());
+}

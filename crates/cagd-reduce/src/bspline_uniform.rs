@@ -83,8 +83,8 @@ fn matrices(method: Method, n: usize, m: usize) -> Result<Arc<SegmentMatrices>> 
         }
     }
     let (t, _) = crate::operator::exact_operator(method, n, m)?;
-    let ts = t.mul(&rat(s_matrix_exact(n)?, n + 1));
-    let local = rat(s_matrix_inverse_exact(m)?, m + 1).mul(&ts);
+    let ts = t.mul(&rat(s_matrix_exact(n)?, n + 1))?;
+    let local = rat(s_matrix_inverse_exact(m)?, m + 1).mul(&ts)?;
     let built = Arc::new(SegmentMatrices {
         to_bezier: ts.to_f64(),
         to_local: local.to_f64(),

@@ -1,86 +1,48 @@
-//! Chebyshev-based reductions in exact rationals: Bernstein <-> Chebyshev conversion,
-//! Watkins–Worsey truncation, and the constrained Chebyshev reduction of seed 000 §14.5
-//! (Theorem 14.5.2 and Corollary 14.5.2 with the SPEC-reduce §7 corrections).
+//! Chebyshev-based reductions in exact rationals: Watkins–Worsey truncation and the
+//! constrained Chebyshev reduction of seed 000 §14.5 (Theorem 14.5.2 and Corollary 14.5.2
+//! with the SPEC-reduce §7 corrections).
 //!
-//! Bernstein -> Chebyshev goes through three exact triangular closed forms (Bernstein ->
-//! power in `t`, `t = (x+1)/2`, `x^s = 2^(1-s) sum_j C(s,j) T_{s-2j}`), so no matrix is
-//! inverted; Chebyshev -> Bernstein is the closed form of Lemma 14.5.3.
+//! The Bernstein <-> Chebyshev basis changes are cagd-core's exact cached matrices
+//! ([`cagd_core::from_bernstein_exact`] / [`cagd_core::to_bernstein_exact`] with
+//! [`Basis::Chebyshev`], polynomials `T_k(2t-1)`): `c = F b` gives the Chebyshev
+//! coefficients `c` of Bernstein coefficients `b` (row `k` of `F` is the functional of `c_k`),
+//! and `b = A c` goes back (column `k` of `A` holds the Bernstein coefficients of `T_k`, the
+//! closed form of Lemma 14.5.3 as corrected in SPEC-reduce §7).
 
-use num_traits::{One, Zero};
+use cagd_core::{Basis, Result, from_bernstein_exact, to_bernstein_exact};
+use num_traits::One;
 
 use crate::ends::{auxiliary, end_points};
-use crate::exact::{Q, RatMat, Row, binom_q, idx, pow2, to_i};
+use crate::exact::{Q, RatMat, Row, binom_q, idx, to_i};
 use crate::one_step::up;
 
 /// `(N+1) x (N+1)` matrix: row `k` gives the Chebyshev coefficient of `T_k(2t-1)` of the
 /// degree-`N` Bézier polynomial with the given Bernstein coefficients.
-pub(crate) fn bernstein_to_chebyshev(nn: usize) -> RatMat {
-    let ni = to_i(nn);
-    // Power basis in t: a_l = C(N,l) sum_i (-1)^(l-i) C(l,i) P_i.
-    let mut pow_t = RatMat::zeros(nn + 1, nn + 1);
-    for l in 0..=ni {
-        for i in 0..=l {
-            let s = binom_q(ni, l) * binom_q(l, i);
-            *pow_t.at_mut(idx(l), idx(i)) = if (l - i) % 2 == 0 { s } else { -s };
-        }
-    }
-    // t^l = 2^-l sum_s C(l,s) x^s.
-    let mut pow_x = RatMat::zeros(nn + 1, nn + 1);
-    for l in 0..=ni {
-        for s in 0..=l {
-            *pow_x.at_mut(idx(s), idx(l)) = binom_q(l, s) * pow2(-l);
-        }
-    }
-    // x^s = 2^(1-s) sum_{j < s/2} C(s,j) T_{s-2j} + [s even] 2^-s C(s,s/2) T_0.
-    let mut cheb = RatMat::zeros(nn + 1, nn + 1);
-    for s in 0..=ni {
-        if s == 0 {
-            *cheb.at_mut(0, 0) = Q::one();
-            continue;
-        }
-        for j in 0..=s / 2 {
-            let c = if 2 * j == s {
-                binom_q(s, j) * pow2(-s)
-            } else {
-                binom_q(s, j) * pow2(1 - s)
-            };
-            *cheb.at_mut(idx(s - 2 * j), idx(s)) += c;
-        }
-    }
-    cheb.mul(&pow_x).mul(&pow_t)
+fn bernstein_to_chebyshev(nn: usize) -> Result<RatMat> {
+    Ok(RatMat::from_exact(
+        from_bernstein_exact(Basis::Chebyshev, nn)?.as_ref(),
+    ))
 }
 
 /// `(M+1) x (M+1)` matrix mapping Chebyshev coefficients to degree-`M` Bernstein
-/// coefficients: entry `(j, k)` is `A_kj = sum_i (-1)^(k+i) C(2k,2i) C(M-k,j-i) / C(M,j)`
-/// (Lemma 14.5.3 as corrected in SPEC-reduce §7).
-pub(crate) fn chebyshev_to_bernstein(mm: usize) -> RatMat {
-    let mi = to_i(mm);
-    let mut a = RatMat::zeros(mm + 1, mm + 1);
-    for k in 0..=mi {
-        for j in 0..=mi {
-            let mut acc = Q::zero();
-            for i in (j + k - mi).max(0)..=j.min(k) {
-                let v = binom_q(2 * k, 2 * i) * binom_q(mi - k, j - i);
-                if (k + i) % 2 == 0 {
-                    acc += v;
-                } else {
-                    acc -= v;
-                }
-            }
-            *a.at_mut(idx(j), idx(k)) = acc / binom_q(mi, j);
-        }
-    }
-    a
+/// coefficients.
+fn chebyshev_to_bernstein(mm: usize) -> Result<RatMat> {
+    Ok(RatMat::from_exact(
+        to_bernstein_exact(Basis::Chebyshev, mm)?.as_ref(),
+    ))
 }
 
 /// Watkins–Worsey: Chebyshev coefficients of the degree-`n` input, keep `k = 0..=m`,
 /// back to degree-`m` Bernstein. Bound terms `||c_k||`, `k > m` (`|T_k| <= 1`).
-pub(crate) fn truncation(n: usize, m: usize) -> (RatMat, Vec<(f64, Row)>) {
-    let b2c = bernstein_to_chebyshev(n);
-    let c2b = chebyshev_to_bernstein(m);
+///
+/// # Errors
+/// [`cagd_core::Error::DegreeOutOfRange`] for `n > MAX_DEGREE` (excluded by `Method::check`).
+pub(crate) fn truncation(n: usize, m: usize) -> Result<(RatMat, Vec<(f64, Row)>)> {
+    let b2c = bernstein_to_chebyshev(n)?;
+    let c2b = chebyshev_to_bernstein(m)?;
     let kept = RatMat::from_rows((0..=m).map(|k| b2c.row(k).to_vec()).collect());
     let terms = (m + 1..=n).map(|k| (1.0, b2c.row(k).to_vec())).collect();
-    (c2b.mul(&kept), terms)
+    Ok((c2b.mul(&kept)?, terms))
 }
 
 /// `x^x` for a small non-negative integer (`0^0 = 1`), exact.
@@ -95,7 +57,10 @@ fn self_pow(x: i64) -> Q {
 /// Seed 000 §14.5, Theorem 14.5.2 (`r + p + 1 < m`) or Corollary 14.5.2 (`m = r + p + 1`):
 /// the exact `(m+1) x (n+1)` operator and its bound terms
 /// `(p+1)^(p+1) (r+1)^(r+1) / (p+r+2)^(p+r+2) * ||P^III_k||`, `k = M+1..=N`.
-pub(crate) fn constrained(n: usize, m: usize, r: i32, p: i32) -> (RatMat, Vec<(f64, Row)>) {
+///
+/// # Errors
+/// As [`truncation`].
+pub(crate) fn constrained(n: usize, m: usize, r: i32, p: i32) -> Result<(RatMat, Vec<(f64, Row)>)> {
     let (left, right) = end_points(n, m, r, p);
     let (ni, mi, ri, pi) = (to_i(n), to_i(m), i64::from(r), i64::from(p));
     let mut rows: Vec<Row> = left.clone();
@@ -113,11 +78,11 @@ pub(crate) fn constrained(n: usize, m: usize, r: i32, p: i32) -> (RatMat, Vec<(f
                 })
                 .collect(),
         );
-        let b2c = bernstein_to_chebyshev(idx(big_n));
+        let b2c = bernstein_to_chebyshev(idx(big_n))?;
         // P^III = (B->Cheb) P^II   (14.5.15)
-        let p3 = b2c.mul(&p2);
+        let p3 = b2c.mul(&p2)?;
         let kept = RatMat::from_rows((0..=big_m).map(|k| p3.row(idx(k)).to_vec()).collect());
-        let rr = chebyshev_to_bernstein(idx(big_m)).mul(&kept);
+        let rr = chebyshev_to_bernstein(idx(big_m))?.mul(&kept)?;
         // Q_i = R_{i-r-1} C(M, i-r-1) / C(m, i)   (14.5.16)
         for i in (ri + 1)..=(mi - pi - 1) {
             let f = binom_q(big_m, i - ri - 1) / binom_q(mi, i);
@@ -130,7 +95,7 @@ pub(crate) fn constrained(n: usize, m: usize, r: i32, p: i32) -> (RatMat, Vec<(f
         }
     }
     rows.extend(right);
-    (RatMat::from_rows(rows), terms)
+    Ok((RatMat::from_rows(rows), terms))
 }
 
 #[cfg(test)]
@@ -140,16 +105,24 @@ mod tests {
     #[test]
     fn conversions_are_inverse() {
         for nn in [0, 1, 2, 5, 9] {
-            let prod = chebyshev_to_bernstein(nn).mul(&bernstein_to_chebyshev(nn));
+            let prod = chebyshev_to_bernstein(nn)
+                .unwrap()
+                .mul(&bernstein_to_chebyshev(nn).unwrap())
+                .unwrap();
             assert_eq!(prod, RatMat::identity(nn + 1), "N = {nn}");
         }
     }
 
+    /// Pins the orientation this module relies on: column `k` of `chebyshev_to_bernstein(K)`
+    /// holds the Bernstein coefficients of `T_k(2t-1)`, and `bernstein_to_chebyshev` maps
+    /// them to the unit vector `e_k` (row `k` is the functional of `c_k`).
     #[test]
     fn chebyshev_bernstein_coefficients_closed_form() {
         // SPEC-reduce §3: T_k(2t-1) = sum_i (-1)^(k-i) C(2k,2i)/C(k,i) B_i^k(t).
         for k in 0..7usize {
-            let a = chebyshev_to_bernstein(k);
+            let a = chebyshev_to_bernstein(k).unwrap();
+            let f = bernstein_to_chebyshev(k).unwrap();
+            let mut coeffs = Vec::new();
             for i in 0..=k {
                 let (ki, ii) = (to_i(k), to_i(i));
                 let mut e = binom_q(2 * ki, 2 * ii) / binom_q(ki, ii);
@@ -157,6 +130,18 @@ mod tests {
                     e = -e;
                 }
                 assert_eq!(*a.at(i, k), e);
+                coeffs.push(e);
+            }
+            for j in 0..=k {
+                let c: Q = f.row(j).iter().zip(&coeffs).map(|(x, y)| x * y).sum();
+                assert_eq!(
+                    c,
+                    if j == k {
+                        Q::one()
+                    } else {
+                        num_traits::Zero::zero()
+                    }
+                );
             }
         }
     }

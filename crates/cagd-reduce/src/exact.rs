@@ -3,7 +3,7 @@
 //! exact integer/rational arithmetic; evaluate in f64 only at the end"). Exact arithmetic has
 //! no conditioning problem, so no normal equations are ever formed in floating point.
 
-use cagd_core::{Error, Result, binomial};
+use cagd_core::{Error, ExactMatrix, Result, binomial};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -37,46 +37,46 @@ pub(crate) fn pow2(e: i64) -> Q {
     }
 }
 
-/// A dense row-major matrix of exact rationals.
+/// A dense matrix of exact rationals: a thin layer over [`cagd_core::ExactMatrix`] (which
+/// does the arithmetic: integer-scaled products, fraction-free solves) adding the
+/// row-building and rounding helpers the operator code of this crate uses.
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) struct RatMat {
-    pub(crate) rows: usize,
-    pub(crate) cols: usize,
-    pub(crate) data: Vec<Q>,
-}
+pub(crate) struct RatMat(ExactMatrix);
 
 impl RatMat {
     /// The zero matrix.
     pub(crate) fn zeros(rows: usize, cols: usize) -> Self {
-        Self {
-            rows,
-            cols,
-            data: vec![Q::zero(); rows * cols],
-        }
+        Self(ExactMatrix::zeros(rows, cols))
     }
 
     /// The identity.
     pub(crate) fn identity(n: usize) -> Self {
-        let mut m = Self::zeros(n, n);
-        for i in 0..n {
-            m.data[i * n + i] = Q::one();
-        }
-        m
+        Self(ExactMatrix::identity(n))
     }
 
-    /// Entry `(i, j)`.
+    /// A copy of a cagd-core exact matrix.
+    pub(crate) fn from_exact(m: &ExactMatrix) -> Self {
+        Self(m.clone())
+    }
+
+    /// Number of rows.
+    pub(crate) fn nrows(&self) -> usize {
+        self.0.nrows()
+    }
+
+    /// Number of columns.
+    pub(crate) fn ncols(&self) -> usize {
+        self.0.ncols()
+    }
+
+    /// Entry `(i, j)` (indices are internal and in range).
     pub(crate) fn at(&self, i: usize, j: usize) -> &Q {
-        &self.data[i * self.cols + j]
-    }
-
-    /// Mutable entry `(i, j)`.
-    pub(crate) fn at_mut(&mut self, i: usize, j: usize) -> &mut Q {
-        &mut self.data[i * self.cols + j]
+        &self.0[(i, j)]
     }
 
     /// Row `i` as a slice.
     pub(crate) fn row(&self, i: usize) -> &[Q] {
-        &self.data[i * self.cols..(i + 1) * self.cols]
+        self.0.row(i)
     }
 
     /// Builds a matrix from rows of equal length.
@@ -84,117 +84,56 @@ impl RatMat {
         let r = rows.len();
         let c = rows.first().map_or(0, Vec::len);
         debug_assert!(rows.iter().all(|x| x.len() == c));
-        Self {
-            rows: r,
-            cols: c,
-            data: rows.into_iter().flatten().collect(),
-        }
+        let mut it = rows.into_iter().flatten();
+        Self(ExactMatrix::from_fn(r, c, |_, _| {
+            it.next().unwrap_or_else(Q::zero)
+        }))
     }
 
-    /// `self * other` (skipping zero entries, which are frequent in banded operators).
-    pub(crate) fn mul(&self, other: &RatMat) -> RatMat {
-        debug_assert_eq!(self.cols, other.rows);
-        let mut out = RatMat::zeros(self.rows, other.cols);
-        for i in 0..self.rows {
-            for k in 0..self.cols {
-                let a = self.at(i, k);
-                if a.is_zero() {
-                    continue;
-                }
-                for j in 0..other.cols {
-                    let b = other.at(k, j);
-                    if !b.is_zero() {
-                        *out.at_mut(i, j) += a * b;
-                    }
-                }
-            }
-        }
-        out
+    /// `self * other`, exact.
+    ///
+    /// # Errors
+    /// [`Error::LengthMismatch`] on mismatched shapes (an internal error).
+    pub(crate) fn mul(&self, other: &RatMat) -> Result<RatMat> {
+        self.0.mul(&other.0).map(Self)
     }
 
     /// `self - other`.
-    pub(crate) fn sub(&self, other: &RatMat) -> RatMat {
-        debug_assert!(self.rows == other.rows && self.cols == other.cols);
-        let data = self
-            .data
-            .iter()
-            .zip(&other.data)
-            .map(|(a, b)| a - b)
-            .collect();
-        RatMat {
-            rows: self.rows,
-            cols: self.cols,
-            data,
-        }
+    ///
+    /// # Errors
+    /// [`Error::LengthMismatch`] on mismatched shapes (an internal error).
+    pub(crate) fn sub(&self, other: &RatMat) -> Result<RatMat> {
+        self.0.sub(&other.0).map(Self)
     }
 
     /// The transpose.
     pub(crate) fn transpose(&self) -> RatMat {
-        let mut t = RatMat::zeros(self.cols, self.rows);
-        for i in 0..self.rows {
-            for j in 0..self.cols {
-                *t.at_mut(j, i) = self.at(i, j).clone();
-            }
-        }
-        t
+        Self(self.0.transpose())
     }
 
-    /// Solves `self X = rhs` exactly (Gauss–Jordan with the first non-zero pivot).
+    /// Solves `self X = rhs` exactly (fraction-free Gauss–Jordan, [`ExactMatrix::solve`]).
     ///
     /// # Errors
-    /// [`Error::Singular`] when `self` is singular (never for the SPD systems of this crate).
+    /// [`Error::Singular`] naming `what` when `self` is singular (never for the SPD systems
+    /// of this crate); [`Error::LengthMismatch`] on mismatched shapes.
     pub(crate) fn solve(&self, rhs: &RatMat, what: &'static str) -> Result<RatMat> {
-        debug_assert!(self.rows == self.cols && rhs.rows == self.rows);
-        let n = self.rows;
-        let mut a = self.clone();
-        let mut b = rhs.clone();
-        for col in 0..n {
-            let piv = (col..n)
-                .find(|&r| !a.at(r, col).is_zero())
-                .ok_or(Error::Singular { what })?;
-            if piv != col {
-                for j in 0..n {
-                    a.data.swap(piv * n + j, col * n + j);
-                }
-                for j in 0..b.cols {
-                    b.data.swap(piv * b.cols + j, col * b.cols + j);
-                }
-            }
-            let inv = a.at(col, col).recip();
-            for j in 0..n {
-                let v = a.at(col, j) * &inv;
-                *a.at_mut(col, j) = v;
-            }
-            for j in 0..b.cols {
-                let v = b.at(col, j) * &inv;
-                *b.at_mut(col, j) = v;
-            }
-            for r in 0..n {
-                if r == col || a.at(r, col).is_zero() {
-                    continue;
-                }
-                let f = a.at(r, col).clone();
-                for j in col..n {
-                    let v = a.at(col, j) * &f;
-                    *a.at_mut(r, j) -= v;
-                }
-                for j in 0..b.cols {
-                    let v = b.at(col, j) * &f;
-                    *b.at_mut(r, j) -= v;
-                }
-            }
+        match self.0.solve(&rhs.0) {
+            Ok(x) => Ok(Self(x)),
+            Err(Error::Singular { .. }) => Err(Error::Singular { what }),
+            Err(e) => Err(e),
         }
-        Ok(b)
     }
 
     /// Every entry rounded once to the nearest `f64`, row-major.
     pub(crate) fn to_f64(&self) -> Vec<f64> {
-        self.data.iter().map(q_to_f64).collect()
+        (0..self.nrows())
+            .flat_map(|i| self.row(i).iter().map(q_to_f64))
+            .collect()
     }
 
     /// `max_i sum_j |a_ij|` (the infinity norm), rounded up generously.
     pub(crate) fn inf_norm(&self) -> f64 {
-        (0..self.rows)
+        (0..self.nrows())
             .map(|i| self.row(i).iter().map(|x| q_to_f64(&x.abs())).sum::<f64>())
             .fold(0.0, f64::max)
             * (1.0 + 1e-12)
@@ -233,9 +172,14 @@ pub(crate) fn scaled(a: &Q, x: &[Q]) -> Row {
     x.iter().map(|u| a * u).collect()
 }
 
-/// A rational matrix stored as an integer matrix over one common denominator. Products of
-/// many step operators (stepwise one-degree methods) stay fast this way: no gcd per
-/// operation, only one normalisation per entry at the end.
+/// A rational matrix stored as an integer matrix over one common denominator.
+///
+/// Why it exists next to [`ExactMatrix`]: the stepwise one-degree methods compose `n - m`
+/// step operators. [`ExactMatrix::mul`] rescales every row and column to integers and
+/// normalises every entry (a gcd each) after each product; here the whole matrix keeps one
+/// denominator, a product multiplies the two denominators, and entries are normalised once
+/// at the end ([`Scaled::to_rat`]). The step operators have small denominators, so the
+/// un-normalised products stay small and the composition is a pure big-integer loop.
 pub(crate) struct Scaled {
     rows: usize,
     cols: usize,
@@ -261,15 +205,12 @@ impl Scaled {
     /// A rational matrix over the lcm of its denominators.
     pub(crate) fn from_rat(m: &RatMat) -> Self {
         use num_integer::Integer;
-        let den = m.data.iter().fold(BigInt::one(), |l, x| l.lcm(x.denom()));
-        let num = m
-            .data
-            .iter()
-            .map(|x| x.numer() * (&den / x.denom()))
-            .collect();
+        let entries = || (0..m.nrows()).flat_map(|i| m.row(i));
+        let den = entries().fold(BigInt::one(), |l, x| l.lcm(x.denom()));
+        let num = entries().map(|x| x.numer() * (&den / x.denom())).collect();
         Self {
-            rows: m.rows,
-            cols: m.cols,
+            rows: m.nrows(),
+            cols: m.ncols(),
             num,
             den,
         }
@@ -303,20 +244,14 @@ impl Scaled {
     /// `sum_j g_j S_j`: the functional `g` of intermediate points expressed in the inputs.
     pub(crate) fn row_times(&self, g: &[Q]) -> Row {
         let gs = Scaled::from_rat(&RatMat::from_rows(vec![g.to_vec()]));
-        gs.mul(self).to_rat().data
+        gs.mul(self).to_rat().row(0).to_vec()
     }
 
     /// Back to normalised rationals.
     pub(crate) fn to_rat(&self) -> RatMat {
-        RatMat {
-            rows: self.rows,
-            cols: self.cols,
-            data: self
-                .num
-                .iter()
-                .map(|x| Q::new(x.clone(), self.den.clone()))
-                .collect(),
-        }
+        RatMat(ExactMatrix::from_fn(self.rows, self.cols, |i, j| {
+            Q::new(self.num[i * self.cols + j].clone(), self.den.clone())
+        }))
     }
 }
 
@@ -328,17 +263,15 @@ pub(crate) fn q_to_f64(x: &Q) -> f64 {
 /// The elevation matrix from degree `m` to degree `n >= m`, `(n+1) x (m+1)`,
 /// `a_ij = C(m,j) C(n-m,i-j) / C(n,i)` (SPEC-reduce §0; seed 000 eq. 14.4.4 in closed form).
 pub(crate) fn elevation(m: usize, n: usize) -> RatMat {
-    let mut a = RatMat::zeros(n + 1, m + 1);
     let (mi, ni) = (to_i(m), to_i(n));
-    for i in 0..=ni {
-        for j in 0..=mi {
-            if i >= j && i - j <= ni - mi {
-                *a.at_mut(idx(i), idx(j)) =
-                    binom_q(mi, j) * binom_q(ni - mi, i - j) / binom_q(ni, i);
-            }
+    RatMat(ExactMatrix::from_fn(n + 1, m + 1, |i, j| {
+        let (i, j) = (to_i(i), to_i(j));
+        if i >= j && i - j <= ni - mi {
+            binom_q(mi, j) * binom_q(ni - mi, i - j) / binom_q(ni, i)
+        } else {
+            Q::zero()
         }
-    }
-    a
+    }))
 }
 
 /// `usize -> i64` for degrees (all <= 130).
@@ -369,7 +302,7 @@ mod tests {
             vec![frac(1, 1), frac(3, 1)],
         ]);
         let x = a.solve(&RatMat::identity(2), "test").unwrap();
-        assert_eq!(a.mul(&x), RatMat::identity(2));
+        assert_eq!(a.mul(&x).unwrap(), RatMat::identity(2));
         let s = RatMat::from_rows(vec![
             vec![frac(1, 1), frac(2, 1)],
             vec![frac(2, 1), frac(4, 1)],

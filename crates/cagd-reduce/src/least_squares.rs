@@ -19,7 +19,7 @@ use crate::exact::{Q, RatMat, Row, binom_q, elevation, to_i, unit};
 pub(crate) fn ginv_free(n: usize, m: usize) -> Result<RatMat> {
     let a = elevation(m, n);
     let at = a.transpose();
-    at.mul(&a).solve(&at, "generalized inverse (14.4.6)")
+    at.mul(&a)?.solve(&at, "generalized inverse (14.4.6)")
 }
 
 /// Eqs. 14.4.8–14.4.15: `Q_0 = P_0`, `Q_m = P_n`, and the interior minimises
@@ -46,8 +46,8 @@ pub(crate) fn ginv_ends(n: usize, m: usize) -> Result<RatMat> {
         );
         let act = ac.transpose();
         let x = act
-            .mul(&ac)
-            .solve(&act.mul(&rhs), "generalized inverse with ends (14.4.12)")?;
+            .mul(&ac)?
+            .solve(&act.mul(&rhs)?, "generalized inverse with ends (14.4.12)")?;
         rows.extend((0..m - 1).map(|i| x.row(i).to_vec()));
     }
     rows.push(unit(n + 1, n));

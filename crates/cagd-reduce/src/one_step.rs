@@ -194,7 +194,9 @@ pub(crate) fn step(method: Method, k: usize) -> Step {
 /// not have that form (e.g. G1 with non-zero `l`).
 pub(crate) fn residual_term(op: &RatMat, k: usize) -> Option<(f64, Row)> {
     let c = signs(k);
-    let res = RatMat::identity(k + 1).sub(&crate::exact::elevation(k - 1, k).mul(op));
+    let res = RatMat::identity(k + 1)
+        .sub(&crate::exact::elevation(k - 1, k).mul(op).ok()?)
+        .ok()?;
     let mut coef = Q::zero();
     for i in 0..=k {
         let ratio = res.at(i, 0) / &c[0];

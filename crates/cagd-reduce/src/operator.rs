@@ -101,9 +101,9 @@ pub(crate) fn exact_operator(
         return Ok((s.to_rat(), terms));
     }
     Ok(match method {
-        Method::WatkinsWorsey => truncation(n, m),
-        Method::BogackiWeinsteinXu => constrained(n, m, -1, -1),
-        Method::ConstrainedChebyshev { r, p } => constrained(n, m, r, p),
+        Method::WatkinsWorsey => truncation(n, m)?,
+        Method::BogackiWeinsteinXu => constrained(n, m, -1, -1)?,
+        Method::ConstrainedChebyshev { r, p } => constrained(n, m, r, p)?,
         // Identical exact operator (Lutterkort–Peters–Reif; unit test
         // `l2_free_equals_generalized_inverse`), and the Gram system is much cheaper in
         // rationals than the normal equations of eq. 14.4.6.
