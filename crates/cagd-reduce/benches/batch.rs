@@ -5,44 +5,21 @@
 //! 15 runs each), so that results are comparable across noisy machines.
 
 use std::hint::black_box;
-use std::time::Instant;
 
 use cagd_reduce::{Method, operator, reduce_batch};
 use criterion::{Criterion, criterion_group, criterion_main};
+
+mod common;
+use common::{median_ns, random_input};
 
 const N_CURVES: usize = 100_000;
 const DIM: usize = 3;
 const PAIRS: [(usize, usize); 5] = [(5, 4), (10, 5), (15, 10), (20, 10), (30, 15)];
 
-fn random_input(len: usize) -> Vec<f64> {
-    let mut s: u64 = 0x9E37_79B9_7F4A_7C15;
-    (0..len)
-        .map(|_| {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            (s >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        })
-        .collect()
-}
-
-fn median_ns(mut f: impl FnMut()) -> f64 {
-    f();
-    let mut t: Vec<f64> = (0..15)
-        .map(|_| {
-            let s = Instant::now();
-            f();
-            s.elapsed().as_secs_f64() * 1e9
-        })
-        .collect();
-    t.sort_by(f64::total_cmp);
-    t[t.len() / 2]
-}
-
 fn bench(c: &mut Criterion) {
     for (n, m) in PAIRS {
         let op = operator(Method::GeneralizedInverse, n, m).expect("operator");
-        let input = random_input(N_CURVES * (n + 1) * DIM);
+        let input = random_input(N_CURVES * (n + 1) * DIM, 0);
         let mut output = vec![0.0; N_CURVES * (m + 1) * DIM];
         let mut copy_in = vec![0.0; input.len()];
         let mut copy_out = vec![0.0; output.len()];

@@ -5,7 +5,6 @@
 //! Besides criterion's report, prints `ns/patch` (median of 15 runs over 1000 patches).
 
 use std::hint::black_box;
-use std::time::Instant;
 
 use cagd_core::{TensorPatch, TriPatch, tri_count};
 use cagd_reduce::{
@@ -14,33 +13,11 @@ use cagd_reduce::{
 };
 use criterion::{Criterion, criterion_group, criterion_main};
 
+mod common;
+use common::{median_ns, random_input};
+
 const N_PATCHES: usize = 1000;
 const DIM: usize = 3;
-
-fn random_input(len: usize, seed: u64) -> Vec<f64> {
-    let mut s: u64 = 0x9E37_79B9_7F4A_7C15 ^ seed;
-    (0..len)
-        .map(|_| {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            (s >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        })
-        .collect()
-}
-
-fn median_ns(mut f: impl FnMut()) -> f64 {
-    f();
-    let mut t: Vec<f64> = (0..15)
-        .map(|_| {
-            let s = Instant::now();
-            f();
-            s.elapsed().as_secs_f64() * 1e9
-        })
-        .collect();
-    t.sort_by(f64::total_cmp);
-    t[t.len() / 2]
-}
 
 fn bench(c: &mut Criterion) {
     let tensors: Vec<TensorPatch> = (0..N_PATCHES)
