@@ -114,7 +114,7 @@ const EXAMPLES: &[Example] = &[
 ];
 
 /// Median time of `reps` runs of `f`, in microseconds.
-fn time_us(reps: usize, mut f: impl FnMut()) -> f64 {
+pub(crate) fn time_us(reps: usize, mut f: impl FnMut()) -> f64 {
     let mut times: Vec<f64> = (0..reps)
         .map(|_| {
             let t = Instant::now();
@@ -154,10 +154,10 @@ pub(crate) fn run(out: &Path) -> Result<(), String> {
             };
             for (label, how) in variants {
                 let nm = format!("{} -> {}", curve.degree(), ex.target);
-                match reduce_curve(&curve, ex.target, how) {
+                match reduce_curve(&curve, ex.target, how, true) {
                     Ok(red) => {
                         let us = time_us(21, || {
-                            let _ = reduce_curve_unmeasured(&curve, ex.target, how);
+                            let _ = reduce_curve(&curve, ex.target, how, false);
                         });
                         let _ = writeln!(
                             table,
@@ -186,22 +186,4 @@ pub(crate) fn run(out: &Path) -> Result<(), String> {
     crate::demo_splines::run(out, &mut table)?;
     print!("{table}");
     Ok(())
-}
-
-/// The reduction alone (no sampling), for timing.
-fn reduce_curve_unmeasured(
-    c: &BezierCurve,
-    m: usize,
-    how: Plan,
-) -> cagd_reduce::Result<BezierCurve> {
-    match how {
-        Plan::Linear(method) => cagd_reduce::reduce(c, m, method).map(|r| r.curve),
-        Plan::PerturbationG1 => {
-            let mut cur = c.clone();
-            while cur.degree() > m {
-                cur = cagd_reduce::reduce_g1_optimal(&cur, false)?.curve;
-            }
-            Ok(cur)
-        }
-    }
 }

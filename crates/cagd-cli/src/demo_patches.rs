@@ -4,11 +4,11 @@
 
 use std::fmt::Write as _;
 use std::path::Path;
-use std::time::Instant;
 
 use cagd_core::{TensorPatch, TriPatch};
 use cagd_reduce::{PatchOptions, TriOptions, reduce_tensor, reduce_triangle};
 
+use crate::demo::time_us;
 use crate::methods::plan;
 use crate::patch_cmd::{tensor, tensor_method, tri_method, triangle};
 use crate::picture::panels;
@@ -51,19 +51,6 @@ struct Case<T> {
     orders: Option<(i64, i64)>,
 }
 
-/// Median time of 11 unmeasured runs of `f`, in microseconds (operators already cached).
-fn time_us(mut f: impl FnMut()) -> f64 {
-    let mut t: Vec<f64> = (0..11)
-        .map(|_| {
-            let t0 = Instant::now();
-            f();
-            t0.elapsed().as_secs_f64() * 1e6
-        })
-        .collect();
-    t.sort_by(f64::total_cmp);
-    t[t.len() / 2]
-}
-
 /// Appends the patch rows to `table` and writes `patches.svg` into `out`.
 pub(crate) fn run(out: &Path, table: &mut String) -> Result<(), String> {
     let _ = writeln!(table, "-- seed 000 §14.3, patches");
@@ -97,7 +84,7 @@ pub(crate) fn run(out: &Path, table: &mut String) -> Result<(), String> {
         let method = tensor_method(name, how)?;
         let (json, result) = tensor(&tp, target, method, None).map_err(|e| e.to_string())?;
         let opts = PatchOptions::new(method);
-        let us = time_us(|| {
+        let us = time_us(11, || {
             let _ = reduce_tensor(&tp, target, &opts);
         });
         row(
@@ -144,7 +131,7 @@ pub(crate) fn run(out: &Path, table: &mut String) -> Result<(), String> {
         };
         let (json, result) = triangle(&tri, target, method, None).map_err(|e| e.to_string())?;
         let opts = TriOptions::new(method);
-        let us = time_us(|| {
+        let us = time_us(11, || {
             let _ = reduce_triangle(&tri, target, &opts);
         });
         row(

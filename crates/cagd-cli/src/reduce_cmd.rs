@@ -65,12 +65,18 @@ pub(crate) fn piecewise_report_json(r: &PiecewiseReport) -> Value {
     })
 }
 
-/// Reduces a Bézier curve to degree `m` by a named plan, measuring the error.
-pub(crate) fn reduce_curve(c: &BezierCurve, m: usize, how: Plan) -> cagd_reduce::Result<Reduction> {
+/// Reduces a Bézier curve to degree `m` by a named plan, measuring the error when
+/// `measure` is set.
+pub(crate) fn reduce_curve(
+    c: &BezierCurve,
+    m: usize,
+    how: Plan,
+    measure: bool,
+) -> cagd_reduce::Result<Reduction> {
     match how {
         Plan::Linear(method) => {
             let opts = ReduceOptions {
-                measure: true,
+                measure,
                 ..ReduceOptions::new(method, m)
             };
             cagd_reduce::reduce_with(c, &opts)
@@ -91,7 +97,11 @@ pub(crate) fn reduce_curve(c: &BezierCurve, m: usize, how: Plan) -> cagd_reduce:
             }
             report.degree_from = c.degree();
             report.error_bound = Some(bound);
-            report.max_error = Some(max_deviation(c, &cur)?);
+            report.max_error = if measure {
+                Some(max_deviation(c, &cur)?)
+            } else {
+                None
+            };
             Ok(Reduction { curve: cur, report })
         }
     }
@@ -155,7 +165,7 @@ pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<O
                     });
                     continue;
                 }
-                let red = reduce_curve(c, args.to.0, how).map_err(fail)?;
+                let red = reduce_curve(c, args.to.0, how, true).map_err(fail)?;
                 let result = Shape::Bezier(red.curve.clone());
                 let mut v = result.to_json();
                 v["report"] = report_json(&red.report);
