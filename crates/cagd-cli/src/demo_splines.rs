@@ -4,11 +4,11 @@
 
 use std::fmt::Write as _;
 use std::path::Path;
-use std::time::Instant;
 
 use cagd_core::BSplineCurve;
 use cagd_reduce::{BSplineOptions, Merge, Method, reduce_bspline, reduce_uniform_bspline};
 
+use crate::demo::time_us;
 use crate::picture::panels;
 use crate::shape::Shape;
 use crate::svg;
@@ -50,9 +50,10 @@ pub(crate) fn run(out: &Path, table: &mut String) -> Result<(), String> {
         ("C1 Hermite, exact merge", Merge::Exact),
         ("C1 Hermite, lossy merge", Merge::Lossy),
     ] {
-        let t0 = Instant::now();
         let red = reduce_uniform_bspline(&c, 3, hermite, merge).map_err(|e| e.to_string())?;
-        let us = t0.elapsed().as_secs_f64() * 1e6;
+        let us = time_us(11, || {
+            let _ = reduce_uniform_bspline(&c, 3, hermite, merge);
+        });
         let measured =
             cagd_reduce::spline_max_deviation(&c, &red.curve).map_err(|e| e.to_string())?;
         line(
@@ -77,9 +78,14 @@ pub(crate) fn run(out: &Path, table: &mut String) -> Result<(), String> {
             measure: true,
             ..BSplineOptions::new(3, tol)
         };
-        let t0 = Instant::now();
         let red = reduce_bspline(&nurbs, &opts).map_err(|e| e.to_string())?;
-        let us = t0.elapsed().as_secs_f64() * 1e6;
+        let unmeasured = BSplineOptions {
+            measure: false,
+            ..opts
+        };
+        let us = time_us(5, || {
+            let _ = reduce_bspline(&nurbs, &unmeasured);
+        });
         let label = format!("tol {tol:e}, {} -> {} spans", red.spans_in, red.spans_out);
         line(
             table,
