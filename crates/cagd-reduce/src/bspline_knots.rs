@@ -19,6 +19,29 @@ pub(crate) struct LocalBounds {
 }
 
 impl LocalBounds {
+    /// Bounds `err[i]` of the spans `[breaks[i], breaks[i + 1]]` (`breaks` increasing,
+    /// one longer than `err`).
+    #[allow(dead_code, reason = "TEMP: users land in this session")]
+    pub(crate) fn new(breaks: Vec<f64>, err: Vec<f64>) -> Self {
+        debug_assert_eq!(breaks.len(), err.len() + 1);
+        Self { breaks, err }
+    }
+
+    /// The bound of every span.
+    #[allow(dead_code, reason = "TEMP: users land in this session")]
+    pub(crate) fn spans(&self) -> &[f64] {
+        &self.err
+    }
+
+    /// Adds `amount` to the bound of every span meeting the open interval `(a, b)`.
+    #[allow(dead_code, reason = "TEMP: users land in this session")]
+    pub(crate) fn charge(&mut self, a: f64, b: f64, amount: f64) {
+        let r = self.range(a, b);
+        for e in &mut self.err[r] {
+            *e += amount;
+        }
+    }
+
     /// The span range `lo..hi` of the partition meeting the open interval `(a, b)`.
     fn range(&self, a: f64, b: f64) -> std::ops::Range<usize> {
         let n = self.err.len();
@@ -39,7 +62,7 @@ impl LocalBounds {
     /// points `r-2p-1 .. r-s+p+2` and their knots), which holds every point the removal
     /// and its certificate involve, so each removal costs `O(p^2)` plus a splice instead of
     /// `O(n)` allocations.
-    fn try_remove_one(&mut self, c: &mut Raw, v: f64, tol: f64) -> Result<bool> {
+    pub(crate) fn try_remove_one(&mut self, c: &mut Raw, v: f64, tol: f64) -> Result<bool> {
         let (m, n) = (c.degree, c.n_points());
         let s = knot_multiplicity(&c.knots, v);
         let (d0, d1) = (c.knots[m], c.knots[n]);
