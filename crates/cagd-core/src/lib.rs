@@ -57,6 +57,7 @@ mod bezier_curve;
 mod bezier_extract;
 mod bezier_ops;
 mod binomial;
+mod bspline_basis;
 mod bspline_curve;
 mod bspline_eval;
 mod bspline_merge;
@@ -69,6 +70,7 @@ pub mod kernel;
 mod knot_insert;
 mod knot_removal;
 mod knots;
+mod quadrature;
 mod tensor_ops;
 mod tensor_patch;
 mod tri_ops;
@@ -87,6 +89,7 @@ pub use binomial::{
     MAX_BINOMIAL_N, MAX_DEGREE, binomial, binomial_f64, check_degree, sign_binomial_f64,
     try_binomial,
 };
+pub use bspline_basis::basis_functions;
 pub use bspline_curve::BSplineCurve;
 pub use bspline_surface::{BSplineSurface, SurfacePatchPiece};
 pub use distance::{curve_distance, max_distance_1d};
@@ -95,6 +98,7 @@ pub use error::{Error, Result};
 pub use exact::ExactMatrix;
 pub use knot_removal::KnotRemoval;
 pub use knots::{check_knots, find_span, knot_multiplicity};
+pub use quadrature::{MAX_GAUSS_NODES, gauss_legendre};
 pub use tensor_patch::TensorPatch;
 pub use tri_patch::{TriPatch, tri_count, tri_index};
 pub use uniform_bspline::{s_matrix, s_matrix_exact, s_matrix_inverse, s_matrix_inverse_exact};

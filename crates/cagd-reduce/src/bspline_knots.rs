@@ -21,20 +21,17 @@ pub(crate) struct LocalBounds {
 impl LocalBounds {
     /// Bounds `err[i]` of the spans `[breaks[i], breaks[i + 1]]` (`breaks` increasing,
     /// one longer than `err`).
-    #[allow(dead_code, reason = "TEMP: users land in this session")]
     pub(crate) fn new(breaks: Vec<f64>, err: Vec<f64>) -> Self {
         debug_assert_eq!(breaks.len(), err.len() + 1);
         Self { breaks, err }
     }
 
     /// The bound of every span.
-    #[allow(dead_code, reason = "TEMP: users land in this session")]
     pub(crate) fn spans(&self) -> &[f64] {
         &self.err
     }
 
     /// Adds `amount` to the bound of every span meeting the open interval `(a, b)`.
-    #[allow(dead_code, reason = "TEMP: users land in this session")]
     pub(crate) fn charge(&mut self, a: f64, b: f64, amount: f64) {
         let r = self.range(a, b);
         for e in &mut self.err[r] {

@@ -123,10 +123,14 @@
 #![forbid(unsafe_code)]
 
 mod alg_14_2_1;
+mod banded_lsq;
 mod batch;
+mod bspline_fit;
+mod bspline_global;
 mod bspline_knots;
 mod bspline_measure;
 mod bspline_reduce;
+mod bspline_segments;
 mod bspline_surface_reduce;
 mod bspline_surface_tolerance;
 mod bspline_uniform;
@@ -158,7 +162,9 @@ mod wn_table;
 pub use alg_14_2_1::{reduce_to_tolerance_alg_14_2_1, subdivision_levels};
 pub use batch::reduce_batch;
 pub use bspline_measure::spline_max_deviation;
-pub use bspline_reduce::{BSplineOptions, BSplineReduction, BSplineReport, reduce_bspline};
+pub use bspline_reduce::{
+    BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy, reduce_bspline,
+};
 pub use bspline_surface_reduce::{SurfaceOptions, SurfaceReduction, reduce_bspline_surface};
 pub use bspline_surface_tolerance::{MAX_SURFACE_LEVEL, reduce_bspline_surface_to_tolerance};
 pub use bspline_uniform::{Merge, UniformReduction, reduce_uniform_bspline};

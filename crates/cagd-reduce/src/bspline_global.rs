@@ -1,0 +1,183 @@
+//! The global-fit strategy of [`crate::reduce_bspline`] ([`BSplineStrategy::GlobalFit`]):
+//! the degree-`m` spline space with the input's knots at the multiplicities that keep its
+//! continuity, the L2-best fit in it ([`crate::bspline_fit`]), adaptive refinement of the
+//! spans whose certified bound exceeds their share of the tolerance, then knot removal
+//! within the rest, tracked per span ([`crate::bspline_knots`]).
+//!
+//! Why a global fit: reducing segment by segment can only join segments with Hermite data
+//! matched on both sides, which needs `2k + 1 <= m` (C1 at best for cubics), while the
+//! spline space itself carries `C^(m-1)` joins; and a fit over the whole space spreads the
+//! error instead of pinning each joint to the input, so fewer spans are needed.
+
+use cagd_core::{BSplineCurve, Error, Result, knot_multiplicity};
+
+use crate::bspline_fit::{Source, SpanBound, fit, span_bounds};
+use crate::bspline_knots::{LocalBounds, Raw};
+use crate::bspline_measure::spline_max_deviation;
+use crate::bspline_reduce::{
+    BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy, order_at,
+};
+
+/// Share of the tolerance the fit must meet on every span; the rest is for knot removal.
+const FIT_SHARE: f64 = 0.9;
+
+/// Most refine-and-refit rounds (each at least halves the offending spans).
+const MAX_ROUNDS: usize = 60;
+
+/// Most spans the refinement may create (a safety net; a span whose tolerance is below its
+/// rounding floor stops the refinement at once).
+pub(crate) const MAX_FIT_SPANS: usize = 1 << 20;
+
+/// The error for a tolerance the refinement cannot reach.
+fn unreachable(why: &'static str) -> Error {
+    Error::ConditionNotMet {
+        eq: "tolerance",
+        why,
+    }
+}
+
+/// The working (homogeneous, for NURBS) polynomial spline of `curve`.
+fn working(curve: &BSplineCurve) -> Result<BSplineCurve> {
+    if curve.is_rational() {
+        BSplineCurve::new(
+            curve.degree(),
+            curve.knots().to_vec(),
+            curve.homogeneous_points(),
+            curve.dim() + 1,
+        )
+    } else {
+        Ok(curve.clone())
+    }
+}
+
+/// The clamped degree-`m` knot vector on the breaks of `src`: the domain ends `m + 1` times,
+/// each interior break `t` with multiplicity `m - min(k, p - s_t, m - 1)`.
+fn initial_knots(curve: &BSplineCurve, src: &Source, m: usize, k: usize) -> Result<Vec<f64>> {
+    let b = &src.breaks;
+    let mut knots = vec![b[0]; m + 1];
+    for &t in &b[1..b.len() - 1] {
+        let keep = order_at(curve.knots(), curve.degree(), k, t)?.min(m - 1);
+        knots.extend(std::iter::repeat_n(t, m - keep));
+    }
+    knots.extend(std::iter::repeat_n(b[b.len() - 1], m + 1));
+    Ok(knots)
+}
+
+/// The simple knots that split every span above `budget` into
+/// `ceil((bound / budget)^(1/(m+1)))` equal parts (2..=16; the error of a smooth piece
+/// scales like `h^(m+1)`).
+///
+/// # Errors
+/// [`Error::ConditionNotMet`] when a span's rounding floor is above half the budget or the
+/// span is too short to split.
+fn splits(bounds: &[SpanBound], budget: f64, m: usize) -> Result<Vec<f64>> {
+    let mut out = Vec::new();
+    for x in bounds.iter().filter(|x| x.bound > budget) {
+        if x.floor > 0.5 * budget {
+            return Err(unreachable(
+                "the tolerance is below the rounding level of the curve",
+            ));
+        }
+        let ratio = (x.bound / budget).powf(1.0 / (m as f64 + 1.0));
+        let parts = (2..16).find(|&j| j as f64 >= ratio).unwrap_or(16);
+        let h = (x.b - x.a) / parts as f64;
+        if !(x.a + h > x.a && x.a + h < x.b) {
+            return Err(unreachable(
+                "a span cannot be split further (rounding level)",
+            ));
+        }
+        out.extend((1..parts).map(|j| x.a + h * j as f64));
+    }
+    Ok(out)
+}
+
+/// The spline of working points `work` as a model-space curve (NURBS when `rational`).
+fn model_curve(
+    m: usize,
+    knots: Vec<f64>,
+    work: &[f64],
+    dim: usize,
+    rational: bool,
+) -> Result<BSplineCurve> {
+    if !rational {
+        return BSplineCurve::new(m, knots, work.to_vec(), dim);
+    }
+    let mut pts = Vec::with_capacity(work.len() / (dim + 1) * dim);
+    let mut w = Vec::with_capacity(work.len() / (dim + 1));
+    for q in work.chunks_exact(dim + 1) {
+        pts.extend(q[..dim].iter().map(|x| x / q[dim]));
+        w.push(q[dim]);
+    }
+    BSplineCurve::new_rational(m, knots, pts, w, dim)
+}
+
+/// [`BSplineStrategy::GlobalFit`] (see [`crate::reduce_bspline`]; `opts` validated there,
+/// `opts.continuity` set).
+pub(crate) fn reduce_global(
+    curve: &BSplineCurve,
+    opts: &BSplineOptions,
+) -> Result<BSplineReduction> {
+    let (p, m, tol) = (curve.degree(), opts.target, opts.tolerance);
+    let k = opts.continuity.unwrap_or(m - 1);
+    let rational = curve.is_rational();
+    let src = Source::new(
+        &working(curve)?,
+        curve.dim() + usize::from(rational),
+        rational,
+    )?;
+    let mut knots = initial_knots(curve, &src, m, k)?;
+    let budget = FIT_SHARE * tol;
+    let mut rounds = 0;
+    let (points, bounds) = loop {
+        let points = fit(&src, m, &knots)?;
+        let bounds = span_bounds(&src, m, &knots, &points)?;
+        if bounds.iter().all(|x| x.bound <= budget) {
+            break (points, bounds);
+        }
+        rounds += 1;
+        let new = splits(&bounds, budget, m)?;
+        if rounds > MAX_ROUNDS || bounds.len() + new.len() > MAX_FIT_SPANS {
+            return Err(unreachable("the refinement needs too many spans"));
+        }
+        knots.extend(new);
+        knots.sort_by(f64::total_cmp);
+    };
+    let fitted = model_curve(m, knots, &points, curve.dim(), rational)?;
+    let pieces = bounds.len();
+    let segment_bound = bounds.iter().map(|x| x.bound).fold(0.0, f64::max);
+    let mut breaks: Vec<f64> = bounds.iter().map(|x| x.a).collect();
+    breaks.push(bounds[pieces - 1].b);
+    let mut local = LocalBounds::new(breaks, bounds.iter().map(|x| x.bound).collect());
+    let mut raw = Raw::new(&fitted);
+    local.remove_greedily(&mut raw, tol)?;
+    let curve_out = raw.into_curve()?;
+    let max_error = if opts.measure {
+        Some(spline_max_deviation(curve, &curve_out)?)
+    } else {
+        None
+    };
+    let out_knots = curve_out.knots();
+    let mut continuity = Vec::new();
+    for &t in &src.breaks[1..src.breaks.len() - 1] {
+        if knot_multiplicity(out_knots, t) > 0 {
+            continuity.push((t, order_at(curve.knots(), p, k, t)?.min(m - 1)));
+        }
+    }
+    let spans_out = curve_out.to_beziers()?.len();
+    Ok(BSplineReduction {
+        report: BSplineReport {
+            strategy: BSplineStrategy::GlobalFit,
+            degree_from: p,
+            degree_to: m,
+            tolerance: tol,
+            error_bound: local.max_bound(),
+            segment_bound,
+            max_error,
+            pieces,
+            continuity,
+        },
+        curve: curve_out,
+        spans_in: src.breaks.len() - 1,
+        spans_out,
+    })
+}
