@@ -3,7 +3,8 @@
 
 use cagd_core::BSplineCurve;
 use cagd_reduce::{
-    BSplineOptions, Merge, reduce_bspline, reduce_uniform_bspline, spline_max_deviation,
+    BSplineOptions, BSplineStrategy, Merge, reduce_bspline, reduce_uniform_bspline,
+    spline_max_deviation,
 };
 
 use crate::boundary::{CResult, Failure, boundary, handle_ref, into_handle, nonnull, out_ref};
@@ -98,7 +99,7 @@ pub unsafe extern "C" fn cagd_bspline_reduce(
         let (s_out, r_out) = unsafe { outputs(spline_out, report_out) }?;
         let bopts = BSplineOptions {
             continuity: Some(o.continuity),
-            method: o.method()?,
+            strategy: BSplineStrategy::Segments(o.method()?),
             measure: o.measure,
             ..BSplineOptions::new(o.target, o.tolerance)
         };

@@ -7,7 +7,8 @@ use std::path::PathBuf;
 pub(crate) const USAGE: &str = "\
 usage:
   cagd reduce --to M[,N] [--method NAME] [--r R] [--p P] [--tol T] [--continuity K]
-              [--merge exact|lossy] [-i FILE] [-o FILE] [--svg FILE]
+              [--merge exact|lossy] [--strategy fit|segments|piegl-tiller-1995]
+              [-i FILE] [-o FILE] [--svg FILE]
   cagd demo [--out DIR]
   cagd --help
 
@@ -18,7 +19,10 @@ pinv-ends, chebyshev (with --r/--p), eck, watkins-worsey, bogacki, l2 (with --r/
 --continuity). --to M,N gives a tensor patch's target degrees (--to M means M in both).
 A B-spline with uniform knots and no --tol goes through seed 001's matrix pipeline, its
 segments merged exactly (--merge exact, multiple knots) or by averaging (--merge lossy);
-with --tol any B-spline / NURBS is reduced within the tolerance, keeping its continuity.
+with --tol any B-spline / NURBS is reduced within the tolerance, keeping its continuity:
+--strategy fit (default; global least-squares fit, up to C^(M-1)), segments (per-segment
+reduction by --method l2 or chebyshev, up to C^((M-1)/2); the default when --method is
+given) or piegl-tiller-1995 (the classical algorithm: no subdivision, may fail).
 ";
 
 /// Options of `cagd reduce`.
@@ -34,6 +38,7 @@ pub(crate) struct ReduceArgs {
     pub(crate) output: Option<PathBuf>,
     pub(crate) svg: Option<PathBuf>,
     pub(crate) lossy_merge: bool,
+    pub(crate) strategy: Option<String>,
 }
 
 /// A parsed command line.
@@ -85,6 +90,7 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
                 output: None,
                 svg: None,
                 lossy_merge: false,
+                strategy: None,
             };
             let mut have_to = false;
             while let Some(a) = it.next() {
@@ -98,6 +104,7 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
                         have_to = true;
                     }
                     "--method" => r.method = Some(value(&mut it, a)?.to_string()),
+                    "--strategy" => r.strategy = Some(value(&mut it, a)?.to_string()),
                     "--r" => r.r = Some(parse_num(value(&mut it, a)?, a)?),
                     "--p" => r.p = Some(parse_num(value(&mut it, a)?, a)?),
                     "--tol" => {

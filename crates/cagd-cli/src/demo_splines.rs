@@ -74,7 +74,6 @@ pub(crate) fn run(out: &Path, table: &mut String) -> Result<(), String> {
     let nurbs = nurbs_curve()?;
     for tol in [1e-2, 1e-4] {
         let opts = BSplineOptions {
-            method: Method::L2 { r: 0, p: 0 },
             measure: true,
             ..BSplineOptions::new(3, tol)
         };

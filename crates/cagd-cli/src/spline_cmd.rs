@@ -2,7 +2,9 @@
 //! (no `--tol`), and reduction of any B-spline within a tolerance (`--tol`).
 
 use cagd_core::BSplineCurve;
-use cagd_reduce::{BSplineOptions, Merge, Method, reduce_bspline, reduce_uniform_bspline};
+use cagd_reduce::{
+    BSplineOptions, BSplineStrategy, Merge, Method, reduce_bspline, reduce_uniform_bspline,
+};
 use serde_json::{Value, json};
 
 use crate::args::ReduceArgs;
@@ -52,18 +54,9 @@ pub(crate) fn reduce(
             Ok((v, result))
         }
         Some(tol) => {
-            if !matches!(
-                method,
-                Method::L2 { .. } | Method::ConstrainedChebyshev { .. }
-            ) {
-                return Err(SplineError::Usage(format!(
-                    "B-splines are reduced to a tolerance with l2 or chebyshev segments, not {}",
-                    method.name()
-                )));
-            }
             let opts = BSplineOptions {
                 continuity: args.continuity,
-                method,
+                strategy: strategy(args, method)?,
                 measure: true,
                 ..BSplineOptions::new(m, tol)
             };
@@ -71,7 +64,7 @@ pub(crate) fn reduce(
             let result = Shape::BSpline(red.curve);
             let mut v = result.to_json();
             v["report"] = json!({
-                "method": red.report.method.name(),
+                "strategy": strategy_name(&red.report.strategy),
                 "degree_from": red.report.degree_from,
                 "degree_to": red.report.degree_to,
                 "error_bound": red.report.error_bound,
@@ -80,8 +73,50 @@ pub(crate) fn reduce(
                 "tolerance": tol,
                 "spans_in": red.spans_in,
                 "spans_out": red.spans_out,
+                "pieces_before_knot_removal": red.report.pieces,
+                "continuity": red.report.continuity.iter().map(|(t, k)| json!([t, k])).collect::<Vec<_>>(),
             });
             Ok((v, result))
         }
+    }
+}
+
+/// The strategy of `--strategy` (default `fit`, or `segments` when `--method` is given).
+fn strategy(args: &ReduceArgs, method: Method) -> Result<BSplineStrategy, SplineError> {
+    let name = args
+        .strategy
+        .as_deref()
+        .unwrap_or(if args.method.is_some() {
+            "segments"
+        } else {
+            "fit"
+        });
+    match name {
+        "fit" | "piegl-tiller-1995" if args.method.is_some() => Err(SplineError::Usage(format!(
+            "--method is used by --strategy segments only, not {name}"
+        ))),
+        "fit" => Ok(BSplineStrategy::GlobalFit),
+        "piegl-tiller-1995" => Ok(BSplineStrategy::PieglTiller1995),
+        "segments" => match method {
+            Method::L2 { .. } | Method::ConstrainedChebyshev { .. } => {
+                Ok(BSplineStrategy::Segments(method))
+            }
+            _ => Err(SplineError::Usage(format!(
+                "B-spline segments are reduced to a tolerance with l2 or chebyshev, not {}",
+                method.name()
+            ))),
+        },
+        other => Err(SplineError::Usage(format!(
+            "--strategy: {other:?} is not fit, segments or piegl-tiller-1995"
+        ))),
+    }
+}
+
+/// The name of a strategy in the report (as `--strategy` spells it).
+fn strategy_name(s: &BSplineStrategy) -> String {
+    match s {
+        BSplineStrategy::GlobalFit => "fit".into(),
+        BSplineStrategy::Segments(m) => format!("segments/{}", m.name()),
+        BSplineStrategy::PieglTiller1995 => "piegl-tiller-1995".into(),
     }
 }

@@ -20,6 +20,11 @@ pub enum BSplineStrategy {
     /// with Hermite end data; keeps up to `C^floor((m-1)/2)` (two-sided Hermite data need
     /// `2k + 1 <= m`).
     Segments(Method),
+    /// The classical algorithm of Piegl & Tiller 1995 ([`crate::reduce_bspline_piegl_tiller`]):
+    /// one degree at a time, every knot keeps its multiplicity minus one per degree, never
+    /// subdivides, fails when that is not within the tolerance. Kept as the reference to
+    /// compare with; `continuity` is ignored (the input's is kept where a knot stays).
+    PieglTiller1995,
 }
 
 /// Options of [`reduce_bspline`].
@@ -169,7 +174,9 @@ pub fn reduce_bspline(curve: &BSplineCurve, opts: &BSplineOptions) -> Result<BSp
         });
     }
     let (kmax, why) = match opts.strategy {
-        BSplineStrategy::GlobalFit => (m - 1, "a degree-m spline is at most C^(m-1)"),
+        BSplineStrategy::GlobalFit | BSplineStrategy::PieglTiller1995 => {
+            (m - 1, "a degree-m spline is at most C^(m-1)")
+        }
         BSplineStrategy::Segments(_) => (
             (m - 1) / 2,
             "per-segment Hermite constraints keep at most C^floor((m-1)/2)",
@@ -190,6 +197,9 @@ pub fn reduce_bspline(curve: &BSplineCurve, opts: &BSplineOptions) -> Result<BSp
     };
     match opts.strategy {
         BSplineStrategy::GlobalFit => crate::bspline_global::reduce_global(curve, &opts),
+        BSplineStrategy::PieglTiller1995 => {
+            crate::reduce_bspline_piegl_tiller(curve, m, opts.tolerance, opts.measure)
+        }
         BSplineStrategy::Segments(method) => {
             if !matches!(
                 method,

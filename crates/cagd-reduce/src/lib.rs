@@ -117,7 +117,10 @@
 //! not). [`reduce_bspline`]: any B-spline / NURBS to a tolerance — Bézier extraction,
 //! segments reduced with the end constraints that keep the continuity present at each knot
 //! (up to `C^floor((m-1)/2)`), subdivision where a segment exceeds its share, merge, and knot
-//! removal within the rest of the tolerance. [`reduce_bspline_surface`]: patch-wise;
+//! removal within the rest of the tolerance. [`reduce_bspline_piegl_tiller`]: the classical
+//! algorithm of Piegl & Tiller 1995 (NURBS Book A5.11) as a baseline — one degree at a time,
+//! every knot's multiplicity lowered by one, per-span certified bounds, no subdivision (it
+//! fails where the input is not close to a degree-elevated spline). [`reduce_bspline_surface`]: patch-wise;
 //! [`reduce_bspline_surface_to_tolerance`]: with uniform knot refinement until the certified
 //! bound meets a tolerance.
 #![forbid(unsafe_code)]
@@ -129,6 +132,7 @@ mod bspline_fit;
 mod bspline_global;
 mod bspline_knots;
 mod bspline_measure;
+mod bspline_piegl_tiller;
 mod bspline_reduce;
 mod bspline_segments;
 mod bspline_surface_reduce;
@@ -162,6 +166,7 @@ mod wn_table;
 pub use alg_14_2_1::{reduce_to_tolerance_alg_14_2_1, subdivision_levels};
 pub use batch::reduce_batch;
 pub use bspline_measure::spline_max_deviation;
+pub use bspline_piegl_tiller::reduce_bspline_piegl_tiller;
 pub use bspline_reduce::{
     BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy, reduce_bspline,
 };
