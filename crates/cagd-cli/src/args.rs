@@ -16,13 +16,16 @@ reduce reads one JSON object or an array of objects (stdin by default) and write
 (stdout by default). Methods: forrest, farin, piegl, perturbation, perturbation-g1, pinv,
 pinv-ends, chebyshev (with --r/--p), eck, watkins-worsey, bogacki, l2 (with --r/--p).
 --tol T turns on reduction to a tolerance (pieces within T, joined with C^K, K from
---continuity). --to M,N gives a tensor patch's target degrees (--to M means M in both).
-A B-spline with uniform knots and no --tol goes through seed 001's matrix pipeline, its
-segments merged exactly (--merge exact, multiple knots) or by averaging (--merge lossy);
-with --tol any B-spline / NURBS is reduced within the tolerance, keeping its continuity:
---strategy fit (default; global least-squares fit, up to C^(M-1)), segments (per-segment
-reduction by --method l2 or chebyshev, up to C^((M-1)/2); the default when --method is
-given) or piegl-tiller-1995 (the classical algorithm: no subdivision, may fail).
+--continuity). --to M,N gives a tensor patch's or B-spline surface's target degrees
+(--to M means M in both). A B-spline with uniform knots and no --tol goes through seed
+001's matrix pipeline, its segments merged exactly (--merge exact, multiple knots) or by
+averaging (--merge lossy); with --tol any B-spline / NURBS is reduced within the
+tolerance, keeping its continuity: --strategy fit (default; global least-squares fit, up
+to C^(M-1)), segments (per-segment reduction by --method l2 or chebyshev, up to
+C^((M-1)/2); the default when --method is given) or piegl-tiller-1995 (the classical
+algorithm: no subdivision, may fail). A B-spline / NURBS surface (\"bspline-surface\") is
+reduced patch by patch (l2 or chebyshev, C^K across knot lines with --continuity K); with
+--tol its knot spans are split until the certified bound is within T.
 ";
 
 /// Options of `cagd reduce`.

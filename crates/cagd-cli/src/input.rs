@@ -4,7 +4,10 @@
 //! `{"type":"bezier","points":[[x,y,...],...],"weights":[...]}` (weights optional),
 //! `{"type":"bspline","degree":p,"knots":[...],"points":[...],"weights":[...]}`,
 //! `{"type":"tensor","degree":[m,n],"points":[...]}` (i-major),
-//! `{"type":"triangle","degree":n,"points":[...]}` (i-major).
+//! `{"type":"triangle","degree":n,"points":[...]}` (i-major),
+//! `{"type":"bspline-surface","degree":[p,q],"knots_u":[...],"knots_v":[...],
+//! "points":[[[x,y,...],...],...],"weights":[[...],...]}` (`points[i][j]`: `i` along `u`;
+//! weights optional, nested like the points; see [`crate::input_surface`]).
 //!
 //! Every error names the JSON path of the offending field (`input[2].points[3][1]`).
 
@@ -68,13 +71,24 @@ pub(crate) enum RawShape {
         degree: usize,
         points: PointList,
     },
+    /// A B-spline / NURBS surface: points flat and i-major over `counts = (n_u, n_v)`.
+    BSplineSurface {
+        degree: (usize, usize),
+        knots_u: Vec<f64>,
+        knots_v: Vec<f64>,
+        points: PointList,
+        counts: (usize, usize),
+        weights: Option<Vec<f64>>,
+    },
 }
 
 /// Reads the whole input: one object, or an array of objects. Paths start with `input`
 /// (one object) or `input[i]`.
 pub(crate) fn parse_input(text: &str) -> Result<Vec<RawShape>, InputError> {
-    let value: Value = serde_json::from_str(text)
-        .map_err(|e| InputError::new("input", format!("not valid JSON: {e}")))?;
+    let value: Value = serde_json::from_str(text).map_err(|e| {
+        let path = crate::json_path::path_at(text, e.line(), e.column(), "input");
+        InputError::new(path, format!("not valid JSON: {e}"))
+    })?;
     match &value {
         Value::Array(items) => items
             .iter()
@@ -89,12 +103,12 @@ pub(crate) fn parse_input(text: &str) -> Result<Vec<RawShape>, InputError> {
     }
 }
 
-fn field<'a>(obj: &'a Value, path: &str, name: &str) -> Result<&'a Value, InputError> {
+pub(crate) fn field<'a>(obj: &'a Value, path: &str, name: &str) -> Result<&'a Value, InputError> {
     obj.get(name)
         .ok_or_else(|| InputError::new(format!("{path}.{name}"), "missing field"))
 }
 
-fn number(v: &Value, path: &str) -> Result<f64, InputError> {
+pub(crate) fn number(v: &Value, path: &str) -> Result<f64, InputError> {
     let x = v
         .as_f64()
         .ok_or_else(|| InputError::new(path, format!("expected a number, got {v}")))?;
@@ -105,13 +119,13 @@ fn number(v: &Value, path: &str) -> Result<f64, InputError> {
     }
 }
 
-fn count(v: &Value, path: &str) -> Result<usize, InputError> {
+pub(crate) fn count(v: &Value, path: &str) -> Result<usize, InputError> {
     v.as_u64()
         .and_then(|x| usize::try_from(x).ok())
         .ok_or_else(|| InputError::new(path, format!("expected a non-negative integer, got {v}")))
 }
 
-fn numbers(v: &Value, path: &str) -> Result<Vec<f64>, InputError> {
+pub(crate) fn numbers(v: &Value, path: &str) -> Result<Vec<f64>, InputError> {
     let arr = v
         .as_array()
         .ok_or_else(|| InputError::new(path, "expected an array of numbers"))?;
@@ -121,7 +135,7 @@ fn numbers(v: &Value, path: &str) -> Result<Vec<f64>, InputError> {
         .collect()
 }
 
-fn point_list(v: &Value, path: &str) -> Result<PointList, InputError> {
+pub(crate) fn point_list(v: &Value, path: &str) -> Result<PointList, InputError> {
     let arr = v
         .as_array()
         .ok_or_else(|| InputError::new(path, "expected an array of points"))?;
@@ -180,6 +194,9 @@ fn parse_shape(obj: &Value, path: &str) -> Result<RawShape, InputError> {
     let ty = ty
         .as_str()
         .ok_or_else(|| InputError::new(format!("{path}.type"), "expected a string"))?;
+    if ty == "bspline-surface" {
+        return crate::input_surface::parse(obj, path);
+    }
     let points = point_list(field(obj, path, "points")?, &format!("{path}.points"))?;
     match ty {
         "bezier" => {
@@ -247,7 +264,9 @@ fn parse_shape(obj: &Value, path: &str) -> Result<RawShape, InputError> {
         }
         other => Err(InputError::new(
             format!("{path}.type"),
-            format!("unknown type {other:?} (expected bezier, bspline, tensor or triangle)"),
+            format!(
+                "unknown type {other:?} (expected bezier, bspline, tensor, triangle or bspline-surface)"
+            ),
         )),
     }
 }
@@ -297,7 +316,8 @@ mod tests {
             ),
             (
                 r#"{"type":"circle","points":[[0]]}"#,
-                "input.type: unknown type \"circle\" (expected bezier, bspline, tensor or triangle)",
+                "input.type: unknown type \"circle\" (expected bezier, bspline, tensor, triangle or \
+                 bspline-surface)",
             ),
             (
                 r#"{"type":"bezier","points":[]}"#,
@@ -305,7 +325,7 @@ mod tests {
             ),
             (
                 "[1,",
-                "input: not valid JSON: EOF while parsing a value at line 1 column 3",
+                "input[1]: not valid JSON: EOF while parsing a value at line 1 column 3",
             ),
         ];
         for (text, want) in cases {

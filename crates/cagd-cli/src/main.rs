@@ -1,5 +1,5 @@
-//! The `cagd` command: degree reduction of Bézier / B-spline curves and patches from JSON
-//! files, with SVG pictures, and `cagd demo`, the seeds' worked examples on built-in data.
+//! The `cagd` command: degree reduction of Bézier / B-spline curves, patches and B-spline /
+//! NURBS surfaces from JSON files, with SVG pictures, and `cagd demo`, the seeds' worked examples on built-in data.
 //!
 //! Exit codes: 0 success; 2 bad input, bad usage or a reduction that cannot be done as asked
 //! (one line on stderr naming the field or option and index); 1 an I/O failure.
@@ -9,12 +9,16 @@ mod demo;
 mod demo_patches;
 mod demo_splines;
 mod input;
+mod input_surface;
+mod json_path;
 mod methods;
 mod patch_cmd;
 mod picture;
 mod reduce_cmd;
 mod shape;
 mod spline_cmd;
+mod surface_cmd;
+mod surface_shape;
 mod svg;
 
 use std::io::{Read, Write};

@@ -94,6 +94,21 @@ pub(crate) fn panels(title: &str, input: &Shape, output: &Shape) -> Vec<Panel> {
             &|u, v| tri_eval(b, u, v),
             true,
         )],
+        (Shape::BSplineSurface(a), Shape::BSplineSurface(b)) => {
+            // The wireframe's parameters in [0, 1]^2 mapped onto the input's domain.
+            let ((u0, u1), (v0, v1)) = a.domain();
+            let at = move |u: f64, v: f64| (u0 + (u1 - u0) * u, v0 + (v1 - v0) * v);
+            vec![wireframe(
+                format!(
+                    "{title}: B-spline surface {:?} (black) -> {:?} (red)",
+                    a.degrees(),
+                    b.degrees()
+                ),
+                &|u, v| a.eval(at(u, v).0, at(u, v).1).ok(),
+                &|u, v| b.eval(at(u, v).0, at(u, v).1).ok(),
+                false,
+            )]
+        }
         _ => Vec::new(),
     }
 }

@@ -210,6 +210,13 @@ pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<O
                     pair: result.map(|r| (shape.clone(), r)),
                 });
             }
+            Shape::BSplineSurface(s) => {
+                let (json, result) = crate::surface_cmd::reduce(s, args, path)?;
+                out.push(Output {
+                    json,
+                    pair: Some((shape.clone(), result)),
+                });
+            }
             Shape::Triangle(t) => {
                 if args.to.1.is_some_and(|n| n != args.to.0) {
                     return Err(Failure {

@@ -1,6 +1,6 @@
 //! Validated shapes (cagd-core objects) built from the raw JSON input, and their JSON output.
 
-use cagd_core::{BSplineCurve, BezierCurve, Error, TensorPatch, TriPatch};
+use cagd_core::{BSplineCurve, BSplineSurface, BezierCurve, Error, TensorPatch, TriPatch};
 use serde_json::{Value, json};
 
 use crate::input::{InputError, PointList, RawShape};
@@ -12,6 +12,7 @@ pub(crate) enum Shape {
     BSpline(BSplineCurve),
     Tensor(TensorPatch),
     Triangle(TriPatch),
+    BSplineSurface(BSplineSurface),
 }
 
 /// Turns a cagd-core validation error into an input error naming the JSON field.
@@ -64,6 +65,21 @@ impl Shape {
                 };
                 Shape::BSpline(c.map_err(|e| locate(path, &e))?)
             }
+            RawShape::BSplineSurface {
+                degree,
+                knots_u,
+                knots_v,
+                points,
+                counts,
+                weights,
+            } => Shape::BSplineSurface(crate::surface_shape::build(
+                degree,
+                (knots_u, knots_v),
+                points,
+                counts,
+                weights,
+                path,
+            )?),
         };
         Ok(shape)
     }
@@ -97,6 +113,7 @@ impl Shape {
             Shape::Triangle(t) => {
                 json!({"type": "triangle", "degree": t.degree(), "points": rows(t.points(), t.dim())})
             }
+            Shape::BSplineSurface(s) => crate::surface_shape::to_json(s),
         }
     }
 }

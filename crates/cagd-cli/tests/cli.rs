@@ -1,37 +1,11 @@
 //! Runs the `cagd` binary on files and compares its JSON with the spec vectors and with the
 //! library; checks the one-line errors and exit codes for bad input.
 
-use std::io::Write;
-use std::process::{Command, Output, Stdio};
+mod common;
 
-use cagd_testkit::serde_json::{self, Value, json};
+use cagd_testkit::serde_json::{Value, json};
 use cagd_testkit::{assert_close, flat, vector};
-
-fn cagd(args: &[&str], stdin: &str) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_cagd"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("cagd runs");
-    child
-        .stdin
-        .take()
-        .expect("stdin")
-        .write_all(stdin.as_bytes())
-        .expect("write stdin");
-    child.wait_with_output().expect("cagd finishes")
-}
-
-fn json_out(o: &Output) -> Value {
-    assert!(
-        o.status.success(),
-        "cagd failed: {}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    serde_json::from_slice(&o.stdout).expect("stdout is JSON")
-}
+use common::{cagd, json_out};
 
 fn bezier(points: &Value) -> String {
     json!({"type": "bezier", "points": points}).to_string()

@@ -1,0 +1,100 @@
+//! `cagd reduce` for B-spline / NURBS surfaces: patch-wise with the curve operator in each
+//! direction ([`cagd_reduce::reduce_bspline_surface`], no `--tol`), or within a tolerance
+//! by uniform knot refinement ([`cagd_reduce::reduce_bspline_surface_to_tolerance`]).
+//!
+//! `--to M[,N]` gives the target degrees (`--to M`: `M` in both directions), `--method` is
+//! `l2` (the default) or `chebyshev`, `--continuity K` the order kept across knot lines (the
+//! library's default without it). The end orders of every patch side come from the knot
+//! lines, so `--r` / `--p` do not apply.
+
+use cagd_core::BSplineSurface;
+use cagd_reduce::{
+    Method, SurfaceOptions, reduce_bspline_surface, reduce_bspline_surface_to_tolerance,
+};
+use serde_json::{Value, json};
+
+use crate::args::ReduceArgs;
+use crate::reduce_cmd::{DEFAULT_METHOD, Failure};
+use crate::shape::Shape;
+use crate::surface_shape::spans;
+
+/// The options of a surface reduction from the command line, or the usage error.
+fn options(args: &ReduceArgs) -> Result<SurfaceOptions, Failure> {
+    let usage = |path: &str, message: String| Failure {
+        path: path.into(),
+        message,
+    };
+    if args.r.is_some() || args.p.is_some() {
+        return Err(usage(
+            "--r",
+            "--r/--p do not apply to B-spline surfaces: the end orders of each patch come \
+             from its knot lines and --continuity"
+                .into(),
+        ));
+    }
+    if args.lossy_merge {
+        return Err(usage(
+            "--merge",
+            "lossy merging is for uniform B-spline curves; a surface's patches are merged \
+             exactly"
+                .into(),
+        ));
+    }
+    let method = match args.method.as_deref().unwrap_or(DEFAULT_METHOD) {
+        "l2" => Method::L2 { r: 0, p: 0 },
+        "chebyshev" => Method::ConstrainedChebyshev { r: 0, p: 0 },
+        other => {
+            return Err(usage(
+                "--method",
+                format!("{other} is not available for B-spline surfaces (l2, chebyshev)"),
+            ));
+        }
+    };
+    Ok(SurfaceOptions {
+        continuity: args.continuity,
+        method,
+        measure: true,
+        ..SurfaceOptions::new((args.to.0, args.to.1.unwrap_or(args.to.0)))
+    })
+}
+
+/// Reduces `s` (the object at `path`) as the arguments say; returns the output JSON (the
+/// `bspline-surface` shape plus its report) and the result shape.
+pub(crate) fn reduce(
+    s: &BSplineSurface,
+    args: &ReduceArgs,
+    path: &str,
+) -> Result<(Value, Shape), Failure> {
+    let opts = options(args)?;
+    let red = match args.tol {
+        None => reduce_bspline_surface(s, &opts),
+        Some(tol) => reduce_bspline_surface_to_tolerance(s, &opts, tol),
+    }
+    .map_err(|e| Failure {
+        path: path.to_string(),
+        message: e.to_string(),
+    })?;
+    let ((p, q), out) = (s.degrees(), &red.surface);
+    let (mu, mv) = out.degrees();
+    let mut report = json!({
+        "method": opts.method.name(),
+        "degree_from": [p, q],
+        "degree_to": [mu, mv],
+        "error_bound": red.error_bound,
+        "max_error": red.max_error,
+        "space": "euclidean",
+        "patches": red.patches,
+        "spans_in": [spans(s.knots_u(), p), spans(s.knots_v(), q)],
+        "spans_out": [spans(out.knots_u(), mu), spans(out.knots_v(), mv)],
+    });
+    if let Some(tol) = args.tol {
+        report["tolerance"] = json!(tol);
+    }
+    if let Some(k) = args.continuity {
+        report["continuity"] = json!(k);
+    }
+    let result = Shape::BSplineSurface(red.surface);
+    let mut v = result.to_json();
+    v["report"] = report;
+    Ok((v, result))
+}
