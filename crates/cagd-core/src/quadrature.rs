@@ -88,7 +88,11 @@ mod tests {
             );
             assert!(w.iter().all(|v| *v > 0.0));
             for e in (0..2 * g).step_by((2 * g / 9).max(1)) {
-                let int: f64 = x.iter().zip(&w).map(|(x, w)| w * x.powi(e as i32)).sum();
+                let int: f64 = x
+                    .iter()
+                    .zip(&w)
+                    .map(|(x, w)| w * x.powi(i32::try_from(e).unwrap()))
+                    .sum();
                 let exact = 1.0 / (e as f64 + 1.0);
                 assert!(
                     (int - exact).abs() < 4e-15,

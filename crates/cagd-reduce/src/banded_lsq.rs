@@ -65,10 +65,10 @@ impl BandedLsq {
                 let h = rj[0].hypot(x);
                 let (c, s) = (rj[0] / h, x / h);
                 rj[0] = h;
-                for k in 1..w {
-                    let (a, e) = (rj[k], self.row[k]);
-                    rj[k] = c * a + s * e;
-                    self.row[k] = c * e - s * a;
+                for (a, e) in rj[1..].iter_mut().zip(self.row[1..].iter_mut()) {
+                    let (ra, re) = (*a, *e);
+                    *a = c * ra + s * re;
+                    *e = c * re - s * ra;
                 }
                 for (a, e) in zj.iter_mut().zip(self.b.iter_mut()) {
                     let (za, ze) = (*a, *e);

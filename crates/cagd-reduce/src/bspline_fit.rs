@@ -233,27 +233,25 @@ pub(crate) fn span_bounds(
             eps = eps.max(hull_bound(&sb, &tb, blk));
             floor = floor.max(2.0 * (p as f64 + 3.0) * f64::EPSILON * max_norm(&sb, blk));
         }
-        let to_model = |e: f64| {
-            if !src.rational {
-                return e;
-            }
+        let (bound, floor) = if src.rational {
             let span_points = &points[(s - m) * d..(s + 1) * d];
             let vmin = span_points
                 .chunks_exact(blk)
                 .map(|q| q[blk - 1])
                 .fold(f64::INFINITY, f64::min);
+            let (pmax, wmin) = (src.pmax[k], src.wmin[k]);
+            // The floor is an estimate of the rounding level: converted with the input's
+            // own weights, so that a fit with a bad weight is refined, not given up.
+            let floor = euclidean_from_homogeneous(floor, pmax, wmin, wmin);
             if vmin > 0.0 {
-                euclidean_from_homogeneous(e, src.pmax[k], src.wmin[k], vmin)
+                (euclidean_from_homogeneous(eps, pmax, wmin, vmin), floor)
             } else {
-                f64::INFINITY
+                (f64::INFINITY, floor)
             }
+        } else {
+            (eps, floor)
         };
-        out.push(SpanBound {
-            a,
-            b,
-            bound: to_model(eps),
-            floor: to_model(floor),
-        });
+        out.push(SpanBound { a, b, bound, floor });
     }
     Ok(out)
 }

@@ -37,7 +37,7 @@ fn unreachable(why: &'static str) -> Error {
 }
 
 /// The working (homogeneous, for NURBS) polynomial spline of `curve`.
-fn working(curve: &BSplineCurve) -> Result<BSplineCurve> {
+pub(crate) fn working(curve: &BSplineCurve) -> Result<BSplineCurve> {
     if curve.is_rational() {
         BSplineCurve::new(
             curve.degree(),
@@ -52,11 +52,17 @@ fn working(curve: &BSplineCurve) -> Result<BSplineCurve> {
 
 /// The clamped degree-`m` knot vector on the breaks of `src`: the domain ends `m + 1` times,
 /// each interior break `t` with multiplicity `m - min(k, p - s_t, m - 1)`.
-fn initial_knots(curve: &BSplineCurve, src: &Source, m: usize, k: usize) -> Result<Vec<f64>> {
+pub(crate) fn initial_knots(
+    input_knots: &[f64],
+    p: usize,
+    src: &Source,
+    m: usize,
+    k: usize,
+) -> Result<Vec<f64>> {
     let b = &src.breaks;
     let mut knots = vec![b[0]; m + 1];
     for &t in &b[1..b.len() - 1] {
-        let keep = order_at(curve.knots(), curve.degree(), k, t)?.min(m - 1);
+        let keep = order_at(input_knots, p, k, t)?.min(m - 1);
         knots.extend(std::iter::repeat_n(t, m - keep));
     }
     knots.extend(std::iter::repeat_n(b[b.len() - 1], m + 1));
@@ -89,6 +95,36 @@ fn splits(bounds: &[SpanBound], budget: f64, m: usize) -> Result<Vec<f64>> {
         out.extend((1..parts).map(|j| x.a + h * j as f64));
     }
     Ok(out)
+}
+
+/// Fits `src` on the degree-`m` knot vector `knots`, refining it (simple knots inside the
+/// offending spans, [`splits`]) and fitting again until every span's certified bound is
+/// within `budget`. Returns the final knots, working points and span bounds.
+///
+/// # Errors
+/// [`Error::ConditionNotMet`] when the budget is below the rounding level or needs more
+/// than [`MAX_FIT_SPANS`] spans; the errors of [`fit`].
+pub(crate) fn fit_to_budget(
+    src: &Source,
+    m: usize,
+    mut knots: Vec<f64>,
+    budget: f64,
+) -> Result<(Vec<f64>, Vec<f64>, Vec<SpanBound>)> {
+    let mut rounds = 0;
+    loop {
+        let points = fit(src, m, &knots)?;
+        let bounds = span_bounds(src, m, &knots, &points)?;
+        if bounds.iter().all(|x| x.bound <= budget) {
+            return Ok((knots, points, bounds));
+        }
+        rounds += 1;
+        let new = splits(&bounds, budget, m)?;
+        if rounds > MAX_ROUNDS || bounds.len() + new.len() > MAX_FIT_SPANS {
+            return Err(unreachable("the refinement needs too many spans"));
+        }
+        knots.extend(new);
+        knots.sort_by(f64::total_cmp);
+    }
 }
 
 /// The spline of working points `work` as a model-space curve (NURBS when `rational`).
@@ -125,23 +161,8 @@ pub(crate) fn reduce_global(
         curve.dim() + usize::from(rational),
         rational,
     )?;
-    let mut knots = initial_knots(curve, &src, m, k)?;
-    let budget = FIT_SHARE * tol;
-    let mut rounds = 0;
-    let (points, bounds) = loop {
-        let points = fit(&src, m, &knots)?;
-        let bounds = span_bounds(&src, m, &knots, &points)?;
-        if bounds.iter().all(|x| x.bound <= budget) {
-            break (points, bounds);
-        }
-        rounds += 1;
-        let new = splits(&bounds, budget, m)?;
-        if rounds > MAX_ROUNDS || bounds.len() + new.len() > MAX_FIT_SPANS {
-            return Err(unreachable("the refinement needs too many spans"));
-        }
-        knots.extend(new);
-        knots.sort_by(f64::total_cmp);
-    };
+    let knots = initial_knots(curve.knots(), p, &src, m, k)?;
+    let (knots, points, bounds) = fit_to_budget(&src, m, knots, FIT_SHARE * tol)?;
     let fitted = model_curve(m, knots, &points, curve.dim(), rational)?;
     let pieces = bounds.len();
     let segment_bound = bounds.iter().map(|x| x.bound).fold(0.0, f64::max);

@@ -309,7 +309,7 @@ pub fn reduce_bspline_surface(
 }
 
 /// The largest distance on a `17 x 17` grid per input patch.
-fn sampled_error(
+pub(crate) fn sampled_error(
     a: &BSplineSurface,
     b: &BSplineSurface,
     pieces: &[cagd_core::SurfacePatchPiece],

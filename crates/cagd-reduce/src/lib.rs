@@ -135,6 +135,7 @@ mod bspline_measure;
 mod bspline_piegl_tiller;
 mod bspline_reduce;
 mod bspline_segments;
+mod bspline_surface_fit;
 mod bspline_surface_reduce;
 mod bspline_surface_tolerance;
 mod bspline_uniform;
@@ -170,6 +171,7 @@ pub use bspline_piegl_tiller::reduce_bspline_piegl_tiller;
 pub use bspline_reduce::{
     BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy, reduce_bspline,
 };
+pub use bspline_surface_fit::{SurfaceFitOptions, SurfaceFitReduction, reduce_bspline_surface_fit};
 pub use bspline_surface_reduce::{SurfaceOptions, SurfaceReduction, reduce_bspline_surface};
 pub use bspline_surface_tolerance::{MAX_SURFACE_LEVEL, reduce_bspline_surface_to_tolerance};
 pub use bspline_uniform::{Merge, UniformReduction, reduce_uniform_bspline};
