@@ -1,6 +1,9 @@
 //! `cagd reduce` for B-spline / NURBS surfaces: patch-wise with the curve operator in each
-//! direction ([`cagd_reduce::reduce_bspline_surface`], no `--tol`), or within a tolerance
-//! by uniform knot refinement ([`cagd_reduce::reduce_bspline_surface_to_tolerance`]).
+//! direction ([`cagd_reduce::reduce_bspline_surface`], no `--tol`), or within a tolerance:
+//! by the global fit direction by direction ([`cagd_reduce::reduce_bspline_surface_fit`],
+//! `--strategy fit`, the default without `--method`) or patch-wise with uniform knot
+//! refinement ([`cagd_reduce::reduce_bspline_surface_to_tolerance`], `--strategy
+//! segments`, the default with `--method`).
 //!
 //! `--to M[,N]` gives the target degrees (`--to M`: `M` in both directions), `--method` is
 //! `l2` (the default) or `chebyshev`, `--continuity K` the order kept across knot lines (the
@@ -9,7 +12,8 @@
 
 use cagd_core::BSplineSurface;
 use cagd_reduce::{
-    Method, SurfaceOptions, reduce_bspline_surface, reduce_bspline_surface_to_tolerance,
+    Method, SurfaceFitOptions, SurfaceOptions, reduce_bspline_surface, reduce_bspline_surface_fit,
+    reduce_bspline_surface_to_tolerance,
 };
 use serde_json::{Value, json};
 
@@ -66,6 +70,32 @@ pub(crate) fn reduce(
     path: &str,
 ) -> Result<(Value, Shape), Failure> {
     let opts = options(args)?;
+    if let Some(tol) = args.tol {
+        let strategy = args
+            .strategy
+            .as_deref()
+            .unwrap_or(if args.method.is_some() {
+                "segments"
+            } else {
+                "fit"
+            });
+        match strategy {
+            "fit" if args.method.is_some() => {
+                return Err(Failure {
+                    path: "--method".into(),
+                    message: "--method is used by --strategy segments only".into(),
+                });
+            }
+            "fit" => return reduce_fit(s, args, tol, path),
+            "segments" => {}
+            other => {
+                return Err(Failure {
+                    path: "--strategy".into(),
+                    message: format!("{other:?} is not fit or segments for B-spline surfaces"),
+                });
+            }
+        }
+    }
     let red = match args.tol {
         None => reduce_bspline_surface(s, &opts),
         Some(tol) => reduce_bspline_surface_to_tolerance(s, &opts, tol),
@@ -77,6 +107,7 @@ pub(crate) fn reduce(
     let ((p, q), out) = (s.degrees(), &red.surface);
     let (mu, mv) = out.degrees();
     let mut report = json!({
+        "strategy": "segments",
         "method": opts.method.name(),
         "degree_from": [p, q],
         "degree_to": [mu, mv],
@@ -90,6 +121,45 @@ pub(crate) fn reduce(
     if let Some(tol) = args.tol {
         report["tolerance"] = json!(tol);
     }
+    if let Some(k) = args.continuity {
+        report["continuity"] = json!(k);
+    }
+    let result = Shape::BSplineSurface(red.surface);
+    let mut v = result.to_json();
+    v["report"] = report;
+    Ok((v, result))
+}
+
+/// `--strategy fit`: the global fit direction by direction.
+fn reduce_fit(
+    s: &BSplineSurface,
+    args: &ReduceArgs,
+    tol: f64,
+    path: &str,
+) -> Result<(Value, Shape), Failure> {
+    let target = (args.to.0, args.to.1.unwrap_or(args.to.0));
+    let opts = SurfaceFitOptions {
+        continuity: args.continuity,
+        measure: true,
+        ..SurfaceFitOptions::new(target, tol)
+    };
+    let red = reduce_bspline_surface_fit(s, &opts).map_err(|e| Failure {
+        path: path.to_string(),
+        message: e.to_string(),
+    })?;
+    let mut report = json!({
+        "strategy": "fit",
+        "degree_from": [s.degrees().0, s.degrees().1],
+        "degree_to": [target.0, target.1],
+        "error_bound": red.error_bound,
+        "direction_bounds": [red.direction_bounds.0, red.direction_bounds.1],
+        "max_error": red.max_error,
+        "space": "euclidean",
+        "tolerance": tol,
+        "patches": red.spans_out.0 * red.spans_out.1,
+        "spans_in": [red.spans_in.0, red.spans_in.1],
+        "spans_out": [red.spans_out.0, red.spans_out.1],
+    });
     if let Some(k) = args.continuity {
         report["continuity"] = json!(k);
     }
