@@ -263,3 +263,7 @@ fn copy_block(from: &[f64], d: usize, j: usize, blk: usize, to: &mut [f64]) {
         dst.copy_from_slice(&src[j * blk..(j + 1) * blk]);
     }
 }
+
+#[cfg(test)]
+#[path = "bspline_fit_tests.rs"]
+mod tests;
