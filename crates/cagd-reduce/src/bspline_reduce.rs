@@ -122,7 +122,7 @@ pub(crate) fn order_at(knots: &[f64], p: usize, k: usize, t: f64) -> Result<usiz
 /// few knots as the tolerance allows (the job of Piegl & Tiller 1995, "Algorithm for degree
 /// reduction of B-spline curves", done by a global fit).
 ///
-/// [`BSplineStrategy::GlobalFit`] (default; [`crate::bspline_global`] has the details):
+/// [`BSplineStrategy::GlobalFit`] (default):
 /// 1. **Knots**: the input's breaks with multiplicity `m - min(k, p - s, m - 1)`, so the
 ///    degree-`m` space has exactly the continuity to keep.
 /// 2. **Fit**: the spline of that space nearest to the input in the parameter L2 norm with
@@ -136,7 +136,7 @@ pub(crate) fn order_at(knots: &[f64], p: usize, k: usize, t: f64) -> Result<usiz
 ///    accumulated bound within the tolerance.
 ///
 /// [`BSplineStrategy::Segments`]: per-segment Hermite reductions, merge, knot removal
-/// ([`crate::bspline_segments`]); continuity at most `C^floor((m-1)/2)`.
+/// — continuity at most `C^floor((m-1)/2)`.
 ///
 /// The result has the input's domain, is clamped there and rational if the input is. With
 /// an input that is a degree-elevated degree-`m` spline it recovers the original knots.

@@ -114,15 +114,35 @@
 //! [`reduce_uniform_bspline`]: seed 001's `P' = T_zb^m T_{n,r} T_bz^n P` with any [`Method`]
 //! as `T_{n,r}`, per-segment matrices cached, exact (§4.1) or lossy (§4.2) merge; the paper's
 //! example is reproduced (see the function's docs for which printed numbers are and are
-//! not). [`reduce_bspline`]: any B-spline / NURBS to a tolerance — Bézier extraction,
-//! segments reduced with the end constraints that keep the continuity present at each knot
-//! (up to `C^floor((m-1)/2)`), subdivision where a segment exceeds its share, merge, and knot
-//! removal within the rest of the tolerance. [`reduce_bspline_piegl_tiller`]: the classical
-//! algorithm of Piegl & Tiller 1995 (NURBS Book A5.11) as a baseline — one degree at a time,
-//! every knot's multiplicity lowered by one, per-span certified bounds, no subdivision (it
-//! fails where the input is not close to a degree-elevated spline). [`reduce_bspline_surface`]: patch-wise;
-//! [`reduce_bspline_surface_to_tolerance`]: with uniform knot refinement until the certified
-//! bound meets a tolerance.
+//! not).
+//!
+//! [`reduce_bspline`]: any B-spline / NURBS (non-uniform, clamped or not, rational) to a
+//! tolerance, keeping `C^min(k, m-1)` wherever the input is `C^k`. Default strategy
+//! ([`BSplineStrategy::GlobalFit`]): the degree-`m` spline space on the input's knots (with
+//! the multiplicities that carry that continuity), the parameter-L2-best fit in it with the
+//! end points kept (exact Gauss–Legendre quadrature per span, banded Givens QR — no normal
+//! equations), certified per-span bounds (refined convex hull of input minus fit), simple
+//! knots added where a span misses 0.9 of the tolerance and the fit repeated, then Tiller's
+//! certified knot removal within the rest, charged per span (Piegl & Tiller's
+//! bookkeeping). [`BSplineStrategy::Segments`]: per-segment Hermite reductions, at most
+//! `C^floor((m-1)/2)`. [`reduce_bspline_piegl_tiller`] ([`BSplineStrategy::PieglTiller1995`]):
+//! the classical algorithm of Piegl & Tiller 1995 (NURBS Book A5.11) as the reference — one
+//! degree at a time, every knot's multiplicity lowered by one, per-span certified bounds, no
+//! subdivision (it fails where the input is not close to a degree-elevated spline).
+//!
+//! Measured (`cargo bench -p cagd-reduce --bench bspline`, 1 000-span degree-7 curves to
+//! degree 3 at 1e-6, release, 2-core machine): a genuine degree-7 spiral — global fit
+//! 3 815 spans out (52.6 µs per input span, bound 9.88e-7, measured 8.99e-7), segments
+//! 3 971 spans (46.8 µs), Piegl–Tiller fails; a C2 cubic elevated to degree 7 and perturbed
+//! by 1e-8 — global fit 1 000 spans (6.3 µs/span, bound 8.0e-9), segments 1 000 (7.1e-8),
+//! Piegl–Tiller 1 000 (22.8 µs/span, bound 1.0e-7); perturbed by 1e-7 Piegl–Tiller fails, the
+//! fit keeps 1 000 spans (bound 8.0e-8). A test (300 random near-reducible curves) checks
+//! that the fit never keeps more spans than Piegl–Tiller wherever that succeeds.
+//!
+//! Surfaces: [`reduce_bspline_surface_fit`] (the global fit direction by direction, the
+//! other direction's control points as a bundle; knot lines keep `C^min(k, m-1)`);
+//! [`reduce_bspline_surface`]: patch-wise; [`reduce_bspline_surface_to_tolerance`]: patch-wise
+//! with uniform knot refinement until the certified bound meets a tolerance.
 #![forbid(unsafe_code)]
 
 mod alg_14_2_1;
