@@ -1,12 +1,15 @@
 //! The B-spline part of `cagd demo`: seed 001's worked example (degree 7, 9 control points,
 //! uniform knots 0..16, to degree 3 with C1 Hermite segments; exact and lossy merge) and a
-//! non-uniform rational (NURBS) degree-5 curve reduced to cubic within tolerances.
+//! non-uniform rational (NURBS) degree-5 curve reduced to cubic within tolerances (global
+//! fit, and per-segment for comparison).
 
 use std::fmt::Write as _;
 use std::path::Path;
 
 use cagd_core::BSplineCurve;
-use cagd_reduce::{BSplineOptions, Merge, Method, reduce_bspline, reduce_uniform_bspline};
+use cagd_reduce::{
+    BSplineOptions, BSplineStrategy, Merge, Method, reduce_bspline, reduce_uniform_bspline,
+};
 
 use crate::demo::time_us;
 use crate::picture::panels;
@@ -72,9 +75,15 @@ pub(crate) fn run(out: &Path, table: &mut String) -> Result<(), String> {
         ));
     }
     let nurbs = nurbs_curve()?;
-    for tol in [1e-2, 1e-4] {
+    let segments = BSplineStrategy::Segments(Method::L2 { r: 0, p: 0 });
+    for (tol, strategy, name) in [
+        (1e-2, BSplineStrategy::GlobalFit, "fit"),
+        (1e-4, BSplineStrategy::GlobalFit, "fit"),
+        (1e-4, segments, "segments"),
+    ] {
         let opts = BSplineOptions {
             measure: true,
+            strategy,
             ..BSplineOptions::new(3, tol)
         };
         let red = reduce_bspline(&nurbs, &opts).map_err(|e| e.to_string())?;
@@ -85,7 +94,10 @@ pub(crate) fn run(out: &Path, table: &mut String) -> Result<(), String> {
         let us = time_us(5, || {
             let _ = reduce_bspline(&nurbs, &unmeasured);
         });
-        let label = format!("tol {tol:e}, {} -> {} spans", red.spans_in, red.spans_out);
+        let label = format!(
+            "{name} {tol:e}, {} -> {} spans",
+            red.spans_in, red.spans_out
+        );
         line(
             table,
             "nurbs-5-nonuniform",

@@ -20,7 +20,6 @@ use cagd_core::kernel::{de_casteljau, subdivide};
 use cagd_core::{BSplineCurve, Result, basis_functions, gauss_legendre};
 
 use crate::banded_lsq::BandedLsq;
-use crate::bspline_measure::euclidean_from_homogeneous;
 use crate::operator::{hull_bound, max_norm};
 
 /// The spline to approximate, as Bézier pieces in working coordinates.
@@ -36,10 +35,6 @@ pub(crate) struct Source {
     pub(crate) breaks: Vec<f64>,
     /// `(degree + 1) * pdim` Bézier coordinates per piece.
     points: Vec<f64>,
-    /// Per piece: the largest Euclidean norm of a model-space control point and the
-    /// smallest weight (rational only; `1` otherwise).
-    pmax: Vec<f64>,
-    wmin: Vec<f64>,
 }
 
 impl Source {
@@ -50,16 +45,12 @@ impl Source {
         let (p, pdim) = (work.degree(), work.dim());
         let mut breaks = Vec::with_capacity(segs.len() + 1);
         let mut points = Vec::with_capacity(segs.len() * (p + 1) * pdim);
-        let (mut pmax, mut wmin) = (Vec::new(), Vec::new());
         for s in &segs {
             if breaks.is_empty() {
                 breaks.push(s.start);
             }
             breaks.push(s.end);
             points.extend_from_slice(s.curve.points());
-            let (a, w) = model_extent(s.curve.points(), block, rational);
-            pmax.push(a);
-            wmin.push(w);
         }
         Ok(Self {
             degree: p,
@@ -68,8 +59,6 @@ impl Source {
             rational,
             breaks,
             points,
-            pmax,
-            wmin,
         })
     }
 
@@ -94,23 +83,6 @@ impl Source {
     fn last_point(&self) -> &[f64] {
         &self.points[self.points.len() - self.pdim..]
     }
-}
-
-/// `(max ||P||, min w)` over model-space points of a working buffer.
-fn model_extent(work: &[f64], block: usize, rational: bool) -> (f64, f64) {
-    let (mut pmax, mut wmin) = (0.0f64, f64::INFINITY);
-    for q in work.chunks_exact(block) {
-        if rational {
-            let w = q[block - 1];
-            let n2: f64 = q[..block - 1].iter().map(|x| (x / w) * (x / w)).sum();
-            pmax = pmax.max(n2.sqrt());
-            wmin = wmin.min(w);
-        } else {
-            pmax = pmax.max(q.iter().map(|x| x * x).sum::<f64>().sqrt());
-            wmin = 1.0;
-        }
-    }
-    (pmax, wmin)
 }
 
 /// The L2-best degree-`m` spline on the clamped knot vector `knots` (domain and every break
@@ -187,9 +159,8 @@ pub(crate) struct SpanBound {
 /// `src`) with a certified bound of `max ||C - S||` on each (Euclidean, model space): per
 /// span, the piece of `C` restricted to it minus `S` elevated to degree `p`, bounded by the
 /// refined convex hull ([`crate::operator::hull_bound`], rounding included), the largest
-/// over the blocks; for NURBS converted from homogeneous space by
-/// [`euclidean_from_homogeneous`] with the span's own extents. A span on which a control
-/// weight of `S` is not positive gets an infinite bound.
+/// over the blocks; for NURBS by [`rational_bound`] (centred, in model space). A span on
+/// which a control weight of `S` is not positive gets an infinite bound.
 pub(crate) fn span_bounds(
     src: &Source,
     m: usize,
@@ -226,34 +197,99 @@ pub(crate) fn span_bounds(
         } else {
             sub.to_vec()
         };
-        let (mut eps, mut floor): (f64, f64) = (0.0, 0.0);
-        for j in 0..d / blk {
-            copy_block(&sub, d, j, blk, &mut sb);
-            copy_block(piece.curve.points(), d, j, blk, &mut tb);
-            eps = eps.max(hull_bound(&sb, &tb, blk));
-            floor = floor.max(2.0 * (p as f64 + 3.0) * f64::EPSILON * max_norm(&sb, blk));
-        }
         let (bound, floor) = if src.rational {
             let span_points = &points[(s - m) * d..(s + 1) * d];
             let vmin = span_points
                 .chunks_exact(blk)
                 .map(|q| q[blk - 1])
                 .fold(f64::INFINITY, f64::min);
-            let (pmax, wmin) = (src.pmax[k], src.wmin[k]);
-            // The floor is an estimate of the rounding level: converted with the input's
-            // own weights, so that a fit with a bad weight is refined, not given up.
-            let floor = euclidean_from_homogeneous(floor, pmax, wmin, wmin);
-            if vmin > 0.0 {
-                (euclidean_from_homogeneous(eps, pmax, wmin, vmin), floor)
-            } else {
-                (f64::INFINITY, floor)
-            }
+            rational_bound(&sub, piece.curve.points(), (d, blk, p), vmin)
         } else {
+            let (mut eps, mut floor): (f64, f64) = (0.0, 0.0);
+            for j in 0..d / blk {
+                copy_block(&sub, d, j, blk, &mut sb);
+                copy_block(piece.curve.points(), d, j, blk, &mut tb);
+                eps = eps.max(hull_bound(&sb, &tb, blk));
+                floor = floor.max(2.0 * (p as f64 + 3.0) * f64::EPSILON * max_norm(&sb, blk));
+            }
             (eps, floor)
         };
         out.push(SpanBound { a, b, bound, floor });
     }
     Ok(out)
+}
+
+/// `(bound, floor)` of one span of a rational bundle: `sub` the input's Bézier points on
+/// the span (`p + 1` points of `d` homogeneous coordinates, blocks of `blk`), `tgt` the
+/// fit's (`m + 1` points), `vmin` the smallest control weight of the fit on the span.
+///
+/// With a centre `c` (of the input's model-space points on the span) and `R = max ||P_i -
+/// c||`, `C - S = ((C - c)(W' - W) + (A_c - A'_c)) / W'` where `A_c = A - c W`: the input
+/// curve lies in the hull of its points, so `||C - c|| <= R`, and with `h_A` the refined
+/// hull bound of `A_c - A'_c` and `h_W` that of `W - W'` (the largest over the blocks:
+/// the bundle combines them convexly), `||C - S|| <= (h_A + R h_W) / v`,
+/// `v = max(vmin, min w - h_W)`. Centring makes the bound independent of where the model
+/// sits (the form `(1 + max ||P||)` of the Bézier reducer's conversion grows with the
+/// distance from the origin). The translation's rounding is added to `h_A`.
+fn rational_bound(
+    sub: &[f64],
+    tgt: &[f64],
+    (d, blk, p): (usize, usize, usize),
+    vmin: f64,
+) -> (f64, f64) {
+    let dim = blk - 1;
+    let eps = f64::EPSILON;
+    let (mut lo, mut hi) = (vec![f64::INFINITY; dim], vec![f64::NEG_INFINITY; dim]);
+    let mut wmin = f64::INFINITY;
+    for q in sub.chunks_exact(blk) {
+        let w = q[dim];
+        wmin = wmin.min(w);
+        for c in 0..dim {
+            lo[c] = lo[c].min(q[c] / w);
+            hi[c] = hi[c].max(q[c] / w);
+        }
+    }
+    let centre: Vec<f64> = lo.iter().zip(&hi).map(|(a, b)| 0.5 * (a + b)).collect();
+    let cnorm = centre.iter().map(|x| x * x).sum::<f64>().sqrt();
+    let radius = sub
+        .chunks_exact(blk)
+        .map(|q| {
+            let w = q[dim];
+            (0..dim)
+                .map(|c| (q[c] / w - centre[c]).powi(2))
+                .sum::<f64>()
+                .sqrt()
+        })
+        .fold(0.0, f64::max)
+        * (1.0 + 4.0 * eps);
+    let split = |from: &[f64], j: usize, a: &mut Vec<f64>, w: &mut Vec<f64>| {
+        a.clear();
+        w.clear();
+        for q in from.chunks_exact(d) {
+            let b = &q[j * blk..(j + 1) * blk];
+            a.extend((0..dim).map(|c| b[c] - centre[c] * b[dim]));
+            w.push(b[dim]);
+        }
+    };
+    let (mut sa, mut sw, mut ta, mut tw) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let (mut ha, mut hw, mut size): (f64, f64, f64) = (0.0, 0.0, 0.0);
+    for j in 0..d / blk {
+        split(sub, j, &mut sa, &mut sw);
+        split(tgt, j, &mut ta, &mut tw);
+        ha = ha.max(hull_bound(&sa, &ta, dim));
+        hw = hw.max(hull_bound(&sw, &tw, 1));
+        let wmax = sw.iter().chain(&tw).fold(0.0f64, |m, x| m.max(x.abs()));
+        let amax = max_norm(&sa, dim).max(max_norm(&ta, dim));
+        size = size.max(amax + cnorm * wmax);
+    }
+    // Each translated coordinate is off by ~2 eps of |x| + |c| w, for both curves.
+    ha += 4.0 * eps * size;
+    let floor = 2.0 * (p as f64 + 3.0) * eps * size / wmin;
+    let v = vmin.max(wmin - hw);
+    if vmin <= 0.0 || v <= 0.0 {
+        return (f64::INFINITY, floor);
+    }
+    ((ha + radius * hw) / v * (1.0 + 8.0 * eps), floor)
 }
 
 /// Copies coordinates `j * blk .. (j + 1) * blk` of every point of `from` (points of `d`
