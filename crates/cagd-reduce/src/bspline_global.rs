@@ -19,6 +19,10 @@ use crate::bspline_reduce::{
 };
 
 /// Share of the tolerance the fit must meet on every span; the rest is for knot removal.
+/// The share matters only for spans near the budget (refined ones); measured on the
+/// benchmark spiral (1 000 degree-7 spans -> cubic at 1e-6): 0.75 gives 3 946 spans,
+/// 0.9 gives 3 815, 0.97 gives 3 761 but 1.3x the time. Input with more knots than it needs
+/// fits far below the budget, so knot removal keeps most of the tolerance there anyway.
 const FIT_SHARE: f64 = 0.9;
 
 /// Most refine-and-refit rounds (each at least halves the offending spans).
