@@ -44,6 +44,20 @@ pub(crate) struct ReduceArgs {
     pub(crate) strategy: Option<String>,
 }
 
+impl ReduceArgs {
+    /// The `--strategy` of a B-spline reduction to a tolerance: as given, else `segments`
+    /// when `--method` is given, else `fit`.
+    pub(crate) fn strategy_name(&self) -> &str {
+        self.strategy
+            .as_deref()
+            .unwrap_or(if self.method.is_some() {
+                "segments"
+            } else {
+                "fit"
+            })
+    }
+}
+
 /// A parsed command line.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) enum Command {

@@ -83,14 +83,7 @@ pub(crate) fn reduce(
 
 /// The strategy of `--strategy` (default `fit`, or `segments` when `--method` is given).
 fn strategy(args: &ReduceArgs, method: Method) -> Result<BSplineStrategy, SplineError> {
-    let name = args
-        .strategy
-        .as_deref()
-        .unwrap_or(if args.method.is_some() {
-            "segments"
-        } else {
-            "fit"
-        });
+    let name = args.strategy_name();
     match name {
         "fit" | "piegl-tiller-1995" if args.method.is_some() => Err(SplineError::Usage(format!(
             "--method is used by --strategy segments only, not {name}"

@@ -71,15 +71,7 @@ pub(crate) fn reduce(
 ) -> Result<(Value, Shape), Failure> {
     let opts = options(args)?;
     if let Some(tol) = args.tol {
-        let strategy = args
-            .strategy
-            .as_deref()
-            .unwrap_or(if args.method.is_some() {
-                "segments"
-            } else {
-                "fit"
-            });
-        match strategy {
+        match args.strategy_name() {
             "fit" if args.method.is_some() => {
                 return Err(Failure {
                     path: "--method".into(),
@@ -121,13 +113,19 @@ pub(crate) fn reduce(
     if let Some(tol) = args.tol {
         report["tolerance"] = json!(tol);
     }
+    Ok(output(red.surface, report, args))
+}
+
+/// The output JSON (the surface's shape plus `report`, with `--continuity` if given) and
+/// the result shape.
+fn output(surface: BSplineSurface, mut report: Value, args: &ReduceArgs) -> (Value, Shape) {
     if let Some(k) = args.continuity {
         report["continuity"] = json!(k);
     }
-    let result = Shape::BSplineSurface(red.surface);
+    let result = Shape::BSplineSurface(surface);
     let mut v = result.to_json();
     v["report"] = report;
-    Ok((v, result))
+    (v, result)
 }
 
 /// `--strategy fit`: the global fit direction by direction.
@@ -147,7 +145,7 @@ fn reduce_fit(
         path: path.to_string(),
         message: e.to_string(),
     })?;
-    let mut report = json!({
+    let report = json!({
         "strategy": "fit",
         "degree_from": [s.degrees().0, s.degrees().1],
         "degree_to": [target.0, target.1],
@@ -160,11 +158,5 @@ fn reduce_fit(
         "spans_in": [red.spans_in.0, red.spans_in.1],
         "spans_out": [red.spans_out.0, red.spans_out.1],
     });
-    if let Some(k) = args.continuity {
-        report["continuity"] = json!(k);
-    }
-    let result = Shape::BSplineSurface(red.surface);
-    let mut v = result.to_json();
-    v["report"] = report;
-    Ok((v, result))
+    Ok(output(red.surface, report, args))
 }
