@@ -354,6 +354,54 @@ typedef int32_t CagdMerge;
 #endif // __cplusplus
 
 /**
+ * How `cagd_bspline_reduce` builds the degree-`target` spline from a degree-`p` one
+ * (`CagdReduceOptions.spline_strategy`, an `int32_t`; cagd-reduce `BSplineStrategy`).
+ * Each keeps, at every interior knot of the input that is still a knot of the result,
+ * the continuity `C^min(k, c)`: `c` the input's continuity there (`p - s` for a knot of
+ * multiplicity `s`), `k` the `spline_continuity` asked for, at most the strategy's maximum
+ * given below (`-1`: that maximum).
+ *
+ */
+enum CagdSplineStrategy
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : int32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  /**
+   * One least-squares fit (parameter L2 norm, end points kept) on the whole
+   * degree-`target` spline space whose knots are the input's with the multiplicities
+   * that keep the continuity; spans whose certified bound misses their share of the
+   * tolerance are split and the fit repeated; then knot removal within the rest of the
+   * tolerance. Keeps up to `C^(target - 1)`. The default.
+   */
+  CAGD_SPLINE_FIT = 0,
+  /**
+   * Every Bézier segment reduced on its own by `method` (`CAGD_METHOD_L2` or
+   * `CAGD_METHOD_CONSTRAINED_CHEBYSHEV`) with Hermite data at both ends, split where
+   * needed, merged, then knot removal. Keeps at most
+   * `C^floor((target - 1) / 2)` (two-sided Hermite data need `2k + 1 <= target`).
+   */
+  CAGD_SPLINE_SEGMENTS = 1,
+  /**
+   * The classical algorithm of Piegl & Tiller 1995 (NURBS Book A5.11), as a reference:
+   * one degree at a time, every segment reduced by one degree, merged, and every
+   * interior knot left with one copy fewer per degree. Never subdivides: fails with
+   * `CAGD_ERR_CONDITION_NOT_MET` when the curve is not reducible within the tolerance
+   * that way (it succeeds essentially for degree-elevated splines and those within the
+   * tolerance of one). Keeps the input's `C^c` wherever a knot stays (at most
+   * `C^(target - 1)`).
+   */
+  CAGD_SPLINE_PIEGL_TILLER_1995 = 2,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum CagdSplineStrategy CagdSplineStrategy;
+#else
+typedef int32_t CagdSplineStrategy;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
  * The polynomial bases of `cagd_basis_matrix` (cagd-core `Basis`). Passed as an
  * `int32_t`.
  *
@@ -479,7 +527,11 @@ typedef struct CagdTriPatchList CagdTriPatchList;
  * not initialised is most likely caught). Later versions only append fields; a library
  * reads at most the fields it knows, and the fields a smaller (older) struct lacks take
  * their defaults, so a program compiled against an older header keeps working. Never set
- * `struct_size` by hand to anything but `sizeof(CagdReduceOptions)`.
+ * `struct_size` by hand to anything but `sizeof(CagdReduceOptions)`. No version has been
+ * released yet, so every field below (including `spline_strategy` and
+ * `spline_continuity`, the last ones added) belongs to the first version and the smallest
+ * size accepted is the full size; fields appended after the first release will say in
+ * which version they appeared, and the smallest size accepted stays that of the first.
  */
 typedef struct CagdReduceOptions {
   /**
@@ -537,7 +589,8 @@ typedef struct CagdReduceOptions {
    * Reduction to a tolerance only: the order `k` of parametric continuity `C^k` at the
    * joins of the pieces (interior knots of multiplicity `target - k`); needs
    * `k < target` and a method that keeps derivatives up to order `k` at both ends
-   * (e.g. `CAGD_METHOD_L2` with `r = p = k`). Default 0 (`C^0`).
+   * (e.g. `CAGD_METHOD_L2` with `r = p = k`). Default 0 (`C^0`). Not used by
+   * `cagd_bspline_reduce`, which reads `spline_continuity`.
    */
   size_t continuity;
   /**
@@ -564,6 +617,20 @@ typedef struct CagdReduceOptions {
    * `CAGD_MERGE_EXACT`.
    */
   int32_t merge;
+  /**
+   * `cagd_bspline_reduce` only: a `CagdSplineStrategy` value. Default `CAGD_SPLINE_FIT`.
+   */
+  int32_t spline_strategy;
+  /**
+   * `cagd_bspline_reduce` only: the continuity to keep at the input's interior knots.
+   * `-1` (default): all the continuity the input has there, up to the most the strategy
+   * keeps (`C^(target - 1)` for `CAGD_SPLINE_FIT` and `CAGD_SPLINE_PIEGL_TILLER_1995`,
+   * `C^floor((target - 1) / 2)` for `CAGD_SPLINE_SEGMENTS`). `k >= 0`: keep at most
+   * `C^k`, i.e. `C^min(k, c)` where the input is `C^c` (knot removal may leave more; a
+   * `k` above the strategy's maximum is `CAGD_ERR_TOO_MANY_CONSTRAINTS`). Below `-1`:
+   * `CAGD_ERR_INVALID_ARGUMENT`.
+   */
+  int32_t spline_continuity;
 } CagdReduceOptions;
 
 #ifdef __cplusplus
@@ -978,40 +1045,80 @@ CagdStatus cagd_bspline_to_beziers(const struct CagdBSpline *spline,
 
 /**
  * Reduces a B-spline or NURBS curve of degree `p` to degree `opts->target` within
- * `opts->tolerance` (certified, Euclidean, model space): every knot span is extracted as
- * a Bézier piece, reduced by `opts->method` (`CAGD_METHOD_CONSTRAINED_CHEBYSHEV`, seed 000
- * §14.5, or `CAGD_METHOD_L2`; their `r`, `p` are set per end from the continuity to keep)
- * keeping derivatives `0..=min(continuity, p - s_j)` at each knot of multiplicity `s_j`,
- * split at midpoints until each piece meets half the tolerance, merged exactly (seed 001
- * §4.1), then knots are removed while the tracked local bound stays within the tolerance
- * (after Piegl & Tiller 1995). The result is clamped on the input's domain; rational
- * input is reduced in homogeneous coordinates.
+ * `opts->tolerance`, keeping the continuity the input has at its knots (cagd-reduce
+ * `reduce_bspline`; the task of Piegl & Tiller 1995, "Algorithm for degree reduction of
+ * B-spline curves"). The bound is certified: `cagd_report_bound` gives an upper bound of
+ * `max_t |C(t) - C'(t)|` (Euclidean, model space, `f64` rounding included) that is
+ * `<= tolerance` and never below the true error. The result is clamped on the input's
+ * domain and rational if the input is (NURBS are reduced in homogeneous coordinates).
  *
- * Options used: `method`, `target` (`1 <= target < p`), `tolerance`, `continuity` (at
- * most `floor((target - 1) / 2)`: per-segment Hermite data need `2k + 1 <= target`;
- * default 0), `measure`.
+ * Continuity: at every interior knot of the input that is still a knot of the result,
+ * the result is `C^min(k, c)`, `c` the input's continuity there (`p - s` for a knot of
+ * multiplicity `s`) and `k = opts->spline_continuity`, or the strategy's maximum `K` when
+ * it is `-1` (`cagd_report_spline_continuity` lists the knots and orders). The strategy
+ * (`opts->spline_strategy`, a `CagdSplineStrategy`) decides how:
+ * - `CAGD_SPLINE_FIT` (default), `K = target - 1`: one least-squares fit (parameter L2
+ *   norm, end points kept) on the degree-`target` spline space with the input's knots at
+ *   multiplicity `target - min(k, c, target - 1)`; spans whose certified bound misses
+ *   their share of the tolerance are split and the fit repeated; then knots are removed
+ *   while every span's tracked bound stays within the tolerance.
+ * - `CAGD_SPLINE_SEGMENTS`, `K = floor((target - 1) / 2)` (two-sided Hermite data need
+ *   `2k + 1 <= target`): every knot span is extracted as a Bézier piece and reduced by
+ *   `opts->method` (`CAGD_METHOD_L2`, or `CAGD_METHOD_CONSTRAINED_CHEBYSHEV`, seed 000
+ *   §14.5; their end orders are set per knot from the continuity to keep, `opts->r` and
+ *   `opts->p` are not used), split where needed until each piece meets its share of
+ *   the tolerance, merged exactly (seed 001 §4.1), then knots are removed as above.
+ * - `CAGD_SPLINE_PIEGL_TILLER_1995`, `K = target - 1`: the classical algorithm (NURBS
+ *   Book A5.11), kept as a reference: one degree at a time, every segment reduced by one
+ *   degree (Piegl–Tiller's formula), merged, and every interior knot left with one copy
+ *   fewer per degree (so `C^c` is kept where a knot stays; `spline_continuity` is checked
+ *   against `K` but changes nothing). It never subdivides: the result has at most the
+ *   input's spans, and when the curve is not reducible within the tolerance that way it
+ *   fails with `CAGD_ERR_CONDITION_NOT_MET` (it succeeds essentially for degree-elevated
+ *   splines, every interior knot of multiplicity `>= p - target + 1`, and those within
+ *   the tolerance of one).
+ *
+ * Options used: `spline_strategy`, `target` (`1 <= target < p`), `tolerance`,
+ * `spline_continuity`, `method` (`CAGD_SPLINE_SEGMENTS` only; ignored otherwise),
+ * `measure`. Not used: `continuity`, `r`, `p`, `max_depth` and the rest.
  *
  * Parameters:
  * - `spline` (in): the spline.
  * - `opts` (in): the options. Borrowed for the call.
  * - `spline_out` (out): on `CAGD_OK`, the reduced spline of degree `target`, owned by the
  *   caller: release with `cagd_bspline_free`.
- * - `report_out` (out): on `CAGD_OK`, the report (`cagd_report_bound`,
- *   `cagd_report_max_error`, `cagd_report_spline`), owned by the caller: release with
- *   `cagd_report_free`. Neither output is written on failure.
+ * - `report_out` (out): on `CAGD_OK`, the report, owned by the caller: release with
+ *   `cagd_report_free`. Neither output is written on failure. Its accessors:
+ *   `cagd_report_bound`, `cagd_report_max_error` (with `measure`), `cagd_report_method`
+ *   (the method that reduced the pieces: `opts->method` for segments, `CAGD_METHOD_L2`
+ *   for the fit, `CAGD_METHOD_PIEGL_TILLER` for Piegl–Tiller 1995),
+ *   `cagd_report_spline` (segment bound, spans), `cagd_report_spline_strategy`,
+ *   `cagd_report_spline_continuity`.
  *
  * Returns:
  * - `CAGD_OK`: both outputs are written.
  * - `CAGD_ERR_NULL_POINTER`: `spline`, `opts`, `spline_out` or `report_out` is NULL.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` below `sizeof(CagdReduceOptions)`,
- *   an invalid method code or a method other than the two above, `tolerance` not finite
- *   and `> 0`, the two outputs are the same address, or a pointer is misaligned.
+ *   a `spline_strategy` code that is not a `CagdSplineStrategy`, `spline_continuity`
+ *   below `-1`, with `CAGD_SPLINE_SEGMENTS` an invalid method code or a method other than
+ *   the two above, `tolerance` not finite and `> 0`, the two outputs are the same address,
+ *   or a pointer is misaligned.
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target == 0` or `target >= p`.
- * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `continuity > floor((target - 1) / 2)`.
+ * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `spline_continuity > K` (the strategy's maximum
+ *   above).
  * - `CAGD_ERR_BAD_KNOTS`: an interior knot of multiplicity `p + 1` (the input may be
  *   discontinuous there).
- * - `CAGD_ERR_CONDITION_NOT_MET`: a span cannot meet the tolerance (e.g. a tolerance
- *   below the rounding level of the curve).
+ * - `CAGD_ERR_CONDITION_NOT_MET`: `CAGD_SPLINE_FIT`, `CAGD_SPLINE_SEGMENTS`: the
+ *   tolerance cannot be met (below the rounding level of the curve, or more than `2^20`
+ *   spans needed); `CAGD_SPLINE_PIEGL_TILLER_1995`: the curve is not reducible within the
+ *   tolerance without subdivision (a segment reduction or a required knot removal does
+ *   not fit in the tolerance left on its spans), or a reduced NURBS weight is not
+ *   positive.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: `CAGD_SPLINE_FIT`: a weight of the fitted NURBS is
+ *   not positive.
+ * - `CAGD_ERR_SINGULAR`: `CAGD_SPLINE_FIT`: the least-squares system is rank-deficient
+ *   (not expected for a valid spline).
+ * - `CAGD_ERR_NON_FINITE`: with `measure`, the sampled error is not finite.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -1066,34 +1173,6 @@ CagdStatus cagd_bspline_reduce_uniform(const struct CagdBSpline *spline,
                                        const struct CagdReduceOptions *opts,
                                        struct CagdBSpline **spline_out,
                                        struct CagdReport **report_out);
-
-/**
- * Reads what a B-spline reduction did: the largest certified bound of a reduced Bézier
- * segment (the reduction step alone, before merging and knot removal), the number of
- * reduced segments, and the non-empty knot spans of the input and of the result.
- *
- * Parameters:
- * - `report` (in): the report.
- * - `segment_bound_out` (out): on `CAGD_OK`, the bound of the reduction step.
- * - `pieces_out` (out): on `CAGD_OK`, the number of reduced segments.
- * - `spans_in_out` (out): on `CAGD_OK`, the non-empty spans of the input.
- * - `spans_out_out` (out): on `CAGD_OK`, the non-empty spans of the result.
- *
- * Returns:
- * - `CAGD_OK`: all outputs are written.
- * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
- * - `CAGD_ERR_NOT_AVAILABLE`: the report is not of a B-spline reduction.
- * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
- * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
- *
- * # Safety
- * `report` must be NULL or a live report handle; the outputs NULL or writable.
- */
-CagdStatus cagd_report_spline(const struct CagdReport *report,
-                              double *segment_bound_out,
-                              size_t *pieces_out,
-                              size_t *spans_in_out,
-                              size_t *spans_out_out);
 
 /**
  * Creates a B-spline or NURBS surface (`weights` NULL for a polynomial one)
@@ -2666,7 +2745,8 @@ CagdStatus cagd_report_method_params(const struct CagdReport *report,
  * `l1 = l2 = 0`, `measure = false`, `space = CAGD_SPACE_EUCLIDEAN`, `tolerance = 0`
  * (must be set before a reduction to a tolerance), `continuity = 0`, `max_depth = 30`,
  * `target_v = 3`, `patch_method = CAGD_PATCH_PERTURB`, `constraint = CAGD_CONSTRAINT_NONE`,
- * `merge = CAGD_MERGE_EXACT`.
+ * `merge = CAGD_MERGE_EXACT`, `spline_strategy = CAGD_SPLINE_FIT`, `spline_continuity = -1`
+ * (all the continuity the input has, up to the strategy's maximum).
  * Call it before setting fields, so that `struct_size` is right and fields added in later
  * versions get their defaults.
  *
@@ -2797,6 +2877,11 @@ void cagd_report_free(struct CagdReport *report);
 /**
  * Reads the method and the degrees of a reduction. For a patch reduction: the curve
  * method option (`opts->method`) and the degrees in u (`cagd_report_patch` gives all).
+ * For `cagd_bspline_reduce`: the method that reduced the pieces, which depends on the
+ * strategy (`cagd_report_spline_strategy`): `opts->method` for `CAGD_SPLINE_SEGMENTS`,
+ * `CAGD_METHOD_L2` for `CAGD_SPLINE_FIT` (its fit minimises the L2 norm with the end
+ * points kept; `opts->method` is not used), `CAGD_METHOD_PIEGL_TILLER` for
+ * `CAGD_SPLINE_PIEGL_TILLER_1995` (its one-degree segment reduction).
  *
  * Parameters:
  * - `report` (in): the report.
@@ -2972,6 +3057,97 @@ CagdStatus cagd_report_step_bounds(const struct CagdReport *report,
                                    double *out,
                                    size_t out_cap,
                                    size_t *out_needed);
+
+/**
+ * Reads what a B-spline reduction did: the largest certified bound of a piece of the
+ * reduction step alone, before merging and knot removal (a reduced Bézier segment; for
+ * `CAGD_SPLINE_FIT` a span of the fitted spline), the number of those pieces (after any
+ * subdivision; for `CAGD_SPLINE_PIEGL_TILLER_1995` the result's spans), and the non-empty
+ * knot spans of the input and of the result.
+ *
+ * Parameters:
+ * - `report` (in): the report.
+ * - `segment_bound_out` (out): on `CAGD_OK`, the bound of the reduction step.
+ * - `pieces_out` (out): on `CAGD_OK`, the number of pieces of the reduction step.
+ * - `spans_in_out` (out): on `CAGD_OK`, the non-empty spans of the input.
+ * - `spans_out_out` (out): on `CAGD_OK`, the non-empty spans of the result.
+ *
+ * Returns:
+ * - `CAGD_OK`: all outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the report is not of a B-spline reduction.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `report` must be NULL or a live report handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_report_spline(const struct CagdReport *report,
+                              double *segment_bound_out,
+                              size_t *pieces_out,
+                              size_t *spans_in_out,
+                              size_t *spans_out_out);
+
+/**
+ * Reads the strategy of a `cagd_bspline_reduce` reduction.
+ *
+ * Parameters:
+ * - `report` (in): the report.
+ * - `strategy_out` (out): on `CAGD_OK`, the `CagdSplineStrategy` code that was used.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*strategy_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `report` or `strategy_out` is NULL.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the report is not of `cagd_bspline_reduce` (e.g. of
+ *   `cagd_bspline_reduce_uniform` or of a curve reduction).
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `report` must be NULL or a live report handle; `strategy_out` NULL or writable.
+ */
+CagdStatus cagd_report_spline_strategy(const struct CagdReport *report, int32_t *strategy_out);
+
+/**
+ * Copies the continuity a `cagd_bspline_reduce` reduction guarantees: for each interior
+ * knot of the input that is still a knot of the result, in increasing order, the knot
+ * and the order `k` of the continuity `C^k` there (`min(spline_continuity, c)` where the
+ * input is `C^c`, at most the strategy's maximum; the result's own continuity there,
+ * `target - multiplicity`, is at least `k`: knot removal may have raised it). Input
+ * knots the reduction removed are not listed (the result is a polynomial across them).
+ * Call with `out_cap = 0` (and both buffers NULL) to ask the count.
+ *
+ * Parameters:
+ * - `report` (in): the report.
+ * - `knots_out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
+ *   `*out_needed` doubles hold the knots. May be NULL only when `out_cap == 0`.
+ * - `orders_out` (out): buffer of `out_cap` `int32_t`; on `CAGD_OK` its first
+ *   `*out_needed` entries hold the orders (`orders_out[i]` belongs to `knots_out[i]`).
+ *   May be NULL only when `out_cap == 0`. Must not overlap `knots_out`.
+ * - `out_cap` (in): capacity of each buffer, in entries (doubles for `knots_out`,
+ *   `int32_t` for `orders_out`).
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, the count.
+ *
+ * Returns:
+ * - `CAGD_OK`: the knots and orders are in the buffers (nothing when the count is 0).
+ * - `CAGD_ERR_NULL_POINTER`: `report` or `out_needed` is NULL, or `knots_out` or
+ *   `orders_out` is NULL with `out_cap > 0`.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the count; only `*out_needed` is
+ *   written.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the report is not of `cagd_bspline_reduce`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: the two buffers overlap, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `report` must be NULL or a live report handle; `knots_out` NULL or `out_cap` writable
+ * doubles; `orders_out` NULL or `out_cap` writable `int32_t`; `out_needed` NULL or
+ * writable.
+ */
+CagdStatus cagd_report_spline_continuity(const struct CagdReport *report,
+                                         double *knots_out,
+                                         int32_t *orders_out,
+                                         size_t out_cap,
+                                         size_t *out_needed);
 
 /**
  * The name of a status code: `"CAGD_OK"`, `"CAGD_ERR_NULL_POINTER"`, ….

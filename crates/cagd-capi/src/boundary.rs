@@ -156,9 +156,10 @@ pub(crate) const OUT: OutNames = OutNames {
     needed: "out_needed",
 };
 
-/// A checked caller buffer (`out`, `out_cap`, `out_needed`) not yet written.
-pub(crate) struct SliceOut<'a> {
-    out: *mut f64,
+/// A checked caller buffer (`out`, `out_cap`, `out_needed`) of `T` (`f64` for every
+/// double array; `i32` for the few integer arrays) not yet written.
+pub(crate) struct SliceOut<'a, T> {
+    out: *mut T,
     cap: usize,
     needed_out: &'a mut usize,
     names: &'a OutNames,
@@ -170,13 +171,13 @@ pub(crate) struct SliceOut<'a> {
 ///
 /// # Safety
 /// `needed_out` must be NULL or writable; `out` must be NULL or point to `cap` writable
-/// doubles, both valid for `'a`.
-pub(crate) unsafe fn slice_out<'a>(
-    out: *mut f64,
+/// `T`, both valid for `'a`.
+pub(crate) unsafe fn slice_out<'a, T: Copy>(
+    out: *mut T,
     cap: usize,
     needed_out: *mut usize,
     names: &'a OutNames,
-) -> CResult<SliceOut<'a>> {
+) -> CResult<SliceOut<'a, T>> {
     // SAFETY: forwarded contract.
     let needed_out = unsafe { out_ref(needed_out, names.needed) }?;
     if out.is_null() && cap != 0 {
@@ -191,7 +192,7 @@ pub(crate) unsafe fn slice_out<'a>(
     }
     if !out.is_aligned() {
         return Err(Failure::invalid(format!(
-            "argument `{}` is not aligned for double",
+            "argument `{}` is not aligned for its element type",
             names.out
         )));
     }
@@ -203,18 +204,18 @@ pub(crate) unsafe fn slice_out<'a>(
     })
 }
 
-impl<'a> SliceOut<'a> {
-    /// Writes `needed` to `*out_needed` and returns the first `needed` doubles of the
+impl<'a, T: Copy> SliceOut<'a, T> {
+    /// Writes `needed` to `*out_needed` and returns the first `needed` elements of the
     /// buffer, or, when `cap < needed`, writes `needed` and fails with
     /// `CAGD_ERR_BUFFER_TOO_SMALL` (so capacity 0 is a size query). Call it after every
     /// check that can fail, and fill the returned slice completely.
-    pub(crate) fn take(self, needed: usize) -> CResult<&'a mut [f64]> {
+    pub(crate) fn take(self, needed: usize) -> CResult<&'a mut [T]> {
         *self.needed_out = needed;
         if self.cap < needed {
             return Err(Failure::new(
                 CagdStatus::ERR_BUFFER_TOO_SMALL,
                 format!(
-                    "`{}` = {} doubles is too small: {needed} needed (written to `{}`)",
+                    "`{}` = {} is too small: {needed} needed (written to `{}`)",
                     self.names.cap, self.cap, self.names.needed
                 ),
             ));
@@ -223,14 +224,33 @@ impl<'a> SliceOut<'a> {
             return Ok(&mut []);
         }
         // SAFETY: non-NULL (cap >= needed > 0) and aligned, checked in `slice_out`; `needed
-        // <= cap` writable doubles by the caller's contract; the length fits isize since
+        // <= cap` writable elements by the caller's contract; the length fits isize since
         // the memory exists.
         Ok(unsafe { std::slice::from_raw_parts_mut(self.out, needed) })
     }
 
-    /// [`SliceOut::take`] of `data.len()` doubles, then copies `data` in.
-    pub(crate) fn copy_from(self, data: &[f64]) -> CResult<()> {
+    /// [`SliceOut::take`] of `data.len()` elements, then copies `data` in.
+    pub(crate) fn copy_from(self, data: &[T]) -> CResult<()> {
         self.take(data.len())?.copy_from_slice(data);
+        Ok(())
+    }
+}
+
+/// Rejects two output buffers whose written ranges (`a_len` elements of `A` at `a`,
+/// `b_len` of `B` at `b`) would overlap: `CAGD_ERR_INVALID_ARGUMENT` naming `what`.
+pub(crate) fn disjoint<A, B>(
+    a: *const A,
+    a_len: usize,
+    b: *const B,
+    b_len: usize,
+    what: &str,
+) -> CResult<()> {
+    let (a0, b0) = (a.addr(), b.addr());
+    let a1 = a0.saturating_add(a_len.saturating_mul(size_of::<A>()));
+    let b1 = b0.saturating_add(b_len.saturating_mul(size_of::<B>()));
+    if a_len > 0 && b_len > 0 && a0 < b1 && b0 < a1 {
+        Err(Failure::invalid(format!("{what} overlap")))
+    } else {
         Ok(())
     }
 }
@@ -315,7 +335,7 @@ mod tests {
     }
 
     /// `copy_from` through `slice_out`, as the entry points use it.
-    fn copy(data: &[f64], out: *mut f64, cap: usize, needed: *mut usize) -> CResult<()> {
+    fn copy<T: Copy>(data: &[T], out: *mut T, cap: usize, needed: *mut usize) -> CResult<()> {
         // SAFETY: the tests pass pointers to locals of the stated sizes, or NULL.
         unsafe { slice_out(out, cap, needed, &OUT) }?.copy_from(data)
     }
@@ -341,6 +361,33 @@ mod tests {
         assert_eq!(needed, 7, "nothing written on a NULL buffer");
         let r = copy(&data, buf.as_mut_ptr(), 4, std::ptr::null_mut());
         assert_eq!(r.unwrap_err().status, CagdStatus::ERR_NULL_POINTER);
+    }
+
+    #[test]
+    fn slice_out_of_integers() {
+        let mut buf = [7i32; 3];
+        let mut needed = 0usize;
+        let r = copy(&[1i32, 2, 3], buf.as_mut_ptr(), 2, &mut needed);
+        assert_eq!(r.unwrap_err().status, CagdStatus::ERR_BUFFER_TOO_SMALL);
+        assert_eq!((needed, buf), (3, [7, 7, 7]));
+        copy(&[1i32, 2, 3], buf.as_mut_ptr(), 3, &mut needed).unwrap();
+        assert_eq!(buf, [1, 2, 3]);
+    }
+
+    #[test]
+    fn disjoint_counts_the_bytes_of_each_type() {
+        let mut buf = [0.0f64; 4];
+        let p = buf.as_mut_ptr();
+        let q = p.cast::<i32>();
+        // one double at bytes 0..8, one int at bytes 8..12: disjoint
+        assert!(disjoint(p, 1, q.wrapping_add(2), 1, "x").is_ok());
+        // two doubles cover bytes 0..16
+        let e = disjoint(p, 2, q.wrapping_add(2), 1, "`a` and `b`").unwrap_err();
+        assert_eq!(e.status, CagdStatus::ERR_INVALID_ARGUMENT);
+        assert!(e.message.contains("`a` and `b` overlap"));
+        assert!(disjoint(q.wrapping_add(3), 1, p, 2, "x").is_err());
+        // nothing written: never an overlap
+        assert!(disjoint(p, 0, q, 5, "x").is_ok());
     }
 
     #[test]

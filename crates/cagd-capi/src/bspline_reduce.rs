@@ -1,16 +1,16 @@
 //! B-spline / NURBS degree reduction from C: general splines to a tolerance
-//! (`cagd_bspline_reduce`) and seed 001's uniform pipeline (`cagd_bspline_reduce_uniform`).
+//! (`cagd_bspline_reduce`, strategies in `spline_strategy.rs`) and seed 001's uniform
+//! pipeline (`cagd_bspline_reduce_uniform`); the report accessors are in
+//! `report_spline.rs`.
 
 use cagd_core::BSplineCurve;
-use cagd_reduce::{
-    BSplineOptions, BSplineStrategy, Merge, reduce_bspline, reduce_uniform_bspline,
-    spline_max_deviation,
-};
+use cagd_reduce::{Merge, reduce_bspline, reduce_uniform_bspline, spline_max_deviation};
 
 use crate::boundary::{CResult, Failure, boundary, handle_ref, into_handle, nonnull, out_ref};
 use crate::bspline::{CagdBSpline, spline_failure};
 use crate::reduce_options::{CagdReduceOptions, read_options};
-use crate::report::{CagdReport, ReportKind, SplineReport};
+use crate::report::{CagdReport, ReportKind, SplineReport, StrategyReport};
+use crate::spline_strategy::{CagdSplineStrategy, spline_options};
 use crate::status::CagdStatus;
 
 /// Checks and borrows the two outputs (distinct, non-NULL, aligned).
@@ -44,40 +44,80 @@ fn spans(s: &BSplineCurve) -> usize {
 }
 
 /// Reduces a B-spline or NURBS curve of degree `p` to degree `opts->target` within
-/// `opts->tolerance` (certified, Euclidean, model space): every knot span is extracted as
-/// a Bézier piece, reduced by `opts->method` (`CAGD_METHOD_CONSTRAINED_CHEBYSHEV`, seed 000
-/// §14.5, or `CAGD_METHOD_L2`; their `r`, `p` are set per end from the continuity to keep)
-/// keeping derivatives `0..=min(continuity, p - s_j)` at each knot of multiplicity `s_j`,
-/// split at midpoints until each piece meets half the tolerance, merged exactly (seed 001
-/// §4.1), then knots are removed while the tracked local bound stays within the tolerance
-/// (after Piegl & Tiller 1995). The result is clamped on the input's domain; rational
-/// input is reduced in homogeneous coordinates.
+/// `opts->tolerance`, keeping the continuity the input has at its knots (cagd-reduce
+/// `reduce_bspline`; the task of Piegl & Tiller 1995, "Algorithm for degree reduction of
+/// B-spline curves"). The bound is certified: `cagd_report_bound` gives an upper bound of
+/// `max_t |C(t) - C'(t)|` (Euclidean, model space, `f64` rounding included) that is
+/// `<= tolerance` and never below the true error. The result is clamped on the input's
+/// domain and rational if the input is (NURBS are reduced in homogeneous coordinates).
 ///
-/// Options used: `method`, `target` (`1 <= target < p`), `tolerance`, `continuity` (at
-/// most `floor((target - 1) / 2)`: per-segment Hermite data need `2k + 1 <= target`;
-/// default 0), `measure`.
+/// Continuity: at every interior knot of the input that is still a knot of the result,
+/// the result is `C^min(k, c)`, `c` the input's continuity there (`p - s` for a knot of
+/// multiplicity `s`) and `k = opts->spline_continuity`, or the strategy's maximum `K` when
+/// it is `-1` (`cagd_report_spline_continuity` lists the knots and orders). The strategy
+/// (`opts->spline_strategy`, a `CagdSplineStrategy`) decides how:
+/// - `CAGD_SPLINE_FIT` (default), `K = target - 1`: one least-squares fit (parameter L2
+///   norm, end points kept) on the degree-`target` spline space with the input's knots at
+///   multiplicity `target - min(k, c, target - 1)`; spans whose certified bound misses
+///   their share of the tolerance are split and the fit repeated; then knots are removed
+///   while every span's tracked bound stays within the tolerance.
+/// - `CAGD_SPLINE_SEGMENTS`, `K = floor((target - 1) / 2)` (two-sided Hermite data need
+///   `2k + 1 <= target`): every knot span is extracted as a Bézier piece and reduced by
+///   `opts->method` (`CAGD_METHOD_L2`, or `CAGD_METHOD_CONSTRAINED_CHEBYSHEV`, seed 000
+///   §14.5; their end orders are set per knot from the continuity to keep, `opts->r` and
+///   `opts->p` are not used), split where needed until each piece meets its share of
+///   the tolerance, merged exactly (seed 001 §4.1), then knots are removed as above.
+/// - `CAGD_SPLINE_PIEGL_TILLER_1995`, `K = target - 1`: the classical algorithm (NURBS
+///   Book A5.11), kept as a reference: one degree at a time, every segment reduced by one
+///   degree (Piegl–Tiller's formula), merged, and every interior knot left with one copy
+///   fewer per degree (so `C^c` is kept where a knot stays; `spline_continuity` is checked
+///   against `K` but changes nothing). It never subdivides: the result has at most the
+///   input's spans, and when the curve is not reducible within the tolerance that way it
+///   fails with `CAGD_ERR_CONDITION_NOT_MET` (it succeeds essentially for degree-elevated
+///   splines, every interior knot of multiplicity `>= p - target + 1`, and those within
+///   the tolerance of one).
+///
+/// Options used: `spline_strategy`, `target` (`1 <= target < p`), `tolerance`,
+/// `spline_continuity`, `method` (`CAGD_SPLINE_SEGMENTS` only; ignored otherwise),
+/// `measure`. Not used: `continuity`, `r`, `p`, `max_depth` and the rest.
 ///
 /// Parameters:
 /// - `spline` (in): the spline.
 /// - `opts` (in): the options. Borrowed for the call.
 /// - `spline_out` (out): on `CAGD_OK`, the reduced spline of degree `target`, owned by the
 ///   caller: release with `cagd_bspline_free`.
-/// - `report_out` (out): on `CAGD_OK`, the report (`cagd_report_bound`,
-///   `cagd_report_max_error`, `cagd_report_spline`), owned by the caller: release with
-///   `cagd_report_free`. Neither output is written on failure.
+/// - `report_out` (out): on `CAGD_OK`, the report, owned by the caller: release with
+///   `cagd_report_free`. Neither output is written on failure. Its accessors:
+///   `cagd_report_bound`, `cagd_report_max_error` (with `measure`), `cagd_report_method`
+///   (the method that reduced the pieces: `opts->method` for segments, `CAGD_METHOD_L2`
+///   for the fit, `CAGD_METHOD_PIEGL_TILLER` for Piegl–Tiller 1995),
+///   `cagd_report_spline` (segment bound, spans), `cagd_report_spline_strategy`,
+///   `cagd_report_spline_continuity`.
 ///
 /// Returns:
 /// - `CAGD_OK`: both outputs are written.
 /// - `CAGD_ERR_NULL_POINTER`: `spline`, `opts`, `spline_out` or `report_out` is NULL.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` below `sizeof(CagdReduceOptions)`,
-///   an invalid method code or a method other than the two above, `tolerance` not finite
-///   and `> 0`, the two outputs are the same address, or a pointer is misaligned.
+///   a `spline_strategy` code that is not a `CagdSplineStrategy`, `spline_continuity`
+///   below `-1`, with `CAGD_SPLINE_SEGMENTS` an invalid method code or a method other than
+///   the two above, `tolerance` not finite and `> 0`, the two outputs are the same address,
+///   or a pointer is misaligned.
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`: `target == 0` or `target >= p`.
-/// - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `continuity > floor((target - 1) / 2)`.
+/// - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `spline_continuity > K` (the strategy's maximum
+///   above).
 /// - `CAGD_ERR_BAD_KNOTS`: an interior knot of multiplicity `p + 1` (the input may be
 ///   discontinuous there).
-/// - `CAGD_ERR_CONDITION_NOT_MET`: a span cannot meet the tolerance (e.g. a tolerance
-///   below the rounding level of the curve).
+/// - `CAGD_ERR_CONDITION_NOT_MET`: `CAGD_SPLINE_FIT`, `CAGD_SPLINE_SEGMENTS`: the
+///   tolerance cannot be met (below the rounding level of the curve, or more than `2^20`
+///   spans needed); `CAGD_SPLINE_PIEGL_TILLER_1995`: the curve is not reducible within the
+///   tolerance without subdivision (a segment reduction or a required knot removal does
+///   not fit in the tolerance left on its spans), or a reduced NURBS weight is not
+///   positive.
+/// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: `CAGD_SPLINE_FIT`: a weight of the fitted NURBS is
+///   not positive.
+/// - `CAGD_ERR_SINGULAR`: `CAGD_SPLINE_FIT`: the least-squares system is rank-deficient
+///   (not expected for a valid spline).
+/// - `CAGD_ERR_NON_FINITE`: with `measure`, the sampled error is not finite.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -97,14 +137,9 @@ pub unsafe extern "C" fn cagd_bspline_reduce(
         let o = unsafe { read_options(opts) }?;
         // SAFETY: as above.
         let (s_out, r_out) = unsafe { outputs(spline_out, report_out) }?;
-        let bopts = BSplineOptions {
-            continuity: Some(o.continuity),
-            strategy: BSplineStrategy::Segments(o.method()?),
-            measure: o.measure,
-            ..BSplineOptions::new(o.target, o.tolerance)
-        };
-        let red = reduce_bspline(&s.0, &bopts).map_err(spline_failure)?;
+        let red = reduce_bspline(&s.0, &spline_options(&o)?).map_err(spline_failure)?;
         let r = &red.report;
+        let strategy = CagdSplineStrategy::of(&r.strategy);
         let report = SplineReport {
             degree_from: r.degree_from,
             degree_to: r.degree_to,
@@ -114,11 +149,15 @@ pub unsafe extern "C" fn cagd_bspline_reduce(
             pieces: r.pieces,
             spans_in: red.spans_in,
             spans_out: red.spans_out,
+            strategy: Some(StrategyReport {
+                strategy,
+                continuity: r.continuity.clone(),
+            }),
         };
         *s_out = into_handle(CagdBSpline(red.curve));
         *r_out = into_handle(CagdReport {
             kind: ReportKind::Spline(report),
-            method: o.method,
+            method: strategy.reported_method(o.method),
         });
         Ok(())
     })
@@ -200,63 +239,13 @@ pub unsafe extern "C" fn cagd_bspline_reduce_uniform(
             pieces: red.segments.len(),
             spans_in: spans(&s.0),
             spans_out: spans(&red.curve),
+            strategy: None,
         };
         *s_out = into_handle(CagdBSpline(red.curve));
         *r_out = into_handle(CagdReport {
             kind: ReportKind::Spline(report),
             method: o.method,
         });
-        Ok(())
-    })
-}
-
-/// Reads what a B-spline reduction did: the largest certified bound of a reduced Bézier
-/// segment (the reduction step alone, before merging and knot removal), the number of
-/// reduced segments, and the non-empty knot spans of the input and of the result.
-///
-/// Parameters:
-/// - `report` (in): the report.
-/// - `segment_bound_out` (out): on `CAGD_OK`, the bound of the reduction step.
-/// - `pieces_out` (out): on `CAGD_OK`, the number of reduced segments.
-/// - `spans_in_out` (out): on `CAGD_OK`, the non-empty spans of the input.
-/// - `spans_out_out` (out): on `CAGD_OK`, the non-empty spans of the result.
-///
-/// Returns:
-/// - `CAGD_OK`: all outputs are written.
-/// - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
-/// - `CAGD_ERR_NOT_AVAILABLE`: the report is not of a B-spline reduction.
-/// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
-/// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
-///
-/// # Safety
-/// `report` must be NULL or a live report handle; the outputs NULL or writable.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn cagd_report_spline(
-    report: *const CagdReport,
-    segment_bound_out: *mut f64,
-    pieces_out: *mut usize,
-    spans_in_out: *mut usize,
-    spans_out_out: *mut usize,
-) -> CagdStatus {
-    boundary(|| {
-        // SAFETY: the caller's contract (see # Safety).
-        let r = unsafe { handle_ref(report, "report") }?;
-        // SAFETY: as above.
-        let (b, n, si, so) = unsafe {
-            (
-                out_ref(segment_bound_out, "segment_bound_out")?,
-                out_ref(pieces_out, "pieces_out")?,
-                out_ref(spans_in_out, "spans_in_out")?,
-                out_ref(spans_out_out, "spans_out_out")?,
-            )
-        };
-        let ReportKind::Spline(sr) = &r.kind else {
-            return Err(Failure::new(
-                CagdStatus::ERR_NOT_AVAILABLE,
-                "not the report of a B-spline reduction",
-            ));
-        };
-        (*b, *n, *si, *so) = (sr.segment_bound, sr.pieces, sr.spans_in, sr.spans_out);
         Ok(())
     })
 }

@@ -5,7 +5,7 @@
 
 use cagd_core::{curve_distance, tensor_patch_distance, tri_patch_distance};
 
-use crate::boundary::{CResult, Failure, OUT, OutNames, boundary, handle_ref, out_ref, slice_out};
+use crate::boundary::{Failure, OUT, OutNames, boundary, disjoint, handle_ref, out_ref, slice_out};
 use crate::curve::CagdCurve;
 use crate::status::CagdStatus;
 use crate::tensor_patch::CagdTensorPatch;
@@ -69,18 +69,6 @@ const G_OUT: OutNames = OutNames {
     needed: "g_needed",
 };
 
-/// Rejects two output buffers whose written ranges would overlap.
-fn disjoint(a: *mut f64, a_len: usize, b: *mut f64, b_len: usize) -> CResult<()> {
-    let (a0, b0) = (a as usize, b as usize);
-    let a1 = a0.saturating_add(a_len.saturating_mul(size_of::<f64>()));
-    let b1 = b0.saturating_add(b_len.saturating_mul(size_of::<f64>()));
-    if a_len > 0 && b_len > 0 && a0 < b1 && b0 < a1 {
-        Err(Failure::invalid("`f_out` and `g_out` overlap"))
-    } else {
-        Ok(())
-    }
-}
-
 /// The degeneracy invariants of a tensor-product patch of degree `(m, n)` (seed 000
 /// eq. 14.1.2, Theorem 14.1.1): `F_j = sum_i (-1)^(m-i) C(m,i) P_ij` for `j = 0..=n` (all
 /// zero iff the patch has degree `< m` in `u`) and `G_i = sum_j (-1)^(n-j) C(n,j) P_ij` for
@@ -136,7 +124,13 @@ pub unsafe extern "C" fn cagd_tensorpatch_degeneracy(
         // SAFETY: as above.
         let g_dst = unsafe { slice_out(g_out, g_cap, g_needed, &G_OUT) }?;
         let (f, g) = p.0.degeneracy_invariants();
-        disjoint(f_out, f.len().min(f_cap), g_out, g.len().min(g_cap))?;
+        disjoint(
+            f_out,
+            f.len().min(f_cap),
+            g_out,
+            g.len().min(g_cap),
+            "`f_out` and `g_out`",
+        )?;
         let (f_res, g_res) = (f_dst.take(f.len()), g_dst.take(g.len()));
         let (fs, gs) = (f_res?, g_res?);
         fs.copy_from_slice(&f);

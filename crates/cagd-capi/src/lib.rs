@@ -96,6 +96,9 @@ mod reduce_tolerance;
 mod report;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod report_piecewise;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod report_spline;
+mod spline_strategy;
 #[allow(
     unsafe_code,
     reason = "C entry points (no_mangle) returning static strings"
@@ -119,7 +122,7 @@ pub use bspline_arrays::{cagd_bspline_knots, cagd_bspline_points, cagd_bspline_w
 pub use bspline_ops::{
     cagd_bspline_derivatives, cagd_bspline_eval, cagd_bspline_insert_knot, cagd_bspline_to_beziers,
 };
-pub use bspline_reduce::{cagd_bspline_reduce, cagd_bspline_reduce_uniform, cagd_report_spline};
+pub use bspline_reduce::{cagd_bspline_reduce, cagd_bspline_reduce_uniform};
 pub use bspline_surface::{
     CagdBSplineSurface, cagd_bsplinesurface_array, cagd_bsplinesurface_eval,
     cagd_bsplinesurface_free, cagd_bsplinesurface_new, cagd_bsplinesurface_reduce,
@@ -172,6 +175,10 @@ pub use report::{
     cagd_report_space,
 };
 pub use report_piecewise::{cagd_report_pieces, cagd_report_piecewise, cagd_report_step_bounds};
+pub use report_spline::{
+    cagd_report_spline, cagd_report_spline_continuity, cagd_report_spline_strategy,
+};
+pub use spline_strategy::CagdSplineStrategy;
 pub use status::{CagdStatus, cagd_status_name, status_of_core};
 pub use tensor_patch::{
     CagdTensorPatch, cagd_tensorpatch_free, cagd_tensorpatch_new, cagd_tensorpatch_points,

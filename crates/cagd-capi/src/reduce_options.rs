@@ -4,6 +4,7 @@
 use cagd_reduce::{ErrorSpace, Method, ReduceOptions};
 
 use crate::boundary::{CResult, Failure, boundary, nonnull, out_ref};
+use crate::spline_strategy::CagdSplineStrategy;
 use crate::status::CagdStatus;
 
 /// The degree-reduction methods (cagd-reduce `Method`; seed 000 chapter 14 and the
@@ -140,7 +141,11 @@ pub enum CagdMerge {
 /// not initialised is most likely caught). Later versions only append fields; a library
 /// reads at most the fields it knows, and the fields a smaller (older) struct lacks take
 /// their defaults, so a program compiled against an older header keeps working. Never set
-/// `struct_size` by hand to anything but `sizeof(CagdReduceOptions)`.
+/// `struct_size` by hand to anything but `sizeof(CagdReduceOptions)`. No version has been
+/// released yet, so every field below (including `spline_strategy` and
+/// `spline_continuity`, the last ones added) belongs to the first version and the smallest
+/// size accepted is the full size; fields appended after the first release will say in
+/// which version they appeared, and the smallest size accepted stays that of the first.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CagdReduceOptions {
@@ -178,7 +183,8 @@ pub struct CagdReduceOptions {
     /// Reduction to a tolerance only: the order `k` of parametric continuity `C^k` at the
     /// joins of the pieces (interior knots of multiplicity `target - k`); needs
     /// `k < target` and a method that keeps derivatives up to order `k` at both ends
-    /// (e.g. `CAGD_METHOD_L2` with `r = p = k`). Default 0 (`C^0`).
+    /// (e.g. `CAGD_METHOD_L2` with `r = p = k`). Default 0 (`C^0`). Not used by
+    /// `cagd_bspline_reduce`, which reads `spline_continuity`.
     pub continuity: usize,
     /// Reduction of a curve to a tolerance only: the deepest midpoint-subdivision level
     /// allowed (pieces of length `2^-max_depth` of the parameter range). Default 30.
@@ -194,10 +200,20 @@ pub struct CagdReduceOptions {
     /// `cagd_bspline_reduce_uniform` only: a `CagdMerge` value. Default
     /// `CAGD_MERGE_EXACT`.
     pub merge: i32,
+    /// `cagd_bspline_reduce` only: a `CagdSplineStrategy` value. Default `CAGD_SPLINE_FIT`.
+    pub spline_strategy: i32,
+    /// `cagd_bspline_reduce` only: the continuity to keep at the input's interior knots.
+    /// `-1` (default): all the continuity the input has there, up to the most the strategy
+    /// keeps (`C^(target - 1)` for `CAGD_SPLINE_FIT` and `CAGD_SPLINE_PIEGL_TILLER_1995`,
+    /// `C^floor((target - 1) / 2)` for `CAGD_SPLINE_SEGMENTS`). `k >= 0`: keep at most
+    /// `C^k`, i.e. `C^min(k, c)` where the input is `C^c` (knot removal may leave more; a
+    /// `k` above the strategy's maximum is `CAGD_ERR_TOO_MANY_CONSTRAINTS`). Below `-1`:
+    /// `CAGD_ERR_INVALID_ARGUMENT`.
+    pub spline_continuity: i32,
 }
 
-/// The size of the first published version of `CagdReduceOptions` (this one): the
-/// smallest `struct_size` accepted.
+/// The size of the first published version of `CagdReduceOptions` (this one: nothing is
+/// released yet, so it is the full size): the smallest `struct_size` accepted.
 pub(crate) const OPTIONS_MIN_SIZE: usize = size_of::<CagdReduceOptions>();
 
 impl Default for CagdReduceOptions {
@@ -219,6 +235,8 @@ impl Default for CagdReduceOptions {
             patch_method: CagdPatchMethod::PATCH_PERTURB as i32,
             constraint: CagdPatchConstraint::CONSTRAINT_NONE as i32,
             merge: CagdMerge::MERGE_EXACT as i32,
+            spline_strategy: CagdSplineStrategy::SPLINE_FIT as i32,
+            spline_continuity: -1,
         }
     }
 }
@@ -327,7 +345,8 @@ impl CagdReduceOptions {
 /// `l1 = l2 = 0`, `measure = false`, `space = CAGD_SPACE_EUCLIDEAN`, `tolerance = 0`
 /// (must be set before a reduction to a tolerance), `continuity = 0`, `max_depth = 30`,
 /// `target_v = 3`, `patch_method = CAGD_PATCH_PERTURB`, `constraint = CAGD_CONSTRAINT_NONE`,
-/// `merge = CAGD_MERGE_EXACT`.
+/// `merge = CAGD_MERGE_EXACT`, `spline_strategy = CAGD_SPLINE_FIT`, `spline_continuity = -1`
+/// (all the continuity the input has, up to the strategy's maximum).
 /// Call it before setting fields, so that `struct_size` is right and fields added in later
 /// versions get their defaults.
 ///
@@ -352,91 +371,5 @@ pub unsafe extern "C" fn cagd_reduce_options_init(opts: *mut CagdReduceOptions) 
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn method_codes_are_pinned_and_translate() {
-        use CagdReduceMethod as M;
-        let all = [
-            (M::METHOD_FORREST, 0, "forrest"),
-            (M::METHOD_PIEGL_TILLER, 1, "piegl-tiller"),
-            (M::METHOD_FARIN, 2, "farin"),
-            (M::METHOD_PERTURB, 3, "perturb"),
-            (M::METHOD_PERTURB_G1, 4, "perturb-g1"),
-            (M::METHOD_ECK, 5, "eck"),
-            (M::METHOD_WATKINS_WORSEY, 6, "watkins-worsey"),
-            (M::METHOD_BOGACKI_WEINSTEIN_XU, 7, "bogacki-weinstein-xu"),
-            (M::METHOD_GENERALIZED_INVERSE, 8, "generalized-inverse"),
-            (
-                M::METHOD_GENERALIZED_INVERSE_ENDS,
-                9,
-                "generalized-inverse-ends",
-            ),
-            (M::METHOD_CONSTRAINED_CHEBYSHEV, 10, "constrained-chebyshev"),
-            (M::METHOD_L2, 11, "l2"),
-        ];
-        for (m, code, name) in all {
-            assert_eq!(m as i32, code);
-            let opts = CagdReduceOptions {
-                method: code,
-                ..CagdReduceOptions::default()
-            };
-            assert_eq!(opts.method().unwrap().name(), name);
-        }
-        assert_eq!(CagdErrorSpace::SPACE_EUCLIDEAN as i32, 0);
-        assert_eq!(CagdErrorSpace::SPACE_HOMOGENEOUS as i32, 1);
-        assert_eq!(
-            CagdReduceOptions::default().method().unwrap().name(),
-            "l2",
-            "the default method"
-        );
-        for bad in [-1, 12, i32::MAX] {
-            let opts = CagdReduceOptions {
-                method: bad,
-                ..CagdReduceOptions::default()
-            };
-            assert_eq!(
-                opts.method().unwrap_err().status,
-                CagdStatus::ERR_INVALID_ARGUMENT
-            );
-        }
-    }
-}
-
-#[cfg(test)]
-mod size_tests {
-    use super::*;
-
-    #[test]
-    fn struct_size_rule() {
-        let mut o = CagdReduceOptions::default();
-        assert_eq!(o.struct_size, size_of::<CagdReduceOptions>());
-        o.target = 7;
-        // SAFETY: a valid, initialised struct.
-        let r = unsafe { read_options(&o) }.unwrap();
-        assert_eq!(r, o);
-        o.struct_size = OPTIONS_MIN_SIZE - 1;
-        // SAFETY: as above.
-        let e = unsafe { read_options(&o) }.unwrap_err();
-        assert_eq!(e.status, CagdStatus::ERR_INVALID_ARGUMENT);
-        o.struct_size = 0;
-        // SAFETY: as above.
-        assert!(unsafe { read_options(&o) }.is_err());
-        // A C caller may store any byte in the bool: read as true, never UB.
-        let mut raw = std::mem::MaybeUninit::new(CagdReduceOptions::default());
-        // SAFETY: writes the byte of `measure` through a byte pointer, as C could (a
-        // MaybeUninit may hold any bytes).
-        unsafe {
-            raw.as_mut_ptr()
-                .cast::<u8>()
-                .add(std::mem::offset_of!(CagdReduceOptions, measure))
-                .write(7);
-        }
-        // SAFETY: memory laid out as CagdReduceOptions; read_options reads it as bytes.
-        assert!(unsafe { read_options(raw.as_ptr()) }.unwrap().measure);
-        // SAFETY: NULL is allowed by the contract.
-        let e = unsafe { read_options(std::ptr::null()) }.unwrap_err();
-        assert_eq!(e.status, CagdStatus::ERR_NULL_POINTER);
-    }
-}
+#[path = "reduce_options_tests.rs"]
+mod tests;

@@ -7,6 +7,7 @@ use crate::boundary::{
     CResult, Failure, boundary, boundary_void, free_handle, handle_ref, out_ref,
 };
 use crate::reduce_options::CagdErrorSpace;
+use crate::spline_strategy::CagdSplineStrategy;
 use crate::status::CagdStatus;
 
 /// Opaque handle to the report of a reduction: the method, the degrees, the certified
@@ -15,7 +16,8 @@ use crate::status::CagdStatus;
 #[derive(Debug, Clone, PartialEq)]
 pub struct CagdReport {
     pub(crate) kind: ReportKind,
-    /// The `CagdReduceMethod` code that was asked for.
+    /// The `CagdReduceMethod` code `cagd_report_method` gives: the one asked for, except
+    /// for `cagd_bspline_reduce` (see `CagdSplineStrategy::reported_method`).
     pub(crate) method: i32,
 }
 
@@ -63,6 +65,19 @@ pub(crate) struct SplineReport {
     pub(crate) spans_in: usize,
     /// Non-empty knot spans of the result.
     pub(crate) spans_out: usize,
+    /// The strategy and the kept continuity (`cagd_bspline_reduce` only; `None` for the
+    /// uniform pipeline).
+    pub(crate) strategy: Option<StrategyReport>,
+}
+
+/// What `cagd_bspline_reduce` reports beyond `SplineReport`'s numbers.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct StrategyReport {
+    /// The strategy used.
+    pub(crate) strategy: CagdSplineStrategy,
+    /// `(knot, k)`: the continuity `C^k` guaranteed at each interior knot of the input that
+    /// is still a knot of the result, in increasing knot order.
+    pub(crate) continuity: Vec<(f64, usize)>,
 }
 
 impl CagdReport {
@@ -126,6 +141,11 @@ pub unsafe extern "C" fn cagd_report_free(report: *mut CagdReport) {
 
 /// Reads the method and the degrees of a reduction. For a patch reduction: the curve
 /// method option (`opts->method`) and the degrees in u (`cagd_report_patch` gives all).
+/// For `cagd_bspline_reduce`: the method that reduced the pieces, which depends on the
+/// strategy (`cagd_report_spline_strategy`): `opts->method` for `CAGD_SPLINE_SEGMENTS`,
+/// `CAGD_METHOD_L2` for `CAGD_SPLINE_FIT` (its fit minimises the L2 norm with the end
+/// points kept; `opts->method` is not used), `CAGD_METHOD_PIEGL_TILLER` for
+/// `CAGD_SPLINE_PIEGL_TILLER_1995` (its one-degree segment reduction).
 ///
 /// Parameters:
 /// - `report` (in): the report.

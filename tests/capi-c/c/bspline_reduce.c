@@ -5,8 +5,10 @@
  *   knot of multiplicity 2) gives the reduced_segments' points without the shared joint
  *   point; its measured error is SPEC-reduce §8's 1.30e-2.
  * - general reduction to a tolerance: (t, t^3) written as a degree-4 spline (Marsden's
- *   identity: points are the blossoms) comes back as the cubic (t, t^3); the NURBS circle
- *   reduced to a polyline within 1e-2 stays within its bound of the unit circle. */
+ *   identity: points are the blossoms) comes back as the cubic (t, t^3) by the C1 segment
+ *   strategy; the NURBS circle reduced to a polyline within 1e-2 by the default fit stays
+ *   within its bound of the unit circle. The strategies themselves are tested in
+ *   bspline_reduce_strategy.c. */
 #include <stdint.h>
 
 #include "ctest.h"
@@ -112,7 +114,8 @@ int cagd_ctest_bspline_reduce_tolerance(void) {
     CHECK_OK(cagd_reduce_options_init(&o));
     o.target = 3;
     o.tolerance = 1e-9;
-    o.continuity = 1;
+    o.spline_strategy = CAGD_SPLINE_SEGMENTS; /* with the default CAGD_METHOD_L2 */
+    o.spline_continuity = 1;
     o.measure = true;
     CHECK_OK(cagd_bspline_reduce(s, &o, &q, &rep));
     CHECK_OK(cagd_bspline_degree(q, &degree));
@@ -135,7 +138,8 @@ int cagd_ctest_bspline_reduce_tolerance(void) {
     CHECK_OK(cagd_bspline_new_rational(2, cu, 12, cp, w, 9, 2, &circle));
     o.target = 1;
     o.tolerance = 1e-2;
-    o.continuity = 0;
+    o.spline_strategy = CAGD_SPLINE_FIT;
+    o.spline_continuity = -1; /* C0: all a polyline can keep */
     o.measure = false;
     CHECK_OK(cagd_bspline_reduce(circle, &o, &poly, &crep));
     CHECK_OK(cagd_report_bound(crep, &bound));
@@ -196,9 +200,10 @@ int cagd_ctest_bspline_reduce_bad_input(void) {
     o.target = 0;
     CHECK_STATUS(cagd_bspline_reduce(s, &o, &q, &rep), CAGD_ERR_BAD_DEGREE_PAIR);
     o.target = 3;
-    o.continuity = 2; /* > floor((3 - 1) / 2) */
+    o.spline_strategy = CAGD_SPLINE_SEGMENTS;
+    o.spline_continuity = 2; /* > floor((3 - 1) / 2) */
     CHECK_STATUS(cagd_bspline_reduce(s, &o, &q, &rep), CAGD_ERR_TOO_MANY_CONSTRAINTS);
-    o.continuity = 0;
+    o.spline_continuity = -1;
     o.method = CAGD_METHOD_ECK; /* only constrained Chebyshev or L2 */
     CHECK_STATUS(cagd_bspline_reduce(s, &o, &q, &rep), CAGD_ERR_INVALID_ARGUMENT);
     o.method = 42;

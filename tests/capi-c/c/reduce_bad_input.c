@@ -20,6 +20,7 @@ int cagd_ctest_reduce_bad_input(void) {
     CHECK(o.method == CAGD_METHOD_L2 && o.target == 3 && o.r == 0 && o.p == 0 &&
           o.l1 == 0.0 && o.l2 == 0.0 && !o.measure && o.space == CAGD_SPACE_EUCLIDEAN);
     CHECK(o.tolerance == 0.0 && o.continuity == 0 && o.max_depth == 30);
+    CHECK(o.spline_strategy == CAGD_SPLINE_FIT && o.spline_continuity == -1);
     CHECK_OK(cagd_curve_new(P7, 8, 2, &c));
 
     CHECK_STATUS(cagd_curve_reduce(NULL, &o, &q, &rep), CAGD_ERR_NULL_POINTER);

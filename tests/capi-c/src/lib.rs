@@ -91,6 +91,12 @@ c_tests![
     bspline_reduce_uniform_001,
     bspline_reduce_tolerance,
     bspline_reduce_bad_input,
+    // c/bspline_reduce_strategy.c
+    bspline_reduce_fit_c2,
+    bspline_reduce_continuity_limits,
+    bspline_reduce_piegl_tiller,
+    bspline_reduce_strategy_bad_input,
+    report_spline_accessors,
     // c/core_invariants.c
     curve_forward_difference,
     tensorpatch_degeneracy,

@@ -1,0 +1,201 @@
+//! `CagdSplineStrategy`: how `cagd_bspline_reduce` builds the reduced spline, and the
+//! translation of `CagdReduceOptions` to cagd-reduce's `BSplineOptions`.
+
+use cagd_reduce::{BSplineOptions, BSplineStrategy};
+
+use crate::boundary::{CResult, Failure};
+use crate::reduce_options::{CagdReduceMethod, CagdReduceOptions};
+
+/// How `cagd_bspline_reduce` builds the degree-`target` spline from a degree-`p` one
+/// (`CagdReduceOptions.spline_strategy`, an `int32_t`; cagd-reduce `BSplineStrategy`).
+/// Each keeps, at every interior knot of the input that is still a knot of the result,
+/// the continuity `C^min(k, c)`: `c` the input's continuity there (`p - s` for a knot of
+/// multiplicity `s`), `k` the `spline_continuity` asked for, at most the strategy's maximum
+/// given below (`-1`: that maximum).
+///
+/// cbindgen:rename-all=prefix:CAGD_
+#[repr(i32)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[allow(
+    non_camel_case_types,
+    reason = "C names: the variants become CAGD_SPLINE_*"
+)]
+pub enum CagdSplineStrategy {
+    /// One least-squares fit (parameter L2 norm, end points kept) on the whole
+    /// degree-`target` spline space whose knots are the input's with the multiplicities
+    /// that keep the continuity; spans whose certified bound misses their share of the
+    /// tolerance are split and the fit repeated; then knot removal within the rest of the
+    /// tolerance. Keeps up to `C^(target - 1)`. The default.
+    SPLINE_FIT = 0,
+    /// Every Bézier segment reduced on its own by `method` (`CAGD_METHOD_L2` or
+    /// `CAGD_METHOD_CONSTRAINED_CHEBYSHEV`) with Hermite data at both ends, split where
+    /// needed, merged, then knot removal. Keeps at most
+    /// `C^floor((target - 1) / 2)` (two-sided Hermite data need `2k + 1 <= target`).
+    SPLINE_SEGMENTS = 1,
+    /// The classical algorithm of Piegl & Tiller 1995 (NURBS Book A5.11), as a reference:
+    /// one degree at a time, every segment reduced by one degree, merged, and every
+    /// interior knot left with one copy fewer per degree. Never subdivides: fails with
+    /// `CAGD_ERR_CONDITION_NOT_MET` when the curve is not reducible within the tolerance
+    /// that way (it succeeds essentially for degree-elevated splines and those within the
+    /// tolerance of one). Keeps the input's `C^c` wherever a knot stays (at most
+    /// `C^(target - 1)`).
+    SPLINE_PIEGL_TILLER_1995 = 2,
+}
+
+impl CagdSplineStrategy {
+    /// The C code of a cagd-reduce strategy.
+    pub(crate) fn of(strategy: &BSplineStrategy) -> Self {
+        match strategy {
+            BSplineStrategy::GlobalFit => Self::SPLINE_FIT,
+            BSplineStrategy::Segments(_) => Self::SPLINE_SEGMENTS,
+            BSplineStrategy::PieglTiller1995 => Self::SPLINE_PIEGL_TILLER_1995,
+        }
+    }
+
+    /// The `CagdReduceMethod` code `cagd_report_method` gives for a reduction by this
+    /// strategy: the method that reduced the pieces (`asked`, the options' `method`, for
+    /// segments; `CAGD_METHOD_L2` for the fit, which minimises the L2 norm with the end
+    /// points kept; `CAGD_METHOD_PIEGL_TILLER`, the one-degree segment reduction of
+    /// Piegl & Tiller 1995).
+    pub(crate) fn reported_method(self, asked: i32) -> i32 {
+        match self {
+            Self::SPLINE_FIT => CagdReduceMethod::METHOD_L2 as i32,
+            Self::SPLINE_SEGMENTS => asked,
+            Self::SPLINE_PIEGL_TILLER_1995 => CagdReduceMethod::METHOD_PIEGL_TILLER as i32,
+        }
+    }
+}
+
+/// The options of `cagd_bspline_reduce`: `spline_strategy` (with `method` for segments
+/// only), `target`, `tolerance`, `spline_continuity`, `measure`.
+///
+/// # Errors
+/// `CAGD_ERR_INVALID_ARGUMENT` for a `spline_strategy` code that is not a
+/// `CagdSplineStrategy`, a `spline_continuity` below `-1`, or (segments) an invalid
+/// `method` code. The rest (degrees, tolerance, the continuity's maximum) is checked by
+/// cagd-reduce.
+pub(crate) fn spline_options(o: &CagdReduceOptions) -> CResult<BSplineOptions> {
+    let strategy = match o.spline_strategy {
+        0 => BSplineStrategy::GlobalFit,
+        1 => BSplineStrategy::Segments(o.method()?),
+        2 => BSplineStrategy::PieglTiller1995,
+        other => {
+            return Err(Failure::invalid(format!(
+                "opts->spline_strategy = {other} is not a CagdSplineStrategy (0, 1 or 2)"
+            )));
+        }
+    };
+    let continuity = match o.spline_continuity {
+        -1 => None,
+        k => Some(usize::try_from(k).map_err(|_| {
+            Failure::invalid(format!(
+                "opts->spline_continuity = {k}: must be -1 (all the continuity the input has, \
+                 up to the strategy's maximum) or an order k >= 0"
+            ))
+        })?),
+    };
+    Ok(BSplineOptions {
+        continuity,
+        strategy,
+        measure: o.measure,
+        ..BSplineOptions::new(o.target, o.tolerance)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::status::CagdStatus;
+    use cagd_reduce::Method;
+
+    #[test]
+    fn strategy_codes_are_pinned_and_translate() {
+        use CagdSplineStrategy as S;
+        assert_eq!(S::SPLINE_FIT as i32, 0);
+        assert_eq!(S::SPLINE_SEGMENTS as i32, 1);
+        assert_eq!(S::SPLINE_PIEGL_TILLER_1995 as i32, 2);
+        let d = CagdReduceOptions::default();
+        assert_eq!(
+            (d.spline_strategy, d.spline_continuity),
+            (S::SPLINE_FIT as i32, -1),
+            "the defaults"
+        );
+        let b = spline_options(&d).unwrap();
+        assert_eq!(b.strategy, BSplineStrategy::GlobalFit);
+        assert_eq!(b.continuity, None);
+        for (code, s) in [
+            (0, S::SPLINE_FIT),
+            (1, S::SPLINE_SEGMENTS),
+            (2, S::SPLINE_PIEGL_TILLER_1995),
+        ] {
+            let o = CagdReduceOptions {
+                spline_strategy: code,
+                spline_continuity: 1,
+                target: 4,
+                tolerance: 0.5,
+                measure: true,
+                ..d
+            };
+            let b = spline_options(&o).unwrap();
+            assert_eq!(S::of(&b.strategy), s);
+            assert_eq!(
+                (b.continuity, b.target, b.tolerance, b.measure),
+                (Some(1), 4, 0.5, true)
+            );
+        }
+        let seg = CagdReduceOptions {
+            spline_strategy: 1,
+            method: CagdReduceMethod::METHOD_CONSTRAINED_CHEBYSHEV as i32,
+            ..d
+        };
+        assert_eq!(
+            spline_options(&seg).unwrap().strategy,
+            BSplineStrategy::Segments(Method::ConstrainedChebyshev { r: 0, p: 0 })
+        );
+    }
+
+    #[test]
+    fn bad_codes_are_invalid_and_the_method_matters_for_segments_only() {
+        let d = CagdReduceOptions::default();
+        for (strategy, continuity, method) in [
+            (3, -1, 11),
+            (-1, -1, 11),
+            (0, -2, 11),
+            (2, i32::MIN, 11),
+            (1, -1, 42),
+        ] {
+            let o = CagdReduceOptions {
+                spline_strategy: strategy,
+                spline_continuity: continuity,
+                method,
+                ..d
+            };
+            assert_eq!(
+                spline_options(&o).unwrap_err().status,
+                CagdStatus::ERR_INVALID_ARGUMENT,
+                "{strategy} {continuity} {method}"
+            );
+        }
+        for strategy in [0, 2] {
+            let o = CagdReduceOptions {
+                spline_strategy: strategy,
+                method: 42,
+                ..d
+            };
+            assert!(spline_options(&o).is_ok());
+        }
+    }
+
+    #[test]
+    fn reported_method_is_what_reduced_the_pieces() {
+        use CagdReduceMethod as M;
+        use CagdSplineStrategy as S;
+        let asked = M::METHOD_CONSTRAINED_CHEBYSHEV as i32;
+        assert_eq!(S::SPLINE_FIT.reported_method(asked), M::METHOD_L2 as i32);
+        assert_eq!(S::SPLINE_SEGMENTS.reported_method(asked), asked);
+        assert_eq!(
+            S::SPLINE_PIEGL_TILLER_1995.reported_method(asked),
+            M::METHOD_PIEGL_TILLER as i32
+        );
+    }
+}
