@@ -1373,12 +1373,20 @@ CagdStatus cagd_bsplinesurface_reduce(const struct CagdBSplineSurface *surface,
 
 /**
  * Reduces a B-spline / NURBS surface to `(opts->target, opts->target_v)` with a certified
- * bound `<= opts->tolerance` (Euclidean, model space): the surface is refined uniformly
- * (every knot span split into `2^L` equal spans by exact knot insertion, `L = 0..=6`) and
- * reduced as by `cagd_bsplinesurface_reduce`; the first level whose bound meets the
- * tolerance is returned.
+ * bound `<= opts->tolerance` (Euclidean, model space), by `opts->spline_strategy`:
+ * - `CAGD_SPLINE_FIT` (default): the global least-squares fit of `cagd_bspline_reduce`
+ *   in u on the bundle of control-point columns, then in v on the rows (half the
+ *   tolerance for u, the rest for v); knot lines keep `C^min(k, m - 1)` where the input is
+ *   `C^k` (`k` capped by `spline_continuity`, `-1` = no cap), knots are added where a span
+ *   misses its share and (polynomial surfaces) removed where the tolerance allows. The
+ *   report's method is `CAGD_METHOD_L2`, its pieces the patches of the result.
+ * - `CAGD_SPLINE_SEGMENTS`: the surface is refined uniformly (every knot span split into
+ *   `2^L` equal spans by exact knot insertion, `L = 0..=6`) and reduced as by
+ *   `cagd_bsplinesurface_reduce` (`method`, `continuity`); the first level whose bound
+ *   meets the tolerance is returned.
  *
- * Options used: as `cagd_bsplinesurface_reduce`, plus `tolerance` (finite, `> 0`).
+ * Options used: `spline_strategy`, `target`, `target_v`, `tolerance` (finite, `> 0`),
+ * `measure`; `spline_continuity` (fit) or `method`, `continuity` (segments).
  *
  * Parameters:
  * - `surface` (in): the surface.
@@ -1392,11 +1400,15 @@ CagdStatus cagd_bsplinesurface_reduce(const struct CagdBSplineSurface *surface,
  * Returns:
  * - `CAGD_OK`: both outputs are written.
  * - `CAGD_ERR_NULL_POINTER`: `surface`, `opts`, `surface_out` or `report_out` is NULL.
- * - `CAGD_ERR_INVALID_ARGUMENT`: `tolerance` not finite and `> 0`, and as
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `tolerance` not finite and `> 0`; an unknown
+ *   `spline_strategy` or `CAGD_SPLINE_PIEGL_TILLER_1995` (curves only); `spline_continuity`
+ *   below `-1`; and as `cagd_bsplinesurface_reduce`.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS` (fit: `spline_continuity`
+ *   above `m - 1` of a reduced direction), `CAGD_ERR_NON_POSITIVE_WEIGHT`: as
  *   `cagd_bsplinesurface_reduce`.
- * - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS`,
- *   `CAGD_ERR_NON_POSITIVE_WEIGHT`: as `cagd_bsplinesurface_reduce`.
- * - `CAGD_ERR_NO_CONVERGENCE`: level 6 is not enough.
+ * - `CAGD_ERR_BAD_KNOTS` (fit): a knot line of multiplicity `p + 1`.
+ * - `CAGD_ERR_CONDITION_NOT_MET` (fit): the tolerance is below the rounding level.
+ * - `CAGD_ERR_NO_CONVERGENCE` (segments): level 6 is not enough.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety

@@ -3,7 +3,8 @@
 
 use cagd_core::BSplineSurface;
 use cagd_reduce::{
-    PatchReport, SurfaceOptions, reduce_bspline_surface, reduce_bspline_surface_to_tolerance,
+    PatchReport, SurfaceOptions, reduce_bspline_surface, reduce_bspline_surface_fit,
+    reduce_bspline_surface_to_tolerance,
 };
 
 use crate::boundary::{
@@ -11,7 +12,7 @@ use crate::boundary::{
     into_handle, nonnull, out_ref, points_in, slice_in, slice_out,
 };
 use crate::bspline::spline_failure;
-use crate::reduce_options::{CagdReduceOptions, read_options};
+use crate::reduce_options::{CagdReduceMethod, CagdReduceOptions, read_options};
 use crate::report::{CagdReport, ReportKind};
 use crate::status::CagdStatus;
 
@@ -354,12 +355,20 @@ pub unsafe extern "C" fn cagd_bsplinesurface_reduce(
 }
 
 /// Reduces a B-spline / NURBS surface to `(opts->target, opts->target_v)` with a certified
-/// bound `<= opts->tolerance` (Euclidean, model space): the surface is refined uniformly
-/// (every knot span split into `2^L` equal spans by exact knot insertion, `L = 0..=6`) and
-/// reduced as by `cagd_bsplinesurface_reduce`; the first level whose bound meets the
-/// tolerance is returned.
+/// bound `<= opts->tolerance` (Euclidean, model space), by `opts->spline_strategy`:
+/// - `CAGD_SPLINE_FIT` (default): the global least-squares fit of `cagd_bspline_reduce`
+///   in u on the bundle of control-point columns, then in v on the rows (half the
+///   tolerance for u, the rest for v); knot lines keep `C^min(k, m - 1)` where the input is
+///   `C^k` (`k` capped by `spline_continuity`, `-1` = no cap), knots are added where a span
+///   misses its share and (polynomial surfaces) removed where the tolerance allows. The
+///   report's method is `CAGD_METHOD_L2`, its pieces the patches of the result.
+/// - `CAGD_SPLINE_SEGMENTS`: the surface is refined uniformly (every knot span split into
+///   `2^L` equal spans by exact knot insertion, `L = 0..=6`) and reduced as by
+///   `cagd_bsplinesurface_reduce` (`method`, `continuity`); the first level whose bound
+///   meets the tolerance is returned.
 ///
-/// Options used: as `cagd_bsplinesurface_reduce`, plus `tolerance` (finite, `> 0`).
+/// Options used: `spline_strategy`, `target`, `target_v`, `tolerance` (finite, `> 0`),
+/// `measure`; `spline_continuity` (fit) or `method`, `continuity` (segments).
 ///
 /// Parameters:
 /// - `surface` (in): the surface.
@@ -373,11 +382,15 @@ pub unsafe extern "C" fn cagd_bsplinesurface_reduce(
 /// Returns:
 /// - `CAGD_OK`: both outputs are written.
 /// - `CAGD_ERR_NULL_POINTER`: `surface`, `opts`, `surface_out` or `report_out` is NULL.
-/// - `CAGD_ERR_INVALID_ARGUMENT`: `tolerance` not finite and `> 0`, and as
+/// - `CAGD_ERR_INVALID_ARGUMENT`: `tolerance` not finite and `> 0`; an unknown
+///   `spline_strategy` or `CAGD_SPLINE_PIEGL_TILLER_1995` (curves only); `spline_continuity`
+///   below `-1`; and as `cagd_bsplinesurface_reduce`.
+/// - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS` (fit: `spline_continuity`
+///   above `m - 1` of a reduced direction), `CAGD_ERR_NON_POSITIVE_WEIGHT`: as
 ///   `cagd_bsplinesurface_reduce`.
-/// - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS`,
-///   `CAGD_ERR_NON_POSITIVE_WEIGHT`: as `cagd_bsplinesurface_reduce`.
-/// - `CAGD_ERR_NO_CONVERGENCE`: level 6 is not enough.
+/// - `CAGD_ERR_BAD_KNOTS` (fit): a knot line of multiplicity `p + 1`.
+/// - `CAGD_ERR_CONDITION_NOT_MET` (fit): the tolerance is below the rounding level.
+/// - `CAGD_ERR_NO_CONVERGENCE` (segments): level 6 is not enough.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -411,6 +424,29 @@ fn surface_reduce(
     s_out: &mut *mut CagdBSplineSurface,
     r_out: &mut *mut CagdReport,
 ) -> CResult<()> {
+    if let Some(tol) = tolerance {
+        let fit = crate::spline_strategy::surface_fit_options(o, tol)?;
+        if let Some(fopts) = fit {
+            let red = reduce_bspline_surface_fit(s, &fopts).map_err(spline_failure)?;
+            let report = PatchReport {
+                method: "bspline-surface-fit",
+                degrees_from: s.degrees(),
+                degrees_to: red.surface.degrees(),
+                error_bound: red.error_bound,
+                max_error: red.max_error,
+            };
+            *s_out = into_handle(CagdBSplineSurface(red.surface));
+            *r_out = into_handle(CagdReport {
+                kind: ReportKind::Patch {
+                    report,
+                    patch_method: -1,
+                    pieces: red.spans_out.0 * red.spans_out.1,
+                },
+                method: CagdReduceMethod::METHOD_L2 as i32,
+            });
+            return Ok(());
+        }
+    }
     let sopts = SurfaceOptions {
         continuity: Some(o.continuity),
         method: o.method()?,

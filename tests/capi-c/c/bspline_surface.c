@@ -228,7 +228,8 @@ int cagd_ctest_bsplinesurface_reduce_to_tolerance(void) {
     CagdReport *rep = NULL;
     CagdReduceOptions o;
     double pts[48], q[3] = {0}, bound = -1;
-    size_t needed = 0, deg[4] = {0}, pieces = 0, last_pieces = 0, i, j, k;
+    size_t needed = 0, deg[4] = {0}, pieces = 0, last_pieces = 0, i, j, k, st;
+    size_t fit_pieces[3] = {0, 0, 0};
     int32_t pm = 0;
     const double tols[3] = {1e-2, 1e-3, 1e-4};
 
@@ -244,34 +245,57 @@ int cagd_ctest_bsplinesurface_reduce_to_tolerance(void) {
     CHECK_OK(cagd_reduce_options_init(&o));
     o.target = 2;
     o.target_v = 1;
-    for (k = 0; k < 3; ++k) {
-        double worst = 0.0;
-        o.tolerance = tols[k];
-        CHECK_OK(cagd_bsplinesurface_reduce_to_tolerance(s, &o, &r, &rep));
-        CHECK_OK(cagd_report_bound(rep, &bound));
-        CHECK(bound <= tols[k]);
-        CHECK_OK(cagd_report_patch(rep, &pm, deg, &pieces));
-        CHECK(deg[2] == 2 && deg[3] == 1 && pieces >= last_pieces);
-        last_pieces = pieces;
-        for (i = 0; i <= 20; ++i) {
-            for (j = 0; j <= 20; ++j) {
-                double u = i / 20.0, v = j / 20.0, d;
-                CHECK_OK(cagd_bsplinesurface_eval(r, u, v, q, 3, &needed));
-                d = fabs(q[2] - u * u * u * v) + fabs(q[0] - u) + fabs(q[1] - v);
-                worst = d > worst ? d : worst;
+    /* both strategies: the global fit (default) and patch-wise uniform refinement */
+    for (st = 0; st < 2; ++st) {
+        o.spline_strategy = st == 0 ? CAGD_SPLINE_FIT : CAGD_SPLINE_SEGMENTS;
+        last_pieces = 0;
+        for (k = 0; k < 3; ++k) {
+            double worst = 0.0;
+            o.tolerance = tols[k];
+            CHECK_OK(cagd_bsplinesurface_reduce_to_tolerance(s, &o, &r, &rep));
+            CHECK_OK(cagd_report_bound(rep, &bound));
+            CHECK(bound <= tols[k]);
+            CHECK_OK(cagd_report_patch(rep, &pm, deg, &pieces));
+            CHECK(deg[2] == 2 && deg[3] == 1 && pieces >= last_pieces);
+            last_pieces = pieces;
+            if (st == 0) fit_pieces[k] = pieces;
+            else CHECK(fit_pieces[k] <= pieces); /* the fit needs no more patches */
+            for (i = 0; i <= 20; ++i) {
+                for (j = 0; j <= 20; ++j) {
+                    double u = i / 20.0, v = j / 20.0, d;
+                    CHECK_OK(cagd_bsplinesurface_eval(r, u, v, q, 3, &needed));
+                    d = fabs(q[2] - u * u * u * v) + fabs(q[0] - u) + fabs(q[1] - v);
+                    worst = d > worst ? d : worst;
+                }
             }
+            CHECK(worst <= bound);
+            cagd_report_free(rep);
+            rep = NULL;
+            cagd_bsplinesurface_free(r);
+            r = NULL;
         }
-        CHECK(worst <= bound);
-        cagd_report_free(rep);
-        rep = NULL;
-        cagd_bsplinesurface_free(r);
-        r = NULL;
     }
     o.tolerance = 0.0;
     CHECK_STATUS(cagd_bsplinesurface_reduce_to_tolerance(s, &o, &r, &rep), CAGD_ERR_INVALID_ARGUMENT);
     CHECK(r == NULL && rep == NULL);
     o.tolerance = 1e-300;
     CHECK_STATUS(cagd_bsplinesurface_reduce_to_tolerance(s, &o, &r, &rep), CAGD_ERR_NO_CONVERGENCE);
+    o.spline_strategy = CAGD_SPLINE_FIT;
+    CHECK_STATUS(cagd_bsplinesurface_reduce_to_tolerance(s, &o, &r, &rep),
+                 CAGD_ERR_CONDITION_NOT_MET);
+    o.tolerance = 1e-3;
+    o.spline_strategy = CAGD_SPLINE_PIEGL_TILLER_1995; /* curves only */
+    CHECK_STATUS(cagd_bsplinesurface_reduce_to_tolerance(s, &o, &r, &rep), CAGD_ERR_INVALID_ARGUMENT);
+    o.spline_strategy = 7;
+    CHECK_STATUS(cagd_bsplinesurface_reduce_to_tolerance(s, &o, &r, &rep), CAGD_ERR_INVALID_ARGUMENT);
+    o.spline_strategy = CAGD_SPLINE_FIT;
+    o.spline_continuity = -2;
+    CHECK_STATUS(cagd_bsplinesurface_reduce_to_tolerance(s, &o, &r, &rep), CAGD_ERR_INVALID_ARGUMENT);
+    o.spline_continuity = 1; /* target_v = 1: at most C0 across v knot lines */
+    CHECK_STATUS(cagd_bsplinesurface_reduce_to_tolerance(s, &o, &r, &rep),
+                 CAGD_ERR_TOO_MANY_CONSTRAINTS);
+    CHECK(r == NULL && rep == NULL);
+    o.spline_continuity = -1;
     o.tolerance = 1e-3;
     CHECK_STATUS(cagd_bsplinesurface_reduce_to_tolerance(NULL, &o, &r, &rep), CAGD_ERR_NULL_POINTER);
     CHECK_STATUS(cagd_bsplinesurface_reduce_to_tolerance(s, NULL, &r, &rep), CAGD_ERR_NULL_POINTER);
