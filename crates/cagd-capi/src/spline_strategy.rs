@@ -102,6 +102,49 @@ pub(crate) fn spline_options(o: &CagdReduceOptions) -> CResult<BSplineOptions> {
     })
 }
 
+/// The options of `cagd_bsplinesurface_reduce_to_tolerance` by `spline_strategy`:
+/// `Some` for `CAGD_SPLINE_FIT` (the global fit direction by direction, with
+/// `spline_continuity`), `None` for `CAGD_SPLINE_SEGMENTS` (patch-wise with `method` and
+/// `continuity`, uniform refinement).
+///
+/// # Errors
+/// `CAGD_ERR_INVALID_ARGUMENT` for an unknown `spline_strategy`, for
+/// `CAGD_SPLINE_PIEGL_TILLER_1995` (a curve algorithm) or a `spline_continuity` below `-1`.
+pub(crate) fn surface_fit_options(
+    o: &CagdReduceOptions,
+    tolerance: f64,
+) -> CResult<Option<SurfaceFitOptions>> {
+    match o.spline_strategy {
+        0 => {}
+        1 => return Ok(None),
+        2 => {
+            return Err(Failure::invalid(
+                "opts->spline_strategy = CAGD_SPLINE_PIEGL_TILLER_1995 is for curves; \
+                 surfaces take CAGD_SPLINE_FIT or CAGD_SPLINE_SEGMENTS",
+            ));
+        }
+        other => {
+            return Err(Failure::invalid(format!(
+                "opts->spline_strategy = {other} is not a CagdSplineStrategy (0, 1 or 2)"
+            )));
+        }
+    }
+    let continuity = match o.spline_continuity {
+        -1 => None,
+        k => Some(usize::try_from(k).map_err(|_| {
+            Failure::invalid(format!(
+                "opts->spline_continuity = {k}: must be -1 (all the continuity the input has, \
+                 up to m - 1) or an order k >= 0"
+            ))
+        })?),
+    };
+    Ok(Some(SurfaceFitOptions {
+        continuity,
+        measure: o.measure,
+        ..SurfaceFitOptions::new((o.target, o.target_v), tolerance)
+    }))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -198,47 +241,4 @@ mod tests {
             M::METHOD_PIEGL_TILLER as i32
         );
     }
-}
-
-/// The options of `cagd_bsplinesurface_reduce_to_tolerance` by `spline_strategy`:
-/// `Some` for `CAGD_SPLINE_FIT` (the global fit direction by direction, with
-/// `spline_continuity`), `None` for `CAGD_SPLINE_SEGMENTS` (patch-wise with `method` and
-/// `continuity`, uniform refinement).
-///
-/// # Errors
-/// `CAGD_ERR_INVALID_ARGUMENT` for an unknown `spline_strategy`, for
-/// `CAGD_SPLINE_PIEGL_TILLER_1995` (a curve algorithm) or a `spline_continuity` below `-1`.
-pub(crate) fn surface_fit_options(
-    o: &CagdReduceOptions,
-    tolerance: f64,
-) -> CResult<Option<SurfaceFitOptions>> {
-    match o.spline_strategy {
-        0 => {}
-        1 => return Ok(None),
-        2 => {
-            return Err(Failure::invalid(
-                "opts->spline_strategy = CAGD_SPLINE_PIEGL_TILLER_1995 is for curves; \
-                 surfaces take CAGD_SPLINE_FIT or CAGD_SPLINE_SEGMENTS",
-            ));
-        }
-        other => {
-            return Err(Failure::invalid(format!(
-                "opts->spline_strategy = {other} is not a CagdSplineStrategy (0, 1 or 2)"
-            )));
-        }
-    }
-    let continuity = match o.spline_continuity {
-        -1 => None,
-        k => Some(usize::try_from(k).map_err(|_| {
-            Failure::invalid(format!(
-                "opts->spline_continuity = {k}: must be -1 (all the continuity the input has, \
-                 up to m - 1) or an order k >= 0"
-            ))
-        })?),
-    };
-    Ok(Some(SurfaceFitOptions {
-        continuity,
-        measure: o.measure,
-        ..SurfaceFitOptions::new((o.target, o.target_v), tolerance)
-    }))
 }
