@@ -17,10 +17,13 @@
 //! `max_t ||C - C'||_2 <= eps = max_i ||P_i - P'_i||_2` (Euclidean norm; this is the quantity
 //! A5.8 compares with its tolerance). For NURBS the removal is done on the homogeneous
 //! points `(w P, w)` as in Piegl & Tiller, and `eps` is measured in homogeneous space
-//! (`dim + 1` coordinates); it is turned into a bound in model space by
-//! `max_t ||C - C'||_2 <= eps (1 + max_i ||P_i||) / min_i w'_i` (from
-//! `C - C' = ((A - A') + C (W' - W)) / W'`; the form of Piegl & Tiller eq. 5.30), which is
-//! the bound reported. Removals accumulate: the reported bound is the sum of the bounds of
+//! (`dim + 1` coordinates); it is turned into a bound in model space from
+//! `C - C' = ((A - A') + C (W' - W)) / W'` (the form of Piegl & Tiller eq. 5.30) taken
+//! about the centre `c` of the control points' bounding box: with `A_c = A - c W` and
+//! `R = max_i ||P_i - c||`, `max_t ||C - C'||_2 <= (max_i ||dA_i - c dW_i|| + R max_i |dW_i|)
+//! / min_i w'_i`, which is the bound reported. (Piegl & Tiller's `eps (1 + max ||P||) /
+//! min w'` grows with the distance of the curve from the origin; the centred form does
+//! not.) Removals accumulate: the reported bound is the sum of the bounds of
 //! the single removals (triangle inequality) and never exceeds the caller's tolerance.
 //!
 
@@ -42,18 +45,18 @@ pub struct KnotRemoval {
 }
 
 /// Removes one copy of the knot with last index `r` from the spline `(u, work)` of degree
-/// `p` (points of dimension `pdim`); returns the new knots, points and `eps`.
+/// `p` (points of dimension `pdim`); returns the new knots and points, and the new points
+/// re-inserted on the old knots (to compare with `work`).
 fn remove_once(
     u: &[f64],
     p: usize,
     work: &[f64],
     pdim: usize,
     r: usize,
-) -> (Vec<f64>, Vec<f64>, f64) {
+) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
     let n = work.len() / pdim;
     let t = u[r];
     let s = u[..=r].iter().rev().take_while(|x| **x == t).count();
-    let pt = |buf: &[f64], i: usize| buf[i * pdim..(i + 1) * pdim].to_vec();
     let mut q = vec![0.0; (n - 1) * pdim];
     let alpha = |i: usize| (t - u[i]) / (u[i + p + 1] - u[i]);
     if s == p + 1 {
@@ -91,20 +94,70 @@ fn remove_once(
     let mut knots = u.to_vec();
     knots.remove(r);
     let (_, back) = insert_once(&knots, p, &q, pdim, t);
-    let eps = (0..n)
-        .map(|i| {
-            let (a, b) = (pt(work, i), pt(&back, i));
-            a.iter()
-                .zip(&b)
-                .map(|(x, y)| (x - y) * (x - y))
+    (knots, q, back)
+}
+
+/// `max_i ||a_i - b_i||` over points of `pdim` coordinates (`inf` if a difference is NaN).
+fn max_distance(a: &[f64], b: &[f64], pdim: usize) -> f64 {
+    a.chunks_exact(pdim)
+        .zip(b.chunks_exact(pdim))
+        .map(|(x, y)| {
+            x.iter()
+                .zip(y)
+                .map(|(p, q)| (p - q) * (p - q))
                 .sum::<f64>()
                 .sqrt()
         })
         .fold(
             0.0f64,
             |m, e| if e.is_nan() { f64::INFINITY } else { m.max(e) },
-        );
-    (knots, q, eps)
+        )
+}
+
+/// The model-space bound of a NURBS change from homogeneous points `old` to `new` (both
+/// `dim + 1` coordinates, on the same knots; `old` the curve's, whose model points are
+/// `points`), whose weights are at least `wmin` after the change. With a centre `c` (the
+/// middle of the bounding box of `points`) and `R = max ||P_i - c||`:
+/// `C - C' = ((C - c)(W' - W) + (A_c - A'_c)) / W'` with `A_c = A - c W`, so
+/// `max ||C - C'|| <= (max_i ||dA_i - c dW_i|| + R max_i |dW_i|) / wmin` — independent of
+/// where the curve sits, unlike `eps (1 + max ||P||) / wmin`.
+fn centred_rational_bound(old: &[f64], new: &[f64], points: &[f64], dim: usize, wmin: f64) -> f64 {
+    let mut lo = vec![f64::INFINITY; dim];
+    let mut hi = vec![f64::NEG_INFINITY; dim];
+    for q in points.chunks_exact(dim) {
+        for c in 0..dim {
+            lo[c] = lo[c].min(q[c]);
+            hi[c] = hi[c].max(q[c]);
+        }
+    }
+    let centre: Vec<f64> = lo.iter().zip(&hi).map(|(a, b)| 0.5 * (a + b)).collect();
+    let radius = points
+        .chunks_exact(dim)
+        .map(|q| {
+            q.iter()
+                .zip(&centre)
+                .map(|(x, c)| (x - c) * (x - c))
+                .sum::<f64>()
+                .sqrt()
+        })
+        .fold(0.0f64, f64::max);
+    let (mut ea, mut ew) = (0.0f64, 0.0f64);
+    for (a, b) in old.chunks_exact(dim + 1).zip(new.chunks_exact(dim + 1)) {
+        let dw = a[dim] - b[dim];
+        let da = (0..dim)
+            .map(|c| {
+                let d = (a[c] - b[c]) - centre[c] * dw;
+                d * d
+            })
+            .sum::<f64>()
+            .sqrt();
+        if da.is_nan() || dw.is_nan() {
+            return f64::INFINITY;
+        }
+        ea = ea.max(da);
+        ew = ew.max(dw.abs());
+    }
+    (ea + radius * ew) / wmin * (1.0 + 8.0 * f64::EPSILON)
 }
 
 impl BSplineCurve {
@@ -112,7 +165,8 @@ impl BSplineCurve {
     /// curve; returns it with the certified model-space bound of the change.
     fn remove_one(&self, r: usize) -> Option<(BSplineCurve, f64)> {
         let (work, pdim) = self.work_points();
-        let (knots, q, eps) = remove_once(&self.knots, self.degree, &work, pdim, r);
+        let (knots, q, back) = remove_once(&self.knots, self.degree, &work, pdim, r);
+        let eps = max_distance(&work, &back, pdim);
         if !eps.is_finite() {
             return None;
         }
@@ -121,12 +175,7 @@ impl BSplineCurve {
             None => eps,
             Some(w) => {
                 let wmin = w.iter().fold(f64::INFINITY, |m, x| m.min(*x));
-                let pmax = self
-                    .points
-                    .chunks(self.dim)
-                    .map(|p| p.iter().map(|x| x * x).sum::<f64>().sqrt())
-                    .fold(0.0f64, f64::max);
-                eps * (1.0 + pmax) / wmin
+                centred_rational_bound(&work, &back, &self.points, self.dim, wmin)
             }
         };
         bound.is_finite().then_some((curve, bound))

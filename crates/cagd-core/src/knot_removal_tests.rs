@@ -134,3 +134,28 @@ fn errors() {
     ));
     assert_eq!(c.remove_knot_at(3, 1, 1.0).unwrap().removed, 1);
 }
+
+/// The NURBS bound is taken about the centre of the control points, so it does not grow
+/// when the curve is moved away from the origin (Piegl & Tiller's `eps (1 + max ||P||) /
+/// min w` would grow ~1e4 times here), and it stays above the sampled distance.
+#[test]
+fn rational_bound_is_translation_invariant() {
+    let knots = vec![0.0, 0.0, 0.0, 0.0, 0.4, 1.0, 1.0, 1.0, 1.0];
+    let pts = [0.0, 0.0, 1.0, 2.0, 2.5, -1.0, 4.0, 1.5, 5.0, 0.0];
+    let w = vec![1.0, 0.7, 1.6, 0.9, 1.0];
+    let mut bounds = Vec::new();
+    for offset in [0.0, 1e4] {
+        let moved: Vec<f64> = pts.iter().map(|x| x + offset).collect();
+        let c = BSplineCurve::new_rational(3, knots.clone(), moved, w.clone(), 2).unwrap();
+        let out = c.remove_knot(0.4, 1, 100.0).unwrap();
+        assert_eq!(out.removed, 1);
+        let d = sampled_distance(&c, &out.curve);
+        assert!(
+            d <= out.error_bound,
+            "offset {offset}: {d} > {}",
+            out.error_bound
+        );
+        bounds.push(out.error_bound);
+    }
+    assert!(bounds[1] < 1.01 * bounds[0], "{bounds:?}");
+}
