@@ -428,22 +428,13 @@ fn surface_reduce(
         let fit = crate::spline_strategy::surface_fit_options(o, tol)?;
         if let Some(fopts) = fit {
             let red = reduce_bspline_surface_fit(s, &fopts).map_err(spline_failure)?;
-            let report = PatchReport {
-                method: "bspline-surface-fit",
-                degrees_from: s.degrees(),
-                degrees_to: red.surface.degrees(),
-                error_bound: red.error_bound,
-                max_error: red.max_error,
-            };
-            *s_out = into_handle(CagdBSplineSurface(red.surface));
-            *r_out = into_handle(CagdReport {
-                kind: ReportKind::Patch {
-                    report,
-                    patch_method: -1,
-                    pieces: red.spans_out.0 * red.spans_out.1,
-                },
+            let out = SurfaceOut {
+                pieces: red.spans_out.0 * red.spans_out.1,
                 method: CagdReduceMethod::METHOD_L2 as i32,
-            });
+                name: "bspline-surface-fit",
+                bounds: (red.error_bound, red.max_error),
+            };
+            write_outputs(s, red.surface, out, s_out, r_out);
             return Ok(());
         }
     }
@@ -458,21 +449,47 @@ fn surface_reduce(
         Some(tol) => reduce_bspline_surface_to_tolerance(s, &sopts, tol),
     }
     .map_err(spline_failure)?;
-    let report = PatchReport {
-        method: "bspline-surface",
-        degrees_from: s.degrees(),
-        degrees_to: red.surface.degrees(),
-        error_bound: red.error_bound,
-        max_error: red.max_error,
+    let out = SurfaceOut {
+        pieces: red.patches,
+        method: o.method,
+        name: "bspline-surface",
+        bounds: (red.error_bound, red.max_error),
     };
-    *s_out = into_handle(CagdBSplineSurface(red.surface));
+    write_outputs(s, red.surface, out, s_out, r_out);
+    Ok(())
+}
+
+/// What the report of a surface reduction holds besides the degrees.
+struct SurfaceOut {
+    pieces: usize,
+    method: i32,
+    name: &'static str,
+    /// Certified bound and (on request) the measured error.
+    bounds: (f64, Option<f64>),
+}
+
+/// Writes the reduced surface and its report to the outputs.
+fn write_outputs(
+    input: &BSplineSurface,
+    surface: BSplineSurface,
+    out: SurfaceOut,
+    s_out: &mut *mut CagdBSplineSurface,
+    r_out: &mut *mut CagdReport,
+) {
+    let report = PatchReport {
+        method: out.name,
+        degrees_from: input.degrees(),
+        degrees_to: surface.degrees(),
+        error_bound: out.bounds.0,
+        max_error: out.bounds.1,
+    };
+    *s_out = into_handle(CagdBSplineSurface(surface));
     *r_out = into_handle(CagdReport {
         kind: ReportKind::Patch {
             report,
             patch_method: -1,
-            pieces: red.patches,
+            pieces: out.pieces,
         },
-        method: o.method,
+        method: out.method,
     });
-    Ok(())
 }

@@ -85,21 +85,29 @@ pub(crate) fn spline_options(o: &CagdReduceOptions) -> CResult<BSplineOptions> {
             )));
         }
     };
-    let continuity = match o.spline_continuity {
-        -1 => None,
-        k => Some(usize::try_from(k).map_err(|_| {
-            Failure::invalid(format!(
-                "opts->spline_continuity = {k}: must be -1 (all the continuity the input has, \
-                 up to the strategy's maximum) or an order k >= 0"
-            ))
-        })?),
-    };
+    let continuity = spline_continuity(o)?;
     Ok(BSplineOptions {
         continuity,
         strategy,
         measure: o.measure,
         ..BSplineOptions::new(o.target, o.tolerance)
     })
+}
+
+/// `spline_continuity`: `-1` -> `None` (the most the strategy keeps), `k >= 0` -> `Some(k)`.
+///
+/// # Errors
+/// `CAGD_ERR_INVALID_ARGUMENT` below `-1`.
+fn spline_continuity(o: &CagdReduceOptions) -> CResult<Option<usize>> {
+    match o.spline_continuity {
+        -1 => Ok(None),
+        k => usize::try_from(k).map(Some).map_err(|_| {
+            Failure::invalid(format!(
+                "opts->spline_continuity = {k}: must be -1 (all the continuity the input has, \
+                 up to the strategy's maximum) or an order k >= 0"
+            ))
+        }),
+    }
 }
 
 /// The options of `cagd_bsplinesurface_reduce_to_tolerance` by `spline_strategy`:
@@ -129,15 +137,7 @@ pub(crate) fn surface_fit_options(
             )));
         }
     }
-    let continuity = match o.spline_continuity {
-        -1 => None,
-        k => Some(usize::try_from(k).map_err(|_| {
-            Failure::invalid(format!(
-                "opts->spline_continuity = {k}: must be -1 (all the continuity the input has, \
-                 up to m - 1) or an order k >= 0"
-            ))
-        })?),
-    };
+    let continuity = spline_continuity(o)?;
     Ok(Some(SurfaceFitOptions {
         continuity,
         measure: o.measure,
