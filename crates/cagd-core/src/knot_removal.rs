@@ -160,10 +160,28 @@ fn centred_rational_bound(old: &[f64], new: &[f64], points: &[f64], dim: usize, 
     (ea + radius * ew) / wmin * (1.0 + 8.0 * f64::EPSILON)
 }
 
+/// The weight coordinates (every `block`-th, the last of each block) of a bundle's points.
+fn block_weights(points: &[f64], block: usize) -> impl Iterator<Item = f64> + '_ {
+    points.chunks_exact(block).map(move |q| q[block - 1])
+}
+
+/// The model points `x / w` of every homogeneous point of `block` coordinates in `work`.
+fn model_points(work: &[f64], block: usize) -> Vec<f64> {
+    let dim = block - 1;
+    let mut out = Vec::with_capacity(work.len() / block * dim);
+    for q in work.chunks_exact(block) {
+        out.extend(q[..dim].iter().map(|x| x / q[dim]));
+    }
+    out
+}
+
 impl BSplineCurve {
     /// Removes one copy of the interior knot with last index `r`, if the result is a valid
-    /// curve; returns it with the certified model-space bound of the change.
-    fn remove_one(&self, r: usize) -> Option<(BSplineCurve, f64)> {
+    /// curve; returns it with the certified model-space bound of the change. With
+    /// `bundle = Some(block)` the (polynomial) curve is read as a bundle of NURBS curves of
+    /// homogeneous points with `block` coordinates (see
+    /// [`BSplineCurve::remove_knot_rational_bundle`]).
+    fn remove_one(&self, r: usize, bundle: Option<usize>) -> Option<(BSplineCurve, f64)> {
         let (work, pdim) = self.work_points();
         let (knots, q, back) = remove_once(&self.knots, self.degree, &work, pdim, r);
         let eps = max_distance(&work, &back, pdim);
@@ -171,9 +189,17 @@ impl BSplineCurve {
             return None;
         }
         let curve = self.rebuild_from_work(knots, q).ok()?;
-        let bound = match curve.weights() {
-            None => eps,
-            Some(w) => {
+        let bound = match (bundle, curve.weights()) {
+            (Some(block), _) => {
+                let wmin = block_weights(curve.points(), block).fold(f64::INFINITY, f64::min);
+                if wmin.is_nan() || wmin <= 0.0 {
+                    return None;
+                }
+                let model = model_points(&work, block);
+                centred_rational_bound(&work, &back, &model, block - 1, wmin)
+            }
+            (None, None) => eps,
+            (None, Some(w)) => {
                 let wmin = w.iter().fold(f64::INFINITY, |m, x| m.min(*x));
                 centred_rational_bound(&work, &back, &self.points, self.dim, wmin)
             }
@@ -215,6 +241,64 @@ impl BSplineCurve {
     /// # Ok::<(), cagd_core::Error>(())
     /// ```
     pub fn remove_knot(&self, value: f64, times: usize, tol: f64) -> Result<KnotRemoval> {
+        self.remove_copies(value, times, tol, None)
+    }
+
+    /// As [`BSplineCurve::remove_knot`] for a *bundle of NURBS curves* stored as one
+    /// polynomial curve: each control point is `dim / block` homogeneous points
+    /// `(w P, w)` of `block` coordinates side by side (the columns of a NURBS surface's
+    /// net, which share the `u` knots). The bound is the model-space bound of every
+    /// rational combination of the bundle with non-negative coefficients — in particular of
+    /// the surface `S(u, v) = sum_j M_j(v) A_j(u) / sum_j M_j(v) W_j(u)`: with a centre `c`
+    /// of all the bundle's model points and `R` their largest distance from it,
+    /// `||S - S'|| <= (max ||dA - c dW|| + R max |dW|) / min w'` over every homogeneous
+    /// point of the bundle (the module docs' centred form; `S` lies in the hull of the
+    /// model points, `W' >= min w'` by the partition of unity). A removal that would make a
+    /// weight non-positive is not done.
+    ///
+    /// # Errors
+    /// As [`BSplineCurve::remove_knot`]; [`Error::BadParameter`] when the curve is rational,
+    /// `block < 2`, `dim` is not a multiple of `block`, or a weight coordinate is not
+    /// positive.
+    pub fn remove_knot_rational_bundle(
+        &self,
+        value: f64,
+        times: usize,
+        tol: f64,
+        block: usize,
+    ) -> Result<KnotRemoval> {
+        let bad = |why: &'static str| Error::BadParameter {
+            name: "block",
+            value: block as f64,
+            why,
+        };
+        if self.weights.is_some() {
+            return Err(bad(
+                "a bundle is stored as a polynomial curve of homogeneous points",
+            ));
+        }
+        if block < 2 || self.dim % block != 0 {
+            return Err(bad("must be at least 2 and divide the dimension"));
+        }
+        if let Some(w) = block_weights(&self.points, block).find(|w| w.is_nan() || *w <= 0.0) {
+            return Err(Error::BadParameter {
+                name: "weights",
+                value: w,
+                why: "every weight coordinate of the bundle must be positive",
+            });
+        }
+        self.remove_copies(value, times, tol, Some(block))
+    }
+
+    /// The body of [`BSplineCurve::remove_knot`] and
+    /// [`BSplineCurve::remove_knot_rational_bundle`].
+    fn remove_copies(
+        &self,
+        value: f64,
+        times: usize,
+        tol: f64,
+        bundle: Option<usize>,
+    ) -> Result<KnotRemoval> {
         check_tolerance(tol)?;
         check_finite_param("value", value)?;
         if self.interior_last_index(value).is_none() {
@@ -233,7 +317,7 @@ impl BSplineCurve {
             let Some(r) = out.curve.interior_last_index(value) else {
                 break;
             };
-            match out.curve.remove_one(r) {
+            match out.curve.remove_one(r, bundle) {
                 Some((c, b)) if out.error_bound + b <= tol => {
                     out.curve = c;
                     out.removed += 1;
@@ -280,7 +364,7 @@ impl BSplineCurve {
             values.dedup();
             for v in values {
                 while let Some(r) = out.curve.interior_last_index(v) {
-                    match out.curve.remove_one(r) {
+                    match out.curve.remove_one(r, None) {
                         Some((c, b)) if out.error_bound + b <= tol => {
                             out.curve = c;
                             out.removed += 1;

@@ -159,3 +159,118 @@ fn rational_bound_is_translation_invariant() {
     }
     assert!(bounds[1] < 1.01 * bounds[0], "{bounds:?}");
 }
+
+/// Two NURBS curves with different weights on one knot vector, stored side by side as
+/// one polynomial curve of homogeneous points (a NURBS surface's columns).
+fn rational_bundle(offset: f64) -> BSplineCurve {
+    let knots = vec![0.0, 0.0, 0.0, 0.0, 0.4, 0.7, 1.0, 1.0, 1.0, 1.0];
+    let a = [
+        (0.0, 0.0, 1.0),
+        (1.0, 2.0, 0.7),
+        (2.5, -1.0, 1.6),
+        (4.0, 1.5, 0.9),
+        (4.5, 0.5, 1.2),
+        (5.0, 0.0, 1.0),
+    ];
+    let b = [
+        (0.0, 1.0, 1.0),
+        (1.2, 2.5, 1.3),
+        (2.0, 0.0, 0.6),
+        (3.5, 2.5, 1.1),
+        (4.8, 1.0, 0.8),
+        (5.5, 1.0, 1.0),
+    ];
+    let mut pts = Vec::new();
+    for (p, q) in a.iter().zip(&b) {
+        for (x, y, w) in [p, q] {
+            pts.extend([(x + offset) * w, (y + offset) * w, *w]);
+        }
+    }
+    BSplineCurve::new(3, knots, pts, 6).unwrap()
+}
+
+/// `max_t ||S(t) - S'(t)||` of the rational combination `sum_j l_j A_j / sum_j l_j W_j` of
+/// two homogeneous bundles (blocks of 3), sampled.
+fn combination_distance(a: &BSplineCurve, b: &BSplineCurve, l: [f64; 2]) -> f64 {
+    let model = |c: &BSplineCurve, t: f64| {
+        let h = c.eval(t).unwrap();
+        let w = l[0] * h[2] + l[1] * h[5];
+        [
+            (l[0] * h[0] + l[1] * h[3]) / w,
+            (l[0] * h[1] + l[1] * h[4]) / w,
+        ]
+    };
+    (0..=2000)
+        .map(|i| {
+            let t = f64::from(i) / 2000.0;
+            let (x, y) = (model(a, t), model(b, t));
+            ((x[0] - y[0]).powi(2) + (x[1] - y[1]).powi(2)).sqrt()
+        })
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn rational_bundle_bound_covers_every_combination() {
+    let mut bounds = Vec::new();
+    for offset in [0.0, 1e4] {
+        let c = rational_bundle(offset);
+        // An inserted knot comes out again at rounding cost.
+        let finer = c.insert_knot(0.55, 1).unwrap();
+        let back = finer.remove_knot_rational_bundle(0.55, 1, 1e-6, 3).unwrap();
+        assert_eq!(back.removed, 1);
+        assert!(
+            back.error_bound < 1e-9 * (1.0 + offset),
+            "{}",
+            back.error_bound
+        );
+        // A genuine knot: the bound covers every non-negative combination of the bundle.
+        let out = c.remove_knot_rational_bundle(0.4, 1, 100.0, 3).unwrap();
+        assert_eq!(out.removed, 1);
+        for l in [[1.0, 0.0], [0.0, 1.0], [0.5, 0.5], [0.9, 0.1], [0.2, 3.0]] {
+            let d = combination_distance(&c, &out.curve, l);
+            assert!(
+                d > 0.0 && d <= out.error_bound,
+                "{l:?} offset {offset}: {d} > {}",
+                out.error_bound
+            );
+        }
+        // A tolerance below the change removes nothing.
+        let none = c
+            .remove_knot_rational_bundle(0.4, 1, 0.5 * out.error_bound, 3)
+            .unwrap();
+        assert_eq!((none.removed, &none.curve), (0, &c));
+        bounds.push(out.error_bound);
+    }
+    // Centred: moving the bundle far from the origin does not inflate the bound.
+    assert!(bounds[1] < 1.01 * bounds[0], "{bounds:?}");
+}
+
+#[test]
+fn rational_bundle_errors() {
+    let c = rational_bundle(0.0);
+    for block in [0, 1, 4] {
+        assert!(matches!(
+            c.remove_knot_rational_bundle(0.4, 1, 1.0, block),
+            Err(Error::BadParameter { name: "block", .. })
+        ));
+    }
+    let mut pts = c.points().to_vec();
+    pts[5] = -1.0;
+    let bad = BSplineCurve::new(3, c.knots().to_vec(), pts, 6).unwrap();
+    assert!(matches!(
+        bad.remove_knot_rational_bundle(0.4, 1, 1.0, 3),
+        Err(Error::BadParameter {
+            name: "weights",
+            ..
+        })
+    ));
+    let nurbs = BSplineCurve::new_rational(
+        1,
+        vec![0.0, 0.0, 0.5, 1.0, 1.0],
+        vec![0.0, 1.0, 2.0],
+        vec![1.0; 3],
+        1,
+    )
+    .unwrap();
+    assert!(nurbs.remove_knot_rational_bundle(0.5, 1, 1.0, 1).is_err());
+}
