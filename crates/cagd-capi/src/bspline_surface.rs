@@ -360,7 +360,7 @@ pub unsafe extern "C" fn cagd_bsplinesurface_reduce(
 ///   in u on the bundle of control-point columns, then in v on the rows (half the
 ///   tolerance for u, the rest for v); knot lines keep `C^min(k, m - 1)` where the input is
 ///   `C^k` (`k` capped by `spline_continuity`, `-1` = no cap), knots are added where a span
-///   misses its share and (polynomial surfaces) removed where the tolerance allows. The
+///   misses its share and removed where the tolerance allows (NURBS too). The
 ///   report's method is `CAGD_METHOD_L2`, its pieces the patches of the result.
 /// - `CAGD_SPLINE_SEGMENTS`: the surface is refined uniformly (every knot span split into
 ///   `2^L` equal spans by exact knot insertion, `L = 0..=6`) and reduced as by

@@ -80,7 +80,10 @@ impl LocalBounds {
         }
         let (lo, hi) = (r.saturating_sub(2 * m + 1), (r + m + 2 - s).min(n));
         let window = c.window(lo, hi)?;
-        let out = window.remove_knot(v, 1, avail)?;
+        let out = match c.bundle {
+            None => window.remove_knot(v, 1, avail)?,
+            Some(block) => window.remove_knot_rational_bundle(v, 1, avail, block)?,
+        };
         if out.removed == 0 {
             return Ok(false);
         }
@@ -139,6 +142,10 @@ pub(crate) struct Raw {
     knots: Vec<f64>,
     points: Vec<f64>,
     weights: Option<Vec<f64>>,
+    /// `Some(block)`: the (polynomial) points are a bundle of NURBS curves of homogeneous
+    /// points with `block` coordinates, certified in model space
+    /// ([`BSplineCurve::remove_knot_rational_bundle`]).
+    bundle: Option<usize>,
 }
 
 impl Raw {
@@ -149,6 +156,16 @@ impl Raw {
             knots: c.knots().to_vec(),
             points: c.points().to_vec(),
             weights: c.weights().map(<[f64]>::to_vec),
+            bundle: None,
+        }
+    }
+
+    /// The polynomial spline `c` read as a bundle of NURBS curves whose homogeneous points
+    /// have `block` coordinates (the columns of a NURBS surface).
+    pub(crate) fn new_rational_bundle(c: &BSplineCurve, block: usize) -> Self {
+        Self {
+            bundle: Some(block),
+            ..Self::new(c)
         }
     }
 

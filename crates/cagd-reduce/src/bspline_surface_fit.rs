@@ -8,8 +8,10 @@
 //! is the span bound the fit certifies (the largest over the bundle). Then the same in `v`
 //! on `S_u`. Knot lines keep `C^min(k, m - 1)` where the input is `C^k` (structurally: the
 //! multiplicities), knots are added where a span misses its share of the tolerance, and
-//! (polynomial surfaces) knot lines are removed within the rest, a removal being charged
-//! to the spans it touches with the bound of the whole bundle.
+//! knot lines are removed within the rest, a removal being charged to the spans it touches
+//! with the bound of the whole bundle (for NURBS the bundle's homogeneous change turned
+//! into a model-space bound of the surface by
+//! [`cagd_core::BSplineCurve::remove_knot_rational_bundle`]).
 
 use cagd_core::{BSplineCurve, BSplineSurface, Error, Result, check_tolerance};
 
@@ -86,21 +88,17 @@ fn reduce_direction(
     let bundle = BSplineCurve::new(p, knots.to_vec(), net.to_vec(), others * block)?;
     let src = Source::new(&bundle, block, rational)?;
     let start = initial_knots(knots, p, &src, m, k)?;
-    let budget = if rational { tol } else { FIT_SHARE * tol };
-    let (knots, net, bounds) = fit_to_budget(&src, m, start, budget)?;
-    let fit_bound = bounds.iter().map(|x| x.bound).fold(0.0, f64::max);
-    if rational {
-        // The removal bounds would be homogeneous; the fit's are already in model space.
-        return Ok(Step {
-            knots,
-            net,
-            bound: fit_bound,
-        });
-    }
+    let (knots, net, bounds) = fit_to_budget(&src, m, start, FIT_SHARE * tol)?;
     let mut breaks: Vec<f64> = bounds.iter().map(|x| x.a).collect();
     breaks.push(bounds[bounds.len() - 1].b);
     let mut local = LocalBounds::new(breaks, bounds.iter().map(|x| x.bound).collect());
-    let mut raw = Raw::new(&BSplineCurve::new(m, knots, net, others * block)?);
+    let fitted = BSplineCurve::new(m, knots, net, others * block)?;
+    // NURBS: the bundle is homogeneous; its removals are certified in model space.
+    let mut raw = if rational {
+        Raw::new_rational_bundle(&fitted, block)
+    } else {
+        Raw::new(&fitted)
+    };
     local.remove_greedily(&mut raw, tol)?;
     let curve = raw.into_curve()?;
     let bound = local.max_bound();
@@ -131,8 +129,8 @@ fn spans(knots: &[f64], p: usize) -> usize {
 /// to the bundle of columns and then in `v` to the bundle of rows (see the module docs),
 /// with half the tolerance for the `u` step and the rest for the `v` step. The input's knot
 /// lines keep `C^min(k, m - 1)` (`C^k` in the input); refinement adds knot lines where
-/// needed; for polynomial surfaces knot removal then removes what the tolerance allows
-/// (for NURBS it is skipped: the removal bounds are homogeneous).
+/// needed; knot removal then removes what the tolerance allows (NURBS included: removals
+/// are certified in model space over the whole homogeneous bundle).
 ///
 /// # Errors
 /// [`Error::BadTolerance`]; [`Error::BadDegreePair`] (a target 0 or above the degree, or

@@ -167,3 +167,53 @@ fn fewer_patches_than_uniform_refinement() {
         }
     }
 }
+
+/// A biquadratic NURBS patch (a quarter cylinder bent along `v`), elevated to degree
+/// `(3, 3)` in homogeneous coordinates and refined by exact knot insertion: it is
+/// biquadratic rational, so the fit recovers one patch once the inserted knot lines are
+/// removed — which for NURBS needs the model-space bound of the homogeneous bundle.
+#[test]
+fn refined_nurbs_loses_its_inserted_knot_lines() {
+    let r2 = std::f64::consts::FRAC_1_SQRT_2;
+    // (x, y, z, w) per point, i along the arc (u), j along v.
+    let arc = [(1.0, 0.0, 1.0), (1.0, 1.0, r2), (0.0, 1.0, 1.0)];
+    let mut hom = Vec::new();
+    for (x, y, w) in arc {
+        for (j, z) in [0.0, 1.0, 2.0].iter().enumerate() {
+            let bend = [1.0, 1.3, 1.0][j];
+            let wv = w * [1.0, 0.8, 1.0][j];
+            hom.extend([x * bend * wv, y * bend * wv, z * wv, wv]);
+        }
+    }
+    let patch = cagd_core::TensorPatch::new(hom, 2, 2, 4)
+        .unwrap()
+        .elevate_u(1)
+        .unwrap()
+        .elevate_v(1)
+        .unwrap();
+    let (mut pts, mut w) = (Vec::new(), Vec::new());
+    for q in patch.points().chunks_exact(4) {
+        pts.extend(q[..3].iter().map(|x| x / q[3]));
+        w.push(q[3]);
+    }
+    let mut s =
+        BSplineSurface::new_rational((3, 3), knots(3, &[]), knots(3, &[]), pts, w, (4, 4), 3)
+            .unwrap();
+    for t in [0.2, 0.5, 0.7] {
+        s = s.insert_knot_u(t, 1).unwrap();
+    }
+    for t in [0.35, 0.6] {
+        s = s.insert_knot_v(t, 2).unwrap();
+    }
+    let r = reduce_bspline_surface_fit(&s, &SurfaceFitOptions::new((2, 2), 1e-8)).unwrap();
+    assert_eq!(r.spans_in, (4, 3));
+    assert_eq!(r.spans_out, (1, 1));
+    assert!(r.surface.is_rational());
+    assert!(r.error_bound <= 1e-8, "{:e}", r.error_bound);
+    let sampled = grid_distance(&s, &r.surface);
+    assert!(
+        sampled <= r.error_bound,
+        "{sampled:e} > {:e}",
+        r.error_bound
+    );
+}
