@@ -10,7 +10,7 @@ use cagd_reduce::{Method, operator, reduce_batch};
 use criterion::{Criterion, criterion_group, criterion_main};
 
 mod common;
-use common::{median_ns, random_input};
+use common::{median_ns, memcpy_ns, random_input};
 
 const N_CURVES: usize = 100_000;
 const DIM: usize = 3;
@@ -38,12 +38,7 @@ fn bench(c: &mut Criterion) {
         let t_red = median_ns(|| {
             reduce_batch(&op, black_box(&input), DIM, &mut output).expect("batch");
         });
-        let t_cpy = median_ns(|| {
-            copy_in.copy_from_slice(black_box(&input));
-            copy_out.copy_from_slice(black_box(&output));
-            black_box(&copy_in);
-            black_box(&copy_out);
-        });
+        let t_cpy = memcpy_ns(&input, &output);
         let per = N_CURVES as f64;
         println!(
             "(n, m) = ({n:2}, {m:2}): reduce_batch {:7.1} ns/curve, memcpy {:6.1} ns/curve, ratio {:5.2}",

@@ -1,5 +1,7 @@
-//! Helpers shared by the benchmarks: reproducible input and a median timer.
+//! Helpers shared by the benchmarks: reproducible input, a median timer and the time of a
+//! plain copy of the same bytes (the yardstick every benchmark reports a ratio to).
 
+use std::hint::black_box;
 use std::time::Instant;
 
 /// `len` pseudo-random numbers in `[-1, 1)` (xorshift64, reproducible per `seed`).
@@ -27,4 +29,16 @@ pub(crate) fn median_ns(mut f: impl FnMut()) -> f64 {
         .collect();
     t.sort_by(f64::total_cmp);
     t[t.len() / 2]
+}
+
+/// Median wall time (ns) of copying `input` and `output` into fresh buffers of their sizes
+/// with `copy_from_slice` (a `memcpy` of the bytes a reduction reads and writes).
+pub(crate) fn memcpy_ns(input: &[f64], output: &[f64]) -> f64 {
+    let (mut copy_in, mut copy_out) = (vec![0.0; input.len()], vec![0.0; output.len()]);
+    median_ns(|| {
+        copy_in.copy_from_slice(black_box(input));
+        copy_out.copy_from_slice(black_box(output));
+        black_box(&copy_in);
+        black_box(&copy_out);
+    })
 }
