@@ -82,9 +82,12 @@ fn multiplicity_from(knots: &[f64], start: usize) -> usize {
         .count()
 }
 
-/// The multiplicity of `value` in the sorted knot vector (`0` when it is not a knot).
+/// The multiplicity of `value` in the sorted knot vector (`0` when it is not a knot, or
+/// `value` is NaN). Binary search, `O(log n)`.
 pub fn knot_multiplicity(knots: &[f64], value: f64) -> usize {
-    knots.iter().filter(|k| **k == value).count()
+    let lo = knots.partition_point(|k| *k < value);
+    let hi = knots.partition_point(|k| *k <= value);
+    hi.saturating_sub(lo)
 }
 
 /// The span index `s` in `degree..n_points` with `u_s <= t < u_{s+1}` and `u_s < u_{s+1}`

@@ -62,7 +62,7 @@ impl BandedLsq {
                     self.filled[col] = true;
                     return;
                 }
-                let h = rj[0].hypot(x);
+                let h = norm2(rj[0], x);
                 let (c, s) = (rj[0] / h, x / h);
                 rj[0] = h;
                 for (a, e) in rj[1..].iter_mut().zip(self.row[1..].iter_mut()) {
@@ -111,6 +111,19 @@ impl BandedLsq {
         }
         Ok(x)
     }
+}
+
+/// `sqrt(a^2 + b^2)` without overflow or harmful underflow, to a few ulps: the Givens
+/// rotation needs no more, and libm's `hypot` (correctly rounded to < 1 ulp) cost a tenth
+/// of the whole B-spline fit (profiled on the 1 000-span benchmark).
+fn norm2(a: f64, b: f64) -> f64 {
+    let (a, b) = (a.abs(), b.abs());
+    let (big, small) = if a >= b { (a, b) } else { (b, a) };
+    if big == 0.0 {
+        return 0.0;
+    }
+    let r = small / big;
+    big * r.mul_add(r, 1.0).sqrt()
 }
 
 #[cfg(test)]
@@ -164,5 +177,24 @@ mod tests {
         lsq.add_row(0, &[1.0, 1.0], &[1.0]);
         lsq.add_row(0, &[2.0, 2.0], &[2.0]);
         assert!(matches!(lsq.solve(), Err(Error::Singular { .. })));
+    }
+
+    #[test]
+    fn norm2_is_hypot_to_a_few_ulps_without_overflow() {
+        for (a, b) in [
+            (3.0, 4.0),
+            (-1e300, 1e300),
+            (1e-300, -3e-310),
+            (0.0, -2.5),
+            (7.0, 0.0),
+        ] {
+            let (got, want) = (norm2(a, b), f64::hypot(a, b));
+            assert!(
+                (got - want).abs() <= 4.0 * f64::EPSILON * want,
+                "{a} {b}: {got} vs {want}"
+            );
+        }
+        assert_eq!(norm2(0.0, 0.0), 0.0);
+        assert!(norm2(f64::NAN, 1.0).is_nan());
     }
 }
