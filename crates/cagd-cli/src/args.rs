@@ -25,7 +25,9 @@ to C^(M-1)), segments (per-segment reduction by --method l2 or chebyshev, up to
 C^((M-1)/2); the default when --method is given) or piegl-tiller-1995 (the classical
 algorithm: no subdivision, may fail). A B-spline / NURBS surface (\"bspline-surface\") is
 reduced patch by patch (l2 or chebyshev, C^K across knot lines with --continuity K); with
---tol its knot spans are split until the certified bound is within T.
+--tol T by the global fit direction by direction (--strategy fit, default; knots added and
+removed as for curves) or, with --strategy segments (the default when --method is given),
+patch by patch with every knot span split until the certified bound is within T.
 ";
 
 /// Options of `cagd reduce`.
