@@ -168,12 +168,21 @@ mod tests {
         );
     }
 
+    /// A bad-input case: the expected status, the segments, the breaks, `k`, `tol`.
+    type Case<'a> = (
+        CagdStatus,
+        &'a [*const CagdCurve],
+        Option<&'a [f64]>,
+        usize,
+        f64,
+    );
+
     #[test]
     fn bad_input_statuses() {
         let (a, b) = (curve(&[0.0, 1.0, 2.0], 1), curve(&[2.5, 3.0, 5.0], 1));
         let segs = [&raw const a, &raw const b];
         let with_null = [&raw const a, std::ptr::null()];
-        let cases: [(CagdStatus, &[*const CagdCurve], Option<&[f64]>, usize, f64); 6] = [
+        let cases: [Case<'_>; 6] = [
             (CagdStatus::ERR_NULL_POINTER, &with_null, None, 0, 1.0),
             (CagdStatus::ERR_NOT_ENOUGH_POINTS, &[], None, 0, 1.0),
             (CagdStatus::ERR_CONDITION_NOT_MET, &segs, None, 0, 1e-9),
@@ -193,7 +202,10 @@ mod tests {
             assert!(out.is_none());
             assert!(!last_error_string().is_empty());
         }
-        assert!(merge(&with_null, None, 0, 1.0).0 == CagdStatus::ERR_NULL_POINTER);
+        assert_eq!(
+            merge(&with_null, None, 0, 1.0).0,
+            CagdStatus::ERR_NULL_POINTER
+        );
         assert!(last_error_string().contains("segments[1]"));
         let mut out: *mut CagdBSpline = std::ptr::null_mut();
         // SAFETY: NULL pointers are what is tested; nothing is read through them.
