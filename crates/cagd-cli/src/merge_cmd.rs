@@ -27,7 +27,8 @@ pub(crate) fn default_tol(segments: &[BezierCurve]) -> f64 {
             }
         }
     }
-    DEFAULT_REL_TOL * size
+    // Finite even when a weighted coordinate overflows (the merge then reports that).
+    (DEFAULT_REL_TOL * size).min(f64::MAX)
 }
 
 /// Reads the input text, merges, and returns the output JSON: the spline in the input
