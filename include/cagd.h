@@ -920,6 +920,66 @@ CagdStatus cagd_bspline_weights(const struct CagdBSpline *spline,
                                 size_t *out_needed);
 
 /**
+ * Merges consecutive Bézier segments into one clamped B-spline (NURBS if any segment is
+ * rational), exactly (seed 001 §4.1, the exact merge). Segment `i`, a curve on `[0, 1]`,
+ * becomes the piece of the spline on `[breaks[i], breaks[i + 1]]`. The knots are
+ * `breaks[0]` and `breaks[count]` each `m + 1` times and every interior break `m - k`
+ * times (`m` the segments' degree, `k = continuity`); with `k = 0` the control points are
+ * the segments' points with each shared joint point stored once (their midpoint).
+ *
+ * The stated continuity is checked, not assumed: for `C0` the end of each segment must
+ * meet the start of the next within `tol` (Euclidean distance; for rational segments the
+ * distance of the homogeneous points `(w P, w)`, so end weights must agree too); for
+ * `C^k`, `k >= 1`, each interior knot is removed `k` times and the accumulated certified
+ * bound of the knot removal must stay within `tol` (model units). Continuity is
+ * parametric in the global parameter (a segment's derivatives scale with its interval
+ * length). Polynomial and rational segments may be mixed (weights 1 for the polynomial
+ * ones); rational segments are merged in homogeneous space.
+ *
+ * Parameters:
+ * - `segments` (in): array of `count` curve handles, in order, all of the same degree
+ *   `m >= 1` and the same `dim`. Borrowed for the call; the curves are copied and stay
+ *   owned by the caller.
+ * - `count` (in): number of segments, `>= 1`.
+ * - `breaks` (in): `count + 1` doubles, finite and strictly increasing, or NULL for the
+ *   breaks `0, 1, ..., count`. Borrowed and copied. Not read when `count == 0`.
+ * - `continuity` (in): the order `k` of the joints, `0 <= k < m` (interior knot
+ *   multiplicity `m - k`).
+ * - `tol` (in): the tolerance of the joint check in model units, finite and `> 0`.
+ * - `spline_out` (out): on `CAGD_OK`, the merged spline (degree `m`,
+ *   `count * (m - k) + k + 1` control points, `count * (m - k) + k + m + 2` knots), a new
+ *   handle owned by the caller: release it with `cagd_bspline_free`. Not written on
+ *   failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*spline_out` holds the merged spline.
+ * - `CAGD_ERR_NULL_POINTER`: `segments` or `spline_out` is NULL, or an element
+ *   `segments[i]` is NULL (the message gives `i`).
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `tol` is NaN, infinite or `<= 0`; a break is NaN or
+ *   infinite, or the breaks are not strictly increasing; the segments have degree 0, or
+ *   `continuity >= m`; `count` is too large for memory; a pointer is misaligned.
+ * - `CAGD_ERR_NOT_ENOUGH_POINTS`: `count == 0`.
+ * - `CAGD_ERR_DIMENSION_MISMATCH`: the segments do not all have the same degree and
+ *   `dim` (the message gives the values).
+ * - `CAGD_ERR_CONDITION_NOT_MET`: consecutive segments do not meet within `tol` (C0), or
+ *   the joints are not `C^continuity` within `tol`.
+ * - `CAGD_ERR_NON_FINITE`: a merged control point overflows (coordinates near the
+ *   `double` range).
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `segments` must be NULL or point to `count` readable `const CagdCurve *`, each NULL or
+ * a live curve handle; `breaks` NULL or `count + 1` readable doubles; `spline_out` NULL
+ * or writable.
+ */
+CagdStatus cagd_bspline_from_beziers(const struct CagdCurve *const *segments,
+                                     size_t count,
+                                     const double *breaks,
+                                     size_t continuity,
+                                     double tol,
+                                     struct CagdBSpline **spline_out);
+
+/**
  * Evaluates a spline at one parameter `t` (de Boor; in homogeneous coordinates for a
  * NURBS curve). `t` in the domain `[a, b]` (`cagd_bspline_domain`) is the curve; at `b`
  * the last piece is used (so a clamped spline gives its last control point); other finite

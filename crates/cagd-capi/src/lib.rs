@@ -37,7 +37,8 @@
 //!   NURBS curve), `CagdBSplineSurface`, `CagdTensorPatch`, `CagdTriPatch`, `CagdReport`,
 //!   and the piecewise results `CagdCurveList`, `CagdTensorPatchList`, `CagdTriPatchList`.
 //! - Operations: evaluation, derivatives, elevation, subdivision, knot insertion, Bézier
-//!   extraction.
+//!   extraction, and its inverse, the exact merge of Bézier segments into one spline
+//!   (`cagd_bspline_from_beziers`, seed 001 §4.1).
 //! - Every reduction of cagd-reduce: `cagd_curve_reduce` (twelve methods, with report),
 //!   `cagd_curve_reduce_batch`, `cagd_curve_reduce_to_tolerance` (C^k B-spline) and
 //!   `_stepwise` (seed 000 Algorithm 14.2.1), `cagd_curve_reduce_exact` /
@@ -59,6 +60,8 @@ mod boundary;
 mod bspline;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod bspline_arrays;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod bspline_merge;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod bspline_ops;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
@@ -119,6 +122,7 @@ pub use bspline::{
     cagd_bspline_is_rational, cagd_bspline_n_points, cagd_bspline_new, cagd_bspline_new_rational,
 };
 pub use bspline_arrays::{cagd_bspline_knots, cagd_bspline_points, cagd_bspline_weights};
+pub use bspline_merge::cagd_bspline_from_beziers;
 pub use bspline_ops::{
     cagd_bspline_derivatives, cagd_bspline_eval, cagd_bspline_insert_knot, cagd_bspline_to_beziers,
 };

@@ -9,6 +9,7 @@ usage:
   cagd reduce --to M[,N] [--method NAME] [--r R] [--p P] [--tol T] [--continuity K]
               [--merge exact|lossy] [--strategy fit|segments|piegl-tiller-1995]
               [-i FILE] [-o FILE] [--svg FILE]
+  cagd merge [--continuity K] [--tol T] [-i FILE] [-o FILE]
   cagd demo [--out DIR]
   cagd --help
 
@@ -28,6 +29,15 @@ reduced patch by patch (l2 or chebyshev, C^K across knot lines with --continuity
 --tol T by the global fit direction by direction (--strategy fit, default; knots added and
 removed as for curves) or, with --strategy segments (the default when --method is given),
 patch by patch with every knot span split until the certified bound is within T.
+
+merge reads one object {\"type\":\"beziers\",\"segments\":[[[x,y,...],...],...]} (optional
+\"weights\": one list or null per segment; optional \"breaks\": count + 1 increasing values,
+default 0, 1, ..., count) and merges the segments exactly into one \"bspline\" (seed 001
+§4.1): segment i on [breaks[i], breaks[i+1]], interior knots of multiplicity m - K for
+degree-m segments (--continuity K, default 0, K < m). The joints are checked: C0 within
+T, C^K by a certified knot removal within T. --tol T defaults to
+1e-9 * max(1, largest |coordinate|) (the homogeneous coordinates (w x, w) of rational
+segments included); the report gives the T used.
 ";
 
 /// Options of `cagd reduce`.
@@ -60,10 +70,22 @@ impl ReduceArgs {
     }
 }
 
+/// Options of `cagd merge`.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct MergeArgs {
+    /// The continuity `k` of the joints (default 0).
+    pub(crate) continuity: usize,
+    /// The tolerance of the joint check; `None` for the default relative one.
+    pub(crate) tol: Option<f64>,
+    pub(crate) input: Option<PathBuf>,
+    pub(crate) output: Option<PathBuf>,
+}
+
 /// A parsed command line.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) enum Command {
     Reduce(ReduceArgs),
+    Merge(MergeArgs),
     Demo { out: PathBuf },
     Help,
 }
@@ -77,6 +99,36 @@ fn value<'a>(it: &mut impl Iterator<Item = &'a String>, flag: &str) -> Result<&'
 fn parse_num<T: std::str::FromStr>(s: &str, flag: &str) -> Result<T, String> {
     s.parse()
         .map_err(|_| format!("{flag}: cannot read {s:?} as a number"))
+}
+
+/// The value of `--tol`: a finite number `> 0`.
+fn parse_tol(s: &str) -> Result<f64, String> {
+    let t: f64 = parse_num(s, "--tol")?;
+    if t.is_finite() && t > 0.0 {
+        Ok(t)
+    } else {
+        Err(format!("--tol: {t} must be finite and > 0"))
+    }
+}
+
+/// The options of `cagd merge` (the arguments after `merge`).
+fn parse_merge<'a>(mut it: impl Iterator<Item = &'a String>) -> Result<MergeArgs, String> {
+    let mut m = MergeArgs {
+        continuity: 0,
+        tol: None,
+        input: None,
+        output: None,
+    };
+    while let Some(a) = it.next() {
+        match a.as_str() {
+            "--continuity" => m.continuity = parse_num(value(&mut it, a)?, a)?,
+            "--tol" => m.tol = Some(parse_tol(value(&mut it, a)?)?),
+            "-i" | "--input" => m.input = Some(PathBuf::from(value(&mut it, a)?)),
+            "-o" | "--output" => m.output = Some(PathBuf::from(value(&mut it, a)?)),
+            other => return Err(format!("merge: unknown argument {other:?}")),
+        }
+    }
+    Ok(m)
 }
 
 /// Parses the arguments after the program name.
@@ -97,6 +149,7 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
             }
             Ok(Command::Demo { out })
         }
+        "merge" => parse_merge(it).map(Command::Merge),
         "reduce" => {
             let mut r = ReduceArgs {
                 to: (0, None),
@@ -126,13 +179,7 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
                     "--strategy" => r.strategy = Some(value(&mut it, a)?.to_string()),
                     "--r" => r.r = Some(parse_num(value(&mut it, a)?, a)?),
                     "--p" => r.p = Some(parse_num(value(&mut it, a)?, a)?),
-                    "--tol" => {
-                        let t: f64 = parse_num(value(&mut it, a)?, a)?;
-                        if !(t.is_finite() && t > 0.0) {
-                            return Err(format!("--tol: {t} must be finite and > 0"));
-                        }
-                        r.tol = Some(t);
-                    }
+                    "--tol" => r.tol = Some(parse_tol(value(&mut it, a)?)?),
                     "--continuity" => r.continuity = Some(parse_num(value(&mut it, a)?, a)?),
                     "-i" | "--input" => r.input = Some(PathBuf::from(value(&mut it, a)?)),
                     "-o" | "--output" => r.output = Some(PathBuf::from(value(&mut it, a)?)),
@@ -178,6 +225,39 @@ mod tests {
         assert_eq!(r.method.as_deref(), Some("l2"));
         assert_eq!((r.r, r.p, r.tol), (Some(1), Some(-1), Some(1e-3)));
         assert_eq!(r.input, Some(PathBuf::from("a.json")));
+    }
+
+    #[test]
+    fn merge_arguments() {
+        let Command::Merge(m) =
+            parse(&args("merge --continuity 1 --tol 1e-6 -i a.json -o b.json")).unwrap()
+        else {
+            panic!("not merge");
+        };
+        assert_eq!((m.continuity, m.tol), (1, Some(1e-6)));
+        assert_eq!(m.input, Some(PathBuf::from("a.json")));
+        assert_eq!(m.output, Some(PathBuf::from("b.json")));
+        assert_eq!(
+            parse(&args("merge")).unwrap(),
+            Command::Merge(MergeArgs {
+                continuity: 0,
+                tol: None,
+                input: None,
+                output: None
+            })
+        );
+        assert_eq!(
+            parse(&args("merge --tol 0")).unwrap_err(),
+            "--tol: 0 must be finite and > 0"
+        );
+        assert_eq!(
+            parse(&args("merge --continuity -1")).unwrap_err(),
+            "--continuity: cannot read \"-1\" as a number"
+        );
+        assert_eq!(
+            parse(&args("merge --to 3")).unwrap_err(),
+            "merge: unknown argument \"--to\""
+        );
     }
 
     #[test]

@@ -1,5 +1,7 @@
 //! The `cagd` command: degree reduction of Bézier / B-spline curves, patches and B-spline /
-//! NURBS surfaces from JSON files, with SVG pictures, and `cagd demo`, the seeds' worked examples on built-in data.
+//! NURBS surfaces from JSON files, with SVG pictures; `cagd merge`, the exact merge of
+//! Bézier segments into one B-spline (seed 001 §4.1); and `cagd demo`, the seeds' worked
+//! examples on built-in data.
 //!
 //! Exit codes: 0 success; 2 bad input, bad usage or a reduction that cannot be done as asked
 //! (one line on stderr naming the field or option and index); 1 an I/O failure.
@@ -9,8 +11,10 @@ mod demo;
 mod demo_patches;
 mod demo_splines;
 mod input;
+mod input_beziers;
 mod input_surface;
 mod json_path;
+mod merge_cmd;
 mod methods;
 mod patch_cmd;
 mod picture;
@@ -121,6 +125,28 @@ fn reduce(args: &args::ReduceArgs) -> ExitCode {
     }
 }
 
+/// `cagd merge`: one object in, one B-spline out.
+fn merge(args: &args::MergeArgs) -> ExitCode {
+    let result = read_input(args.input.as_deref())
+        .and_then(|text| merge_cmd::run(&text, args).map_err(|e| e.to_string()));
+    let json = match result {
+        Ok(v) => v,
+        Err(e) => {
+            eprintln!("cagd: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let mut text = serde_json::to_string_pretty(&json).unwrap_or_default();
+    text.push('\n');
+    match write_output(args.output.as_deref(), &text) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("cagd: {e}");
+            ExitCode::from(1)
+        }
+    }
+}
+
 fn main() -> ExitCode {
     let argv: Vec<String> = std::env::args().skip(1).collect();
     match args::parse(&argv) {
@@ -129,6 +155,7 @@ fn main() -> ExitCode {
             ExitCode::SUCCESS
         }
         Ok(args::Command::Reduce(r)) => reduce(&r),
+        Ok(args::Command::Merge(m)) => merge(&m),
         Ok(args::Command::Demo { out }) => match demo::run(&out) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {

@@ -77,6 +77,10 @@ c_tests![
     bspline_polynomial_closed_form,
     bspline_nurbs_circle,
     bspline_to_beziers,
+    // c/bspline_merge.c
+    bspline_merge_001_exact,
+    bspline_merge_c1_round_trip,
+    bspline_merge_bad_input,
     // c/bspline_bad_input.c
     bspline_new_bad_knots,
     bspline_new_bad_input,
