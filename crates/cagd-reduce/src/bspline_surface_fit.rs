@@ -171,8 +171,7 @@ pub fn reduce_bspline_surface_fit(
         .map(|(m, _)| m - 1)
         .min()
         .unwrap_or(0);
-    let k = opts.continuity.unwrap_or(reduced_min);
-    if k > reduced_min {
+    if let Some(k) = opts.continuity.filter(|k| *k > reduced_min) {
         let k64 = i64::try_from(k).unwrap_or(i64::MAX);
         return Err(Error::TooManyConstraints {
             r: k64,
@@ -181,6 +180,8 @@ pub fn reduce_bspline_surface_fit(
             why: "a degree-m spline is at most C^(m-1) across a knot line",
         });
     }
+    // Each direction keeps what was asked, or (None) the most its own degree carries.
+    let keep = |m: usize| opts.continuity.unwrap_or(m - 1);
     let (nu, nv) = s.counts();
     let rational = s.is_rational();
     let dim = s.dim();
@@ -191,7 +192,13 @@ pub fn reduce_bspline_surface_fit(
     // u: the bundle of columns is the net itself (i-major).
     let (ku, net, bu, n1) = if mu < p {
         let tol_u = if both { 0.5 * tol } else { tol };
-        let st = reduce_direction((p, s.knots_u(), &hom), (nv, block, rational), mu, k, tol_u)?;
+        let st = reduce_direction(
+            (p, s.knots_u(), &hom),
+            (nv, block, rational),
+            mu,
+            keep(mu),
+            tol_u,
+        )?;
         let n1 = st.knots.len() - mu - 1;
         (st.knots, st.net, st.bound, n1)
     } else {
@@ -200,7 +207,13 @@ pub fn reduce_bspline_surface_fit(
     // v: the bundle of rows (the net transposed, j-major).
     let (kv, net, bv, n2) = if mv < q {
         let t = transpose(&net, n1, nv, block);
-        let st = reduce_direction((q, s.knots_v(), &t), (n1, block, rational), mv, k, tol - bu)?;
+        let st = reduce_direction(
+            (q, s.knots_v(), &t),
+            (n1, block, rational),
+            mv,
+            keep(mv),
+            tol - bu,
+        )?;
         let n2 = st.knots.len() - mv - 1;
         (st.knots, transpose(&st.net, n2, n1, block), st.bound, n2)
     } else {

@@ -217,3 +217,31 @@ fn refined_nurbs_loses_its_inserted_knot_lines() {
         r.error_bound
     );
 }
+
+/// Each direction keeps the continuity its own target degree carries: reducing `(3, 2)` to
+/// `(2, 1)` keeps `C^1` across the simple `u` knot line (the `v` target allows only `C^0`,
+/// which once limited both directions).
+#[test]
+fn each_direction_keeps_its_own_continuity() {
+    let (ku, kv) = (knots(3, &[0.5]), knots(2, &[]));
+    let (z, w) = ([0.0, 3.0, -2.0, 4.0, 1.0], [1.0, -1.0, 2.0]);
+    let mut pts = Vec::new();
+    for (i, zi) in z.iter().enumerate() {
+        for (j, wj) in w.iter().enumerate() {
+            pts.extend([i as f64, j as f64, zi * wj]);
+        }
+    }
+    let s = BSplineSurface::new((3, 2), ku, kv, pts, (5, 3), 3).unwrap();
+    for tol in [1e-2, 1e-4] {
+        let r = reduce_bspline_surface_fit(&s, &SurfaceFitOptions::new((2, 1), tol)).unwrap();
+        assert!(r.error_bound <= tol);
+        assert!(
+            knot_multiplicity(r.surface.knots_u(), 0.5) <= 1,
+            "tol {tol:e}: u knots {:?}",
+            r.surface.knots_u()
+        );
+        for t in r.surface.knots_u().iter().filter(|t| **t > 0.0 && **t < 1.0) {
+            assert!(knot_multiplicity(r.surface.knots_u(), *t) <= 1, "{t}");
+        }
+    }
+}
