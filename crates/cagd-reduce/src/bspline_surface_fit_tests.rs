@@ -240,7 +240,12 @@ fn each_direction_keeps_its_own_continuity() {
             "tol {tol:e}: u knots {:?}",
             r.surface.knots_u()
         );
-        for t in r.surface.knots_u().iter().filter(|t| **t > 0.0 && **t < 1.0) {
+        for t in r
+            .surface
+            .knots_u()
+            .iter()
+            .filter(|t| **t > 0.0 && **t < 1.0)
+        {
             assert!(knot_multiplicity(r.surface.knots_u(), *t) <= 1, "{t}");
         }
     }
