@@ -254,3 +254,38 @@ fn refinement_converges_at_every_tolerance() {
         }
     }
 }
+
+/// A domain far from 0 (an unclamped quadratic at 7.7e5, spans of ~0.02 after refinement):
+/// the pieces must be reduced on exactly the intervals their stored knots say, or the
+/// measured error exceeds the certified bound by speed x ulp(7.7e5) (it once did, by 1e-10,
+/// with the segment strategy).
+#[test]
+fn far_domain_keeps_the_bound() {
+    let knots = vec![
+        772749.8924954706,
+        772750.1849070558,
+        772750.1849070558,
+        772750.477318641,
+        772750.5989177588,
+        772750.891329344,
+    ];
+    let pts = vec![0.0, 0.0, 0.6550706958624575, 0.6670281644665129, 0.0, 0.0];
+    let c = BSplineCurve::new(2, knots, pts, 2).unwrap();
+    let segments = BSplineStrategy::Segments(Method::L2 { r: 0, p: 0 });
+    for strategy in [BSplineStrategy::GlobalFit, segments] {
+        for tol in [2.5e-3, 1e-4, 1e-6] {
+            let opts = BSplineOptions {
+                strategy,
+                measure: true,
+                ..BSplineOptions::new(1, tol)
+            };
+            let r = reduce_bspline(&c, &opts).unwrap();
+            assert_eq!(r.curve.domain(), c.domain());
+            let (b, d) = (r.report.error_bound, r.report.max_error.unwrap());
+            assert!(
+                b <= tol && d <= b,
+                "{strategy:?} {tol:e}: measured {d:e} > bound {b:e}"
+            );
+        }
+    }
+}

@@ -82,16 +82,21 @@ fn reduce_adaptive(
             why: "a span cannot be reduced within the tolerance (below the rounding level?)",
         });
     }
+    // The knots first, then the local parameters from the knots as stored: with `a` far
+    // from 0 (a domain at 1e5, spans of 1e-2) a knot `a + (b - a) i / parts` is rounded by
+    // ulp(a), and splitting at `i / parts` instead would reduce a piece of another interval
+    // than its knots say (an error of speed x ulp(a), outside the certified bound).
+    let knot = |i: usize| match i {
+        0 => a,
+        _ if i == parts => b,
+        _ => a + (b - a) * (i as f64 / parts as f64),
+    };
     for i in 0..parts {
-        let (s0, s1) = (i as f64 / parts as f64, (i + 1) as f64 / parts as f64);
-        let piece = bez.segment(s0, s1)?;
+        let (pa, pb) = (knot(i), knot(i + 1));
+        let piece = bez.segment((pa - a) / (b - a), (pb - a) / (b - a))?;
         let ends = (
             if i == 0 { r } else { k },
             if i + 1 == parts { p } else { k },
-        );
-        let (pa, pb) = (
-            a + (b - a) * s0,
-            if i + 1 == parts { b } else { a + (b - a) * s1 },
         );
         reduce_adaptive(
             &piece,
