@@ -289,3 +289,93 @@ fn far_domain_keeps_the_bound() {
         }
     }
 }
+
+/// The segment strategy on NURBS far from the origin (the rational Bézier reducer's
+/// conversion grows with `max ||P||`, so it works on the curve moved to its centre) and with
+/// extreme weights: never a bound above the tolerance, never a false certificate.
+#[test]
+fn segments_on_far_and_extreme_nurbs() {
+    let segments = BSplineStrategy::Segments(Method::L2 { r: 0, p: 0 });
+    let quadratic = |off: f64, w: Vec<f64>| {
+        BSplineCurve::new_rational(
+            2,
+            vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+            vec![off, off, off + 1.0, off + 2.0, off + 2.0, off],
+            w,
+            2,
+        )
+        .unwrap()
+    };
+    let constant = BSplineCurve::new_rational(
+        2,
+        vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+        vec![1e8; 6],
+        vec![1.0; 3],
+        2,
+    )
+    .unwrap();
+    let extreme = BSplineCurve::new_rational(
+        3,
+        vec![0.0, 0.0, 0.0, 0.0, 0.5, 0.5, 0.5, 1.0, 1.0, 1.0, 1.0],
+        [
+            1e6,
+            1e6,
+            1e6 + 1.0,
+            1e6 - 2.0,
+            1e6 + 0.5,
+            1e6,
+            1e6,
+            1e6 + 1.0,
+            1e6 - 1.0,
+            1e6,
+            1e6 + 2.0,
+            1e6 + 1.0,
+            1e6,
+            1e6,
+        ]
+        .to_vec(),
+        vec![1.0, 40.0, 0.05, 1.0, 30.0, 0.06, 1.0],
+        2,
+    )
+    .unwrap();
+    let cases = [
+        (constant, 1, 1.0),
+        (quadratic(1e5, vec![1.0, 1.0, 1.0]), 1, 1e-4),
+        (quadratic(1e5, vec![1.0, 3.0, 0.5]), 1, 1e-3),
+        (extreme, 2, 0.1),
+    ];
+    for (c, m, tol) in cases {
+        let opts = BSplineOptions {
+            strategy: segments,
+            continuity: Some(0),
+            measure: true,
+            ..BSplineOptions::new(m, tol)
+        };
+        match reduce_bspline(&c, &opts) {
+            Ok(r) => {
+                let (b, d) = (r.report.error_bound, r.report.max_error.unwrap());
+                assert!(
+                    b <= tol && d <= b,
+                    "m {m} tol {tol:e}: bound {b:e}, measured {d:e}"
+                );
+                assert!(r.report.pieces < 1000, "{} pieces", r.report.pieces);
+            }
+            Err(Error::ConditionNotMet { .. }) => {}
+            Err(e) => panic!("m {m} tol {tol:e}: {e}"),
+        }
+    }
+    // A constant far from the origin is reduced, not refused.
+    let opts = BSplineOptions {
+        strategy: segments,
+        ..BSplineOptions::new(1, 1.0)
+    };
+    let c = BSplineCurve::new_rational(
+        2,
+        vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+        vec![1e8; 6],
+        vec![1.0; 3],
+        2,
+    )
+    .unwrap();
+    assert!(reduce_bspline(&c, &opts).is_ok());
+}

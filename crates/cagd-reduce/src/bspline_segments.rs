@@ -115,7 +115,84 @@ fn reduce_adaptive(
 
 /// [`BSplineStrategy::Segments`] with segment method `method` (see [`crate::reduce_bspline`];
 /// `opts` already validated there).
+///
+/// A NURBS is reduced moved to the centre of its control points' bounding box and moved
+/// back: the Euclidean error is translation invariant, but the rational Bézier reducer's
+/// model-space conversion `eps_h (1 + max ||P||) / min w` grows with the distance from the
+/// origin (a constant NURBS at 1e8 failed at tolerance 1). The two translations' rounding,
+/// at most `2 sqrt(dim) eps (max |P| + |c|)` per control point (and so on the curve, by
+/// the convex hull property), is added to the bound.
 pub(crate) fn reduce_segments(
+    curve: &BSplineCurve,
+    opts: &BSplineOptions,
+    method: Method,
+) -> Result<BSplineReduction> {
+    let Some(w) = curve.weights() else {
+        return reduce_segments_at(curve, opts, method);
+    };
+    let dim = curve.dim();
+    let (pts, knots) = (curve.points(), curve.knots());
+    let mut centre = vec![0.0; dim];
+    for (c, x) in centre.iter_mut().enumerate() {
+        let (lo, hi) = pts
+            .iter()
+            .skip(c)
+            .step_by(dim)
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), v| {
+                (l.min(*v), h.max(*v))
+            });
+        *x = 0.5 * (lo + hi);
+    }
+    let size = pts
+        .iter()
+        .chain(&centre)
+        .fold(0.0f64, |m, v| m.max(v.abs()));
+    let allowance = 4.0 * (dim as f64).sqrt() * f64::EPSILON * size;
+    let inner_tol = opts.tolerance - allowance;
+    if inner_tol.is_nan() || inner_tol <= 0.5 * opts.tolerance {
+        return Err(Error::ConditionNotMet {
+            eq: "tolerance",
+            why: "the tolerance is below the rounding level of the curve's coordinates",
+        });
+    }
+    let shift = |p: &[f64], sign: f64| -> Vec<f64> {
+        p.iter()
+            .enumerate()
+            .map(|(i, v)| v + sign * centre[i % dim])
+            .collect()
+    };
+    let moved = BSplineCurve::new_rational(
+        curve.degree(),
+        knots.to_vec(),
+        shift(pts, -1.0),
+        w.to_vec(),
+        dim,
+    )?;
+    let inner = BSplineOptions {
+        tolerance: inner_tol,
+        measure: false,
+        ..*opts
+    };
+    let mut red = reduce_segments_at(&moved, &inner, method)?;
+    let (k, p, v) = red.curve.clone().into_parts();
+    red.curve = BSplineCurve::new_rational(
+        red.curve.degree(),
+        k,
+        shift(&p, 1.0),
+        v.unwrap_or_default(),
+        dim,
+    )?;
+    red.report.tolerance = opts.tolerance;
+    red.report.error_bound += allowance;
+    red.report.segment_bound += allowance;
+    if opts.measure {
+        red.report.max_error = Some(spline_max_deviation(curve, &red.curve)?);
+    }
+    Ok(red)
+}
+
+/// [`reduce_segments`] without the translation.
+fn reduce_segments_at(
     curve: &BSplineCurve,
     opts: &BSplineOptions,
     method: Method,
@@ -177,6 +254,14 @@ pub(crate) fn reduce_segments(
     local.remove_greedily(&mut raw, opts.tolerance)?;
     let curve_out = raw.into_curve()?;
     let error_bound = local.max_bound();
+    if error_bound.is_nan() || error_bound > opts.tolerance {
+        // The merge's joint gaps (NURBS: converted to model space) are charged after the
+        // pieces met their share; with extreme weights they can exceed the rest.
+        return Err(Error::ConditionNotMet {
+            eq: "tolerance",
+            why: "the merged pieces exceed the tolerance (joint gaps of a NURBS with extreme weights); use the global fit",
+        });
+    }
     let max_error = if opts.measure {
         Some(spline_max_deviation(curve, &curve_out)?)
     } else {
