@@ -93,6 +93,12 @@ fn reduce_adaptive(
     };
     for i in 0..parts {
         let (pa, pb) = (knot(i), knot(i + 1));
+        if pb <= pa {
+            return Err(Error::ConditionNotMet {
+                eq: "tolerance",
+                why: "a span cannot be split further (its knots would coincide: rounding level)",
+            });
+        }
         let piece = bez.segment((pa - a) / (b - a), (pb - a) / (b - a))?;
         let ends = (
             if i == 0 { r } else { k },
