@@ -739,7 +739,7 @@ proptest! {
             // `(1 + max ||P||) / min w` (P&T also uncentred), so on a NURBS of a size far
             // from 1 they may refuse even an exactly elevated curve — a refusal, never a
             // false bound (checked by the other laws). Polynomial input must succeed.
-            Err(cagd_core::Error::ConditionNotMet { .. })
+            Err(Error::ConditionNotMet { .. })
                 if opts.strategy != BSplineStrategy::GlobalFit && e.is_rational() =>
             {
                 return Ok(());
