@@ -114,9 +114,15 @@ fn reduce(args: &args::ReduceArgs) -> ExitCode {
     } else {
         Value::Array(values)
     };
-    let mut text = serde_json::to_string_pretty(&json).unwrap_or_default();
+    write_json(args.output.as_deref(), &json)
+}
+
+/// Writes `json` (pretty, one trailing newline) to `path` or stdout; exit code 1 on an I/O
+/// failure.
+fn write_json(path: Option<&Path>, json: &Value) -> ExitCode {
+    let mut text = serde_json::to_string_pretty(json).unwrap_or_default();
     text.push('\n');
-    match write_output(args.output.as_deref(), &text) {
+    match write_output(path, &text) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("cagd: {e}");
@@ -136,15 +142,7 @@ fn merge(args: &args::MergeArgs) -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    let mut text = serde_json::to_string_pretty(&json).unwrap_or_default();
-    text.push('\n');
-    match write_output(args.output.as_deref(), &text) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("cagd: {e}");
-            ExitCode::from(1)
-        }
-    }
+    write_json(args.output.as_deref(), &json)
 }
 
 fn main() -> ExitCode {
