@@ -138,6 +138,24 @@ pub fn from_homogeneous(hom: &[f64], dim: usize, points: &mut [f64], weights: &m
     }
 }
 
+/// The centre of the axis-aligned bounding box of `points` (`dim` coordinates each): the
+/// centre `c` of the translation-invariant rational bounds (`(h_A + R h_W) / v` with
+/// `R = max ||P_i - c||`, see `BSplineCurve::remove_knot`). Zeros for no points.
+pub fn bounding_box_centre(points: &[f64], dim: usize) -> Vec<f64> {
+    let mut lo = vec![f64::INFINITY; dim];
+    let mut hi = vec![f64::NEG_INFINITY; dim];
+    for q in points.chunks_exact(dim) {
+        for c in 0..dim {
+            lo[c] = lo[c].min(q[c]);
+            hi[c] = hi[c].max(q[c]);
+        }
+    }
+    lo.iter()
+        .zip(&hi)
+        .map(|(a, b)| if a <= b { 0.5 * (a + b) } else { 0.0 })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

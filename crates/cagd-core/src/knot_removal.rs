@@ -122,15 +122,7 @@ fn max_distance(a: &[f64], b: &[f64], pdim: usize) -> f64 {
 /// `max ||C - C'|| <= (max_i ||dA_i - c dW_i|| + R max_i |dW_i|) / wmin` — independent of
 /// where the curve sits, unlike `eps (1 + max ||P||) / wmin`.
 fn centred_rational_bound(old: &[f64], new: &[f64], points: &[f64], dim: usize, wmin: f64) -> f64 {
-    let mut lo = vec![f64::INFINITY; dim];
-    let mut hi = vec![f64::NEG_INFINITY; dim];
-    for q in points.chunks_exact(dim) {
-        for c in 0..dim {
-            lo[c] = lo[c].min(q[c]);
-            hi[c] = hi[c].max(q[c]);
-        }
-    }
-    let centre: Vec<f64> = lo.iter().zip(&hi).map(|(a, b)| 0.5 * (a + b)).collect();
+    let centre = crate::kernel::bounding_box_centre(points, dim);
     let radius = points
         .chunks_exact(dim)
         .map(|q| {

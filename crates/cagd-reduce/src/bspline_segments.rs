@@ -138,17 +138,7 @@ pub(crate) fn reduce_segments(
     };
     let dim = curve.dim();
     let (pts, knots) = (curve.points(), curve.knots());
-    let mut centre = vec![0.0; dim];
-    for (c, x) in centre.iter_mut().enumerate() {
-        let (lo, hi) = pts
-            .iter()
-            .skip(c)
-            .step_by(dim)
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), v| {
-                (l.min(*v), h.max(*v))
-            });
-        *x = 0.5 * (lo + hi);
-    }
+    let centre = cagd_core::kernel::bounding_box_centre(pts, dim);
     let size = pts
         .iter()
         .chain(&centre)
