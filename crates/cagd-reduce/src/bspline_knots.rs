@@ -213,7 +213,6 @@ impl Raw {
 pub(crate) fn merge_pieces<'a>(
     pieces: impl Iterator<Item = (f64, f64, &'a BezierCurve, f64)>,
     input: &BSplineCurve,
-    _tol: f64,
 ) -> Result<(BSplineCurve, LocalBounds)> {
     let mut segs = Vec::new();
     let mut breaks = Vec::new();

@@ -212,8 +212,7 @@ fn one_degree(
         *segment_max = segment_max.max(bound);
         reduced.push((s.start, s.end, r.curve, bound));
     }
-    let (merged, pieces) =
-        merge_pieces(reduced.iter().map(|(a, b, x, e)| (*a, *b, x, *e)), c, tol)?;
+    let (merged, pieces) = merge_pieces(reduced.iter().map(|(a, b, x, e)| (*a, *b, x, *e)), c)?;
     for ((a, b, _, _), e) in reduced.iter().zip(pieces.spans()) {
         local.charge(*a, *b, *e);
     }

@@ -232,7 +232,6 @@ fn reduce_segments_at(
     let (merged, mut local) = crate::bspline_knots::merge_pieces(
         pieces.iter().map(|x| (x.a, x.b, &x.curve, x.bound)),
         curve,
-        opts.tolerance,
     )?;
     // Make the continuity of step 2 structural first: a later removal next to a C0-stored
     // joint would otherwise spoil its (only geometric) smoothness.
