@@ -11,6 +11,7 @@ usage:
               [-i FILE] [-o FILE] [--svg FILE]
   cagd merge [--continuity K] [--tol T] [-i FILE] [-o FILE]
   cagd demo [--out DIR]
+  cagd check FILE...
   cagd --help
 
 reduce reads one JSON object or an array of objects (stdin by default) and writes JSON
@@ -38,6 +39,13 @@ degree-m segments (--continuity K, default 0, K < m). The joints are checked: C0
 T, C^K by a certified knot removal within T. --tol T defaults to
 1e-9 * max(1, largest |coordinate|) (the homogeneous coordinates (w x, w) of rational
 segments included); the report gives the T used.
+
+check runs every vector of spec-vector files (the format of ../shared/spec/vectors-*.json:
+a list of {id, algorithm, params, input, expected, tol}) through the library by its
+algorithm, compares with expected (|got - expected| <= tol * max(1, |expected|); expected
+error = the input must be refused), prints one line per vector and \"N passed, N failed\",
+and exits 1 when a vector fails or names an algorithm it does not know (2: a file that
+cannot be read).
 ";
 
 /// Options of `cagd reduce`.
@@ -87,6 +95,7 @@ pub(crate) enum Command {
     Reduce(ReduceArgs),
     Merge(MergeArgs),
     Demo { out: PathBuf },
+    Check { files: Vec<PathBuf> },
     Help,
 }
 
@@ -150,6 +159,13 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
             Ok(Command::Demo { out })
         }
         "merge" => parse_merge(it).map(Command::Merge),
+        "check" => {
+            let files: Vec<PathBuf> = it.map(PathBuf::from).collect();
+            if files.is_empty() {
+                return Err("check: name at least one vector file".to_string());
+            }
+            Ok(Command::Check { files })
+        }
         "reduce" => {
             let mut r = ReduceArgs {
                 to: (0, None),

@@ -3,10 +3,13 @@
 //! Bézier segments into one B-spline (seed 001 §4.1); and `cagd demo`, the seeds' worked
 //! examples on built-in data.
 //!
+//! `cagd check FILE…` runs spec-vector files through the library (see [`check`]).
+//!
 //! Exit codes: 0 success; 2 bad input, bad usage or a reduction that cannot be done as asked
 //! (one line on stderr naming the field or option and index); 1 an I/O failure.
 
 mod args;
+mod check;
 mod demo;
 mod demo_patches;
 mod demo_splines;
@@ -154,6 +157,14 @@ fn main() -> ExitCode {
         }
         Ok(args::Command::Reduce(r)) => reduce(&r),
         Ok(args::Command::Merge(m)) => merge(&m),
+        Ok(args::Command::Check { files }) => match check::run_files(&files) {
+            Ok(true) => ExitCode::SUCCESS,
+            Ok(false) => ExitCode::from(1),
+            Err(e) => {
+                eprintln!("cagd: check: {e}");
+                ExitCode::from(2)
+            }
+        },
         Ok(args::Command::Demo { out }) => match demo::run(&out) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {
