@@ -147,6 +147,33 @@ pub enum Error {
         /// Which system.
         what: &'static str,
     },
+    /// An `n x n` tensor patch is not a degenerate triangle (SPEC-convert §15.4,
+    /// Theorem 15.4.2): re-elevating its exactly reduced rows misses it by `residual`
+    /// (relative to the largest coordinate), above `tol`.
+    #[error("not a degenerate triangular patch: relative residual {residual} above tolerance {tol} (Theorem 15.4.2)")]
+    NotDegenerate {
+        /// The relative residual measured.
+        residual: f64,
+        /// The tolerance it was tested against.
+        tol: f64,
+    },
+    /// A split of a parameter domain folds or degenerates (SPEC-convert §15.5: the
+    /// Jacobian of a bilinear sub-domain map must be > 0 at its four corners).
+    #[error("degenerate or folded split: {what} = {value}")]
+    DegenerateSplit {
+        /// What degenerates (e.g. "jacobian of D2 at corner X11").
+        what: &'static str,
+        /// The offending value (a Jacobian, an area).
+        value: f64,
+    },
+    /// A trimming layout the trimmed-patch tiling does not support (SPEC-convert §15.7.3).
+    #[error("unsupported trimming layout at segment {index}: {why}")]
+    UnsupportedTrim {
+        /// Index of the offending trimming segment.
+        index: usize,
+        /// What is not supported.
+        why: &'static str,
+    },
 }
 
 /// `Result` with [`Error`].
