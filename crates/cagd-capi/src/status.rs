@@ -59,6 +59,14 @@ pub enum CagdStatus {
     ERR_NO_CONVERGENCE = 41,
     /// A linear system that must be solved is singular.
     ERR_SINGULAR = 42,
+    /// An `n x n` rectangular patch is not a degenerate triangle (SPEC-convert §15.4,
+    /// Theorem 15.4.2); the message gives the relative residual.
+    ERR_NOT_DEGENERATE = 50,
+    /// A split of a patch's parameter domain folds or degenerates (Jacobian <= 0 at a
+    /// corner of a sub-domain, SPEC-convert §15.5).
+    ERR_DEGENERATE_SPLIT = 51,
+    /// A trimming layout the trimmed-patch tiling does not support (SPEC-convert §15.7.3).
+    ERR_UNSUPPORTED_TRIM = 52,
     /// A bug inside cagd was caught at the boundary (a Rust panic); please report it with
     /// the message.
     ERR_PANIC = 99,
@@ -85,6 +93,9 @@ impl CagdStatus {
             CagdStatus::ERR_CONDITION_NOT_MET => c"CAGD_ERR_CONDITION_NOT_MET",
             CagdStatus::ERR_NO_CONVERGENCE => c"CAGD_ERR_NO_CONVERGENCE",
             CagdStatus::ERR_SINGULAR => c"CAGD_ERR_SINGULAR",
+            CagdStatus::ERR_NOT_DEGENERATE => c"CAGD_ERR_NOT_DEGENERATE",
+            CagdStatus::ERR_DEGENERATE_SPLIT => c"CAGD_ERR_DEGENERATE_SPLIT",
+            CagdStatus::ERR_UNSUPPORTED_TRIM => c"CAGD_ERR_UNSUPPORTED_TRIM",
             CagdStatus::ERR_PANIC => c"CAGD_ERR_PANIC",
         }
     }
@@ -96,7 +107,7 @@ impl CagdStatus {
 }
 
 /// Every status, in numeric order (used by tests and by `cagd_status_name`).
-pub(crate) const ALL_STATUSES: [CagdStatus; 18] = [
+pub(crate) const ALL_STATUSES: [CagdStatus; 21] = [
     CagdStatus::OK,
     CagdStatus::ERR_NULL_POINTER,
     CagdStatus::ERR_BUFFER_TOO_SMALL,
@@ -114,6 +125,9 @@ pub(crate) const ALL_STATUSES: [CagdStatus; 18] = [
     CagdStatus::ERR_CONDITION_NOT_MET,
     CagdStatus::ERR_NO_CONVERGENCE,
     CagdStatus::ERR_SINGULAR,
+    CagdStatus::ERR_NOT_DEGENERATE,
+    CagdStatus::ERR_DEGENERATE_SPLIT,
+    CagdStatus::ERR_UNSUPPORTED_TRIM,
     CagdStatus::ERR_PANIC,
 ];
 
@@ -141,6 +155,9 @@ pub fn status_of_core(e: &Error) -> CagdStatus {
         Error::ConditionNotMet { .. } => CagdStatus::ERR_CONDITION_NOT_MET,
         Error::NoConvergence { .. } => CagdStatus::ERR_NO_CONVERGENCE,
         Error::Singular { .. } => CagdStatus::ERR_SINGULAR,
+        Error::NotDegenerate { .. } => CagdStatus::ERR_NOT_DEGENERATE,
+        Error::DegenerateSplit { .. } => CagdStatus::ERR_DEGENERATE_SPLIT,
+        Error::UnsupportedTrim { .. } => CagdStatus::ERR_UNSUPPORTED_TRIM,
         _ => CagdStatus::ERR_INVALID_ARGUMENT,
     }
 }
@@ -170,7 +187,7 @@ mod tests {
 
     #[test]
     fn discriminants_are_pinned() {
-        let expected: [(CagdStatus, i32); 18] = [
+        let expected: [(CagdStatus, i32); 21] = [
             (CagdStatus::OK, 0),
             (CagdStatus::ERR_NULL_POINTER, 1),
             (CagdStatus::ERR_BUFFER_TOO_SMALL, 2),
@@ -188,6 +205,9 @@ mod tests {
             (CagdStatus::ERR_CONDITION_NOT_MET, 40),
             (CagdStatus::ERR_NO_CONVERGENCE, 41),
             (CagdStatus::ERR_SINGULAR, 42),
+            (CagdStatus::ERR_NOT_DEGENERATE, 50),
+            (CagdStatus::ERR_DEGENERATE_SPLIT, 51),
+            (CagdStatus::ERR_UNSUPPORTED_TRIM, 52),
             (CagdStatus::ERR_PANIC, 99),
         ];
         for (i, (s, code)) in expected.into_iter().enumerate() {
@@ -319,6 +339,24 @@ mod tests {
                 S::ERR_NO_CONVERGENCE,
             ),
             (Error::Singular { what: "Gram" }, S::ERR_SINGULAR),
+            (
+                Error::NotDegenerate {
+                    residual: 0.1,
+                    tol: 1e-12,
+                },
+                S::ERR_NOT_DEGENERATE,
+            ),
+            (
+                Error::DegenerateSplit {
+                    what: "jacobian",
+                    value: -1.0,
+                },
+                S::ERR_DEGENERATE_SPLIT,
+            ),
+            (
+                Error::UnsupportedTrim { index: 0, why: "x" },
+                S::ERR_UNSUPPORTED_TRIM,
+            ),
         ];
         for (e, s) in cases {
             assert_eq!(status_of_core(&e), s, "{e:?}");

@@ -14,8 +14,8 @@ mod patch;
 pub use patch::{
     PatchPiece, PatchSurface, PieceDomain, TensorSurface, TriSplitPoints, TriSurface, TrimChain,
     TrimDirection, TrimKeep, TrimSegment, corner_triangle, curve_split_d5, curve_split_d7,
-    degenerate_rect_to_triangle, degenerate_residual, max_piece_difference, rect_to_two_triangle_pieces,
-    rect_to_two_triangles, ruled_subpatch, split_along_curve, split_along_line, trapezoid,
-    triangle_to_degenerate_rect, triangle_to_quad, triangle_to_rect_d1, triangle_to_three_rects,
-    trim_to_patches,
+    degenerate_rect_to_triangle, degenerate_residual, max_piece_difference,
+    rect_to_two_triangle_pieces, rect_to_two_triangles, ruled_subpatch, split_along_curve,
+    split_along_line, trapezoid, triangle_to_degenerate_rect, triangle_to_quad,
+    triangle_to_rect_d1, triangle_to_three_rects, trim_to_patches,
 };

@@ -80,7 +80,12 @@ pub(crate) fn tri_value(net: &[f64], n: usize, dim: usize, p: [f64; 2]) -> Vec<f
 
 /// All blossom values `b(x[0]^α, x[1]^β, x[2]^γ, x[3]^(n-α-β-γ))` of a degree-`n` net,
 /// indexed `[α][β][γ]` (`α + β + γ <= n`), by nested pyramids.
-pub(crate) fn tri_blossom_table(net: &[f64], n: usize, dim: usize, x: [[f64; 2]; 4]) -> Vec<Vec<Vec<Vec<f64>>>> {
+pub(crate) fn tri_blossom_table(
+    net: &[f64],
+    n: usize,
+    dim: usize,
+    x: [[f64; 2]; 4],
+) -> Vec<Vec<Vec<Vec<f64>>>> {
     let at_a = tri_pyramid(net, n, dim, x[0]);
     at_a.iter()
         .enumerate()

@@ -7,7 +7,8 @@ use super::blossom::elevate_to;
 use super::{PatchPiece, PatchSurface, PieceDomain, TensorSurface, TriSurface};
 
 /// Domain of the §15.4 map `u = s, v = (1 - s) t` (the edge `s = 1` collapses to `(1, 0)`).
-pub(crate) const DEGENERATE_DOMAIN: [[f64; 2]; 4] = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [1.0, 0.0]];
+pub(crate) const DEGENERATE_DOMAIN: [[f64; 2]; 4] =
+    [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [1.0, 0.0]];
 
 /// The triangle of degree `n` as a degenerate `m x n` rectangle, `m >= n` (SPEC-convert
 /// §15.4, eq. 15.4.2): row `i` of the triangle elevated from degree `n - i` to `n`
@@ -57,7 +58,8 @@ fn reduce_once(p: &[f64], dim: usize) -> Vec<f64> {
     q[..dim].copy_from_slice(&p[..dim]);
     for i in 1..=half {
         for k in 0..dim {
-            q[i * dim + k] = (df * p[i * dim + k] - i as f64 * q[(i - 1) * dim + k]) / (df - i as f64);
+            q[i * dim + k] =
+                (df * p[i * dim + k] - i as f64 * q[(i - 1) * dim + k]) / (df - i as f64);
         }
     }
     if d > half + 1 {
@@ -65,7 +67,8 @@ fn reduce_once(p: &[f64], dim: usize) -> Vec<f64> {
         for i in (half + 2..d).rev() {
             // Q_{i-1} from Q_i.
             for k in 0..dim {
-                q[(i - 1) * dim + k] = (df * p[i * dim + k] - (df - i as f64) * q[i * dim + k]) / i as f64;
+                q[(i - 1) * dim + k] =
+                    (df * p[i * dim + k] - (df - i as f64) * q[i * dim + k]) / i as f64;
             }
         }
     }
@@ -79,7 +82,11 @@ fn reduce_rows(h: &TensorPatch) -> (Vec<f64>, f64) {
     let dim = h.dim();
     let mut tri = vec![0.0; tri_count(n) * dim];
     let mut worst: f64 = 0.0;
-    let scale = h.points().iter().fold(0.0_f64, |a, x| a.max(x.abs())).max(f64::MIN_POSITIVE);
+    let scale = h
+        .points()
+        .iter()
+        .fold(0.0_f64, |a, x| a.max(x.abs()))
+        .max(f64::MIN_POSITIVE);
     for i in 0..=n {
         let row = &h.points()[i * (n + 1) * dim..(i + 1) * (n + 1) * dim];
         let mut cur = row.to_vec();

@@ -20,7 +20,9 @@ mod two_triangles;
 #[cfg(test)]
 mod tests;
 
-pub use degenerate::{degenerate_rect_to_triangle, degenerate_residual, triangle_to_degenerate_rect};
+pub use degenerate::{
+    degenerate_rect_to_triangle, degenerate_residual, triangle_to_degenerate_rect,
+};
 pub use domain::{PatchPiece, PieceDomain};
 pub use measure::max_piece_difference;
 pub use quadrilateral::{
@@ -31,4 +33,4 @@ pub use split_curve::{curve_split_d5, curve_split_d7, split_along_curve};
 pub use split_line::{corner_triangle, split_along_line, trapezoid};
 pub use surface::{PatchSurface, TensorSurface, TriSurface};
 pub use trim::{TrimChain, TrimDirection, TrimKeep, TrimSegment, trim_to_patches};
-pub use two_triangles::{rect_to_two_triangles, rect_to_two_triangle_pieces};
+pub use two_triangles::{rect_to_two_triangle_pieces, rect_to_two_triangles};

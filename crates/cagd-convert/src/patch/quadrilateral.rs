@@ -141,14 +141,22 @@ pub fn triangle_to_three_rects(t: &TriSurface, pts: TriSplitPoints) -> Result<[P
     check_range("H", pts.h, 0.0, 1.0, open)?;
     for (name, x) in [("G", pts.g), ("K", pts.k), ("H", pts.h)] {
         if x <= 0.0 || x >= 1.0 {
-            return Err(Error::BadParameter { name, value: x, why: open });
+            return Err(Error::BadParameter {
+                name,
+                value: x,
+                why: open,
+            });
         }
     }
     let inner = "the inner point needs a, c > 0 and a + c < 1";
     check_range("P.u", a, 0.0, 1.0, inner)?;
     check_range("P.v", c, 0.0, 1.0, inner)?;
     if a <= 0.0 || c <= 0.0 || a + c >= 1.0 {
-        return Err(Error::BadParameter { name: "P", value: a + c, why: inner });
+        return Err(Error::BadParameter {
+            name: "P",
+            value: a + c,
+            why: inner,
+        });
     }
     let (o, u, v) = ([0.0, 0.0], [1.0, 0.0], [0.0, 1.0]);
     let (p, g, k, h) = ([a, c], [pts.g, 0.0], [pts.k, 1.0 - pts.k], [0.0, pts.h]);

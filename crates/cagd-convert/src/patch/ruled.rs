@@ -103,7 +103,13 @@ fn difference(lo: &[f64], hi: &[f64]) -> Vec<f64> {
 
 /// The ruled domain of `u = (1 - s) lo(t) + s hi(t)`, `v = v0 + t (v1 - v0)`, with the
 /// coordinates swapped when `transposed`.
-pub(crate) fn ruled_domain(lo: &[f64], hi: &[f64], v0: f64, v1: f64, transposed: bool) -> PieceDomain {
+pub(crate) fn ruled_domain(
+    lo: &[f64],
+    hi: &[f64],
+    v0: f64,
+    v1: f64,
+    transposed: bool,
+) -> PieceDomain {
     let k = lo.len().max(hi.len()) - 1;
     let side = |c: &[f64]| -> Vec<[f64; 2]> {
         elevate_to(c, 1, k)

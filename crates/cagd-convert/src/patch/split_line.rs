@@ -10,7 +10,12 @@ use super::{PatchPiece, PatchSurface, PieceDomain, TensorSurface};
 
 /// `H_i` of eq. 15.6.3 / 15.6.7 from the `Q^{(i)}_{kl}` table given by `q(i, k, l)`,
 /// elevated to degree `m + n` (eq. 15.6.2): the net of the `m x (m + n)` result.
-fn assemble(m: usize, n: usize, dim: usize, q: impl Fn(usize, usize, usize) -> Vec<f64>) -> Vec<f64> {
+fn assemble(
+    m: usize,
+    n: usize,
+    dim: usize,
+    q: impl Fn(usize, usize, usize) -> Vec<f64>,
+) -> Vec<f64> {
     let mut pts = Vec::with_capacity((m + 1) * (m + n + 1) * dim);
     for i in 0..=m {
         let mut h = vec![0.0; (n + i + 1) * dim];
@@ -48,7 +53,9 @@ fn trapezoid_net(h: &TensorPatch, a: f64, b: f64) -> TensorPatch {
     let ((m, n), dim) = (h.degrees(), h.dim());
     let cols: Vec<Vec<f64>> = (0..=n).map(|l| column(h, l)).collect();
     // Q^{(i)}_{kl} = u-blossom of column l at (a^(i-k), b^k, 0^(m-i)) (15.6.4).
-    let pts = assemble(m, n, dim, |i, k, l| curve_blossom(&cols[l], dim, &args(m, a, i - k, b, k)));
+    let pts = assemble(m, n, dim, |i, k, l| {
+        curve_blossom(&cols[l], dim, &args(m, a, i - k, b, k))
+    });
     TensorPatch::new(pts, m, m + n, dim).unwrap_or_else(|_| h.clone())
 }
 
@@ -59,7 +66,10 @@ fn corner_net(h: &TensorPatch, a: f64, b: f64) -> TensorPatch {
     // Q^{(i)}_{kl}: u-args (a^(i-k), 0^(m-i+k)), v-args (b^l, 0^(n-l)) (15.6.8).
     let pts = assemble(m, n, dim, |i, k, l| {
         let ua = args(m, a, i - k, 0.0, 0);
-        let row: Vec<f64> = cols.iter().flat_map(|c| curve_blossom(c, dim, &ua)).collect();
+        let row: Vec<f64> = cols
+            .iter()
+            .flat_map(|c| curve_blossom(c, dim, &ua))
+            .collect();
         curve_blossom(&row, dim, &args(n, b, l, 0.0, 0))
     });
     TensorPatch::new(pts, m, m + n, dim).unwrap_or_else(|_| h.clone())
@@ -85,7 +95,11 @@ pub fn trapezoid(p: &TensorSurface, a: f64, b: f64) -> Result<PatchPiece> {
     check_range("a", a, 0.0, 1.0, why)?;
     check_range("b", b, 0.0, 1.0, why)?;
     let net = trapezoid_net(&p.homogeneous(), a, b);
-    piece(net, p.weights().is_some(), PieceDomain::Bilinear([[0.0, 0.0], [a, 0.0], [0.0, 1.0], [b, 1.0]]))
+    piece(
+        net,
+        p.weights().is_some(),
+        PieceDomain::Bilinear([[0.0, 0.0], [a, 0.0], [0.0, 1.0], [b, 1.0]]),
+    )
 }
 
 /// The corner triangle `D3` with vertices `(0,0)`, `(a,0)`, `(0,b)` of an `m x n` patch as a
@@ -100,11 +114,19 @@ pub fn corner_triangle(p: &TensorSurface, a: f64, b: f64) -> Result<PatchPiece> 
     for (name, x) in [("a", a), ("b", b)] {
         check_range(name, x, 0.0, 1.0, why)?;
         if x <= 0.0 {
-            return Err(Error::BadParameter { name, value: x, why });
+            return Err(Error::BadParameter {
+                name,
+                value: x,
+                why,
+            });
         }
     }
     let net = corner_net(&p.homogeneous(), a, b);
-    piece(net, p.weights().is_some(), PieceDomain::Bilinear([[0.0, 0.0], [a, 0.0], [0.0, b], [0.0, b]]))
+    piece(
+        net,
+        p.weights().is_some(),
+        PieceDomain::Bilinear([[0.0, 0.0], [a, 0.0], [0.0, b], [0.0, b]]),
+    )
 }
 
 /// A symmetry of the unit square: the canonical net is `Pc(u', v') = P(σ⁻¹(u', v'))`.
@@ -140,7 +162,11 @@ impl Sym {
             }
         }
         let net = TensorPatch::new(pts, m, n, dim).unwrap_or_else(|_| h.clone());
-        if self.transpose { super::ruled::transpose(&net) } else { net }
+        if self.transpose {
+            super::ruled::transpose(&net)
+        } else {
+            net
+        }
     }
 
     /// A canonical bilinear domain mapped back.
@@ -149,14 +175,32 @@ impl Sym {
     }
 }
 
-const ID: Sym = Sym { mirror_u: false, mirror_v: false, transpose: false };
+const ID: Sym = Sym {
+    mirror_u: false,
+    mirror_v: false,
+    transpose: false,
+};
 
 /// Left and right trapezoids of the canonical net `hc` for the line through `(a, 0)`,
 /// `(b, 1)`; the right one is D1 of the `u`-mirrored net with `1 - a`, `1 - b` (§15.6.1).
-fn two_trapezoids(hc: &TensorPatch, a: f64, b: f64, sym: Sym, rational: bool) -> Result<Vec<PatchPiece>> {
-    let mirrored = Sym { mirror_u: true, ..ID }.net(hc);
+fn two_trapezoids(
+    hc: &TensorPatch,
+    a: f64,
+    b: f64,
+    sym: Sym,
+    rational: bool,
+) -> Result<Vec<PatchPiece>> {
+    let mirrored = Sym {
+        mirror_u: true,
+        ..ID
+    }
+    .net(hc);
     Ok(vec![
-        piece(trapezoid_net(hc, a, b), rational, sym.domain([[0.0, 0.0], [a, 0.0], [0.0, 1.0], [b, 1.0]]))?,
+        piece(
+            trapezoid_net(hc, a, b),
+            rational,
+            sym.domain([[0.0, 0.0], [a, 0.0], [0.0, 1.0], [b, 1.0]]),
+        )?,
         piece(
             trapezoid_net(&mirrored, 1.0 - a, 1.0 - b),
             rational,
@@ -170,21 +214,39 @@ fn two_trapezoids(hc: &TensorPatch, a: f64, b: f64, sym: Sym, rational: bool) ->
 /// subpatch, omitted when `b = 1`) and the part `v in [0, b]`, `u >= a(1 - v/b)`, which is
 /// the trapezoid `a' = 1 - a`, `b' = 1` of the net restricted to `v in [0, b]` and
 /// mirrored in `u`.
-fn corner_and_pentagon(hc: &TensorPatch, a: f64, b: f64, sym: Sym, rational: bool) -> Result<Vec<PatchPiece>> {
+fn corner_and_pentagon(
+    hc: &TensorPatch,
+    a: f64,
+    b: f64,
+    sym: Sym,
+    rational: bool,
+) -> Result<Vec<PatchPiece>> {
     let mut out = vec![piece(
         corner_net(hc, a, b),
         rational,
         sym.domain([[0.0, 0.0], [a, 0.0], [0.0, b], [0.0, b]]),
     )?];
-    let (lower, upper) = if b < 1.0 { hc.subdivide_v(b)? } else { (hc.clone(), hc.clone()) };
-    let mirrored = Sym { mirror_u: true, ..ID }.net(&lower);
+    let (lower, upper) = if b < 1.0 {
+        hc.subdivide_v(b)?
+    } else {
+        (hc.clone(), hc.clone())
+    };
+    let mirrored = Sym {
+        mirror_u: true,
+        ..ID
+    }
+    .net(&lower);
     out.push(piece(
         trapezoid_net(&mirrored, 1.0 - a, 1.0),
         rational,
         sym.domain([[1.0, 0.0], [a, 0.0], [1.0, b], [0.0, b]]),
     )?);
     if b < 1.0 {
-        out.push(piece(upper, rational, sym.domain([[0.0, b], [1.0, b], [0.0, 1.0], [1.0, 1.0]]))?);
+        out.push(piece(
+            upper,
+            rational,
+            sym.domain([[0.0, b], [1.0, b], [0.0, 1.0], [1.0, 1.0]]),
+        )?);
     }
     Ok(out)
 }
@@ -207,7 +269,11 @@ pub fn split_along_line(p: &TensorSurface, f1: f64, f0: f64) -> Result<Vec<Patch
     let (a, b) = (f0, f0 + f1);
     for (name, x) in [("f1", f1), ("f0", f0)] {
         if !x.is_finite() {
-            return Err(Error::BadParameter { name, value: x, why: "must be finite" });
+            return Err(Error::BadParameter {
+                name,
+                value: x,
+                why: "must be finite",
+            });
         }
     }
     let misses = || Error::BadParameter {
@@ -231,13 +297,38 @@ pub fn split_along_line(p: &TensorSurface, f1: f64, f0: f64) -> Result<Vec<Patch
     let (sym, ac, bc) = if unit(a) && b < 0.0 {
         (ID, a, at_u0)
     } else if unit(a) && b > 1.0 {
-        (Sym { mirror_u: true, ..ID }, 1.0 - a, at_u1)
+        (
+            Sym {
+                mirror_u: true,
+                ..ID
+            },
+            1.0 - a,
+            at_u1,
+        )
     } else if unit(b) && a < 0.0 {
-        (Sym { mirror_v: true, ..ID }, b, 1.0 - at_u0)
+        (
+            Sym {
+                mirror_v: true,
+                ..ID
+            },
+            b,
+            1.0 - at_u0,
+        )
     } else if unit(b) && a > 1.0 {
-        (Sym { mirror_u: true, mirror_v: true, transpose: false }, 1.0 - b, 1.0 - at_u1)
+        (
+            Sym {
+                mirror_u: true,
+                mirror_v: true,
+                transpose: false,
+            },
+            1.0 - b,
+            1.0 - at_u1,
+        )
     } else if (a < 0.0 && b > 1.0) || (a > 1.0 && b < 0.0) {
-        let sym = Sym { transpose: true, ..ID };
+        let sym = Sym {
+            transpose: true,
+            ..ID
+        };
         return two_trapezoids(&sym.net(&h), at_u0, at_u1, sym, rational);
     } else {
         return Err(misses());

@@ -67,7 +67,12 @@ impl TriSurface {
     /// # Errors
     /// Those of [`TriPatch::new`], and [`Error::LengthMismatch`] /
     /// [`Error::NonPositiveWeight`] for the weights.
-    pub fn new(points: Vec<f64>, degree: usize, dim: usize, weights: Option<Vec<f64>>) -> Result<Self> {
+    pub fn new(
+        points: Vec<f64>,
+        degree: usize,
+        dim: usize,
+        weights: Option<Vec<f64>>,
+    ) -> Result<Self> {
         let net = TriPatch::new(points, degree, dim)?;
         if let Some(w) = &weights {
             check_weights(w, cagd_core::tri_count(degree))?;
@@ -108,7 +113,8 @@ impl TriSurface {
                 let hom = homogeneous(self.net.points(), Some(w), self.dim());
                 // Finite products of finite values with positive weights: cannot fail
                 // unless they overflow, which `new` would report.
-                TriPatch::new(hom, self.degree(), self.dim() + 1).unwrap_or_else(|_| self.net.clone())
+                TriPatch::new(hom, self.degree(), self.dim() + 1)
+                    .unwrap_or_else(|_| self.net.clone())
             }
         }
     }
@@ -252,7 +258,13 @@ fn project(mut h: Vec<f64>, rational: bool) -> Vec<f64> {
 ///
 /// # Errors
 /// [`Error::BadParameter`].
-pub(crate) fn check_range(name: &'static str, value: f64, lo: f64, hi: f64, why: &'static str) -> Result<()> {
+pub(crate) fn check_range(
+    name: &'static str,
+    value: f64,
+    lo: f64,
+    hi: f64,
+    why: &'static str,
+) -> Result<()> {
     if value.is_finite() && value >= lo && value <= hi {
         Ok(())
     } else {

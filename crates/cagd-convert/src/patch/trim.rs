@@ -71,35 +71,59 @@ const JOINT: f64 = 1e-9;
 fn check_chain(chain: &TrimChain) -> Result<()> {
     let segs = &chain.segments;
     if segs.is_empty() {
-        return Err(Error::UnsupportedTrim { index: 0, why: "the chain has no segment" });
+        return Err(Error::UnsupportedTrim {
+            index: 0,
+            why: "the chain has no segment",
+        });
     }
     for (index, s) in segs.iter().enumerate() {
         if s.bezier.is_empty() || s.bezier.len() > 4 {
-            return Err(Error::UnsupportedTrim { index, why: "a segment needs degree 0..=3" });
+            return Err(Error::UnsupportedTrim {
+                index,
+                why: "a segment needs degree 0..=3",
+            });
         }
         check_side("trimming curve", &s.bezier)?;
-        if !(s.start.is_finite() && s.end.is_finite() && 0.0 <= s.start && s.start < s.end && s.end <= 1.0) {
+        if !(s.start.is_finite()
+            && s.end.is_finite()
+            && 0.0 <= s.start
+            && s.start < s.end
+            && s.end <= 1.0)
+        {
             return Err(Error::BadParameter {
                 name: "trimming interval",
-                value: if s.start.is_finite() && s.start >= 0.0 { s.end } else { s.start },
+                value: if s.start.is_finite() && s.start >= 0.0 {
+                    s.end
+                } else {
+                    s.start
+                },
                 why: "a segment's interval needs 0 <= start < end <= 1",
             });
         }
         if index > 0 {
             let prev = &segs[index - 1];
             if (prev.end - s.start).abs() > JOINT {
-                return Err(Error::UnsupportedTrim { index, why: "intervals must follow each other without gap or overlap" });
+                return Err(Error::UnsupportedTrim {
+                    index,
+                    why: "intervals must follow each other without gap or overlap",
+                });
             }
             let (a, b) = (prev.bezier[prev.bezier.len() - 1], s.bezier[0]);
             if (a - b).abs() > JOINT {
-                return Err(Error::UnsupportedTrim { index, why: "the chain jumps at a joint" });
+                return Err(Error::UnsupportedTrim {
+                    index,
+                    why: "the chain jumps at a joint",
+                });
             }
         }
     }
     let on_edge = |x: f64| x.abs() <= JOINT || (x - 1.0).abs() <= JOINT;
     let (first, last) = (&segs[0], &segs[segs.len() - 1]);
     if first.start > JOINT && !on_edge(first.bezier[0]) {
-        return Err(Error::UnsupportedTrim { index: 0, why: "the chain starts inside the square (it must start on an edge)" });
+        return Err(Error::UnsupportedTrim {
+            index: 0,
+            why: "the chain starts inside the square (it must start on an edge)",
+        });
     }
     if last.end < 1.0 - JOINT && !on_edge(last.bezier[last.bezier.len() - 1]) {
         return Err(Error::UnsupportedTrim {
@@ -124,7 +148,11 @@ pub fn trim_to_patches(p: &TensorSurface, chain: &TrimChain) -> Result<Vec<Patch
     let strip = |v0: f64, v1: f64| -> Result<PatchPiece> {
         let mut piece = ruled_subpatch(p, &[0.0], &[1.0], v0, v1, transposed)?;
         let c = [[0.0, v0], [1.0, v0], [0.0, v1], [1.0, v1]];
-        piece.domain = PieceDomain::Bilinear(if transposed { c.map(|[a, b]| [b, a]) } else { c });
+        piece.domain = PieceDomain::Bilinear(if transposed {
+            c.map(|[a, b]| [b, a])
+        } else {
+            c
+        });
         Ok(piece)
     };
     // Which side a strip beyond an end belongs to: Above when the chain touches f = 0.

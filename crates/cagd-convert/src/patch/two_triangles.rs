@@ -32,7 +32,8 @@ fn lower_net(h: &TensorPatch) -> Vec<f64> {
                     if gamma > k || j - beta > n {
                         continue;
                     }
-                    let c = binomial_f64(i, alpha) * binomial_f64(j, beta) * binomial_f64(k, gamma) / denom;
+                    let c = binomial_f64(i, alpha) * binomial_f64(j, beta) * binomial_f64(k, gamma)
+                        / denom;
                     let src = h.point(alpha, j - beta);
                     for x in 0..dim {
                         out[o + x] += c * src[x];
