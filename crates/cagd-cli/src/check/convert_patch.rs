@@ -50,7 +50,8 @@ fn triangle(v: &Vector<'_>) -> Result<Result<TriSurface, String>, String> {
         (found, _) => {
             let n = v.param_usize("n").ok().or(found).unwrap_or(0);
             // Let the library name the mismatch.
-            return Ok(TriSurface::new(pts, n, dim.max(1), weights(v, "triangle")?).map_err(|e| e.to_string()));
+            return Ok(TriSurface::new(pts, n, dim.max(1), weights(v, "triangle")?)
+                .map_err(|e| e.to_string()));
         }
     };
     Ok(TriSurface::new(pts, n, dim, weights(v, "triangle")?).map_err(|e| e.to_string()))
@@ -154,13 +155,21 @@ fn run_rect_to_tri(v: &Vector<'_>) -> Result<Outcome, String> {
 /// §15.5 one rectangle over D1.
 fn run_rect_d1(v: &Vector<'_>) -> Result<Outcome, String> {
     let t = input_or_refuse!(triangle(v));
-    let (a, b, c, d) = (v.param_f64("a")?, v.param_f64("b")?, v.param_f64("c")?, v.param_f64("d")?);
+    let (a, b, c, d) = (
+        v.param_f64("a")?,
+        v.param_f64("b")?,
+        v.param_f64("c")?,
+        v.param_f64("d")?,
+    );
     tensor_outcome(cagd_convert::triangle_to_rect_d1(&t, a, b, c, d), false)
 }
 
 /// A parameter-plane point `[u, v]`.
 fn plane_point(v: &Vector<'_>, key: &str) -> Result<[f64; 2], String> {
-    let p = numbers(v.param(key).ok_or(format!("params.{key}: missing"))?, &format!("params.{key}"))?;
+    let p = numbers(
+        v.param(key).ok_or(format!("params.{key}: missing"))?,
+        &format!("params.{key}"),
+    )?;
     match p[..] {
         [a, b] => Ok([a, b]),
         _ => Err(format!("params.{key}: expected [u, v]")),
@@ -172,7 +181,11 @@ fn plane_point(v: &Vector<'_>, key: &str) -> Result<[f64; 2], String> {
 fn run_three_rects(v: &Vector<'_>) -> Result<Outcome, String> {
     let t = input_or_refuse!(triangle(v));
     let p = plane_point(v, "P")?;
-    let (g, k, h) = (plane_point(v, "G")?, plane_point(v, "K")?, plane_point(v, "H")?);
+    let (g, k, h) = (
+        plane_point(v, "G")?,
+        plane_point(v, "K")?,
+        plane_point(v, "H")?,
+    );
     let off = |what: &str, x: f64| format!("{what} = {x} is not on its edge");
     if g[1] != 0.0 {
         return Ok(Outcome::Refused(off("G.v", g[1])));
@@ -183,7 +196,12 @@ fn run_three_rects(v: &Vector<'_>) -> Result<Outcome, String> {
     if h[0] != 0.0 {
         return Ok(Outcome::Refused(off("H.u", h[0])));
     }
-    let split = TriSplitPoints { p, g: g[0], k: k[0], h: h[1] };
+    let split = TriSplitPoints {
+        p,
+        g: g[0],
+        k: k[0],
+        h: h[1],
+    };
     let pieces = match cagd_convert::triangle_to_three_rects(&t, split) {
         Ok(p) => p,
         Err(e) => return Ok(Outcome::Refused(e.to_string())),
@@ -213,13 +231,19 @@ fn run_three_rects(v: &Vector<'_>) -> Result<Outcome, String> {
 /// §15.6.1 left trapezoid.
 fn run_trapezoid(v: &Vector<'_>) -> Result<Outcome, String> {
     let p = input_or_refuse!(rect(v));
-    tensor_outcome(cagd_convert::trapezoid(&p, v.param_f64("a")?, v.param_f64("b")?), true)
+    tensor_outcome(
+        cagd_convert::trapezoid(&p, v.param_f64("a")?, v.param_f64("b")?),
+        true,
+    )
 }
 
 /// §15.6.2 corner triangle.
 fn run_corner(v: &Vector<'_>) -> Result<Outcome, String> {
     let p = input_or_refuse!(rect(v));
-    tensor_outcome(cagd_convert::corner_triangle(&p, v.param_f64("a")?, v.param_f64("b")?), true)
+    tensor_outcome(
+        cagd_convert::corner_triangle(&p, v.param_f64("a")?, v.param_f64("b")?),
+        true,
+    )
 }
 
 /// §15.6.3 rectangle → two triangles.
@@ -240,7 +264,11 @@ fn run_two_triangles(v: &Vector<'_>) -> Result<Outcome, String> {
 fn curve_coeffs(v: &Vector<'_>) -> Result<Vec<f64>, String> {
     let a = numbers(v.param("a").ok_or("params.a: missing")?, "params.a")?;
     if v.param("k").is_some() && v.param_usize("k")? + 1 != a.len() {
-        return Err(format!("params.k = {} does not match {} coefficients", v.param_usize("k")?, a.len()));
+        return Err(format!(
+            "params.k = {} does not match {} coefficients",
+            v.param_usize("k")?,
+            a.len()
+        ));
     }
     Ok(a)
 }
@@ -262,5 +290,8 @@ fn run_curve(v: &Vector<'_>) -> Result<Outcome, String> {
 fn run_curve_d7(v: &Vector<'_>) -> Result<Outcome, String> {
     let p = input_or_refuse!(rect(v));
     let a = curve_coeffs(v)?;
-    tensor_outcome(cagd_convert::curve_split_d7(&p, &a, v.param_f64("b")?), true)
+    tensor_outcome(
+        cagd_convert::curve_split_d7(&p, &a, v.param_f64("b")?),
+        true,
+    )
 }
