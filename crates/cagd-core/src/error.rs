@@ -150,7 +150,9 @@ pub enum Error {
     /// An `n x n` tensor patch is not a degenerate triangle (SPEC-convert §15.4,
     /// Theorem 15.4.2): re-elevating its exactly reduced rows misses it by `residual`
     /// (relative to the largest coordinate), above `tol`.
-    #[error("not a degenerate triangular patch: relative residual {residual} above tolerance {tol} (Theorem 15.4.2)")]
+    #[error(
+        "not a degenerate triangular patch: relative residual {residual} above tolerance {tol} (Theorem 15.4.2)"
+    )]
     NotDegenerate {
         /// The relative residual measured.
         residual: f64,
