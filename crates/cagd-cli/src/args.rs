@@ -10,6 +10,9 @@ usage:
               [--merge exact|lossy] [--strategy fit|segments|piegl-tiller-1995]
               [-i FILE] [-o FILE] [--svg FILE]
   cagd merge [--continuity K] [--tol T] [-i FILE] [-o FILE]
+  cagd convert (--to rectangle|rectangles3|triangles|triangle [--inner U,V] [--edges G,K,H]
+               | --split-line F1,F0 | --split-curve A0,A1,... | --trim FILE)
+               [--tol T] [-i FILE] [-o FILE] [--svg FILE]
   cagd demo [--out DIR]
   cagd check FILE...
   cagd --help
@@ -39,6 +42,18 @@ degree-m segments (--continuity K, default 0, K < m). The joints are checked: C0
 T, C^K by a certified knot removal within T. --tol T defaults to
 1e-9 * max(1, largest |coordinate|) (the homogeneous coordinates (w x, w) of rational
 segments included); the report gives the T used.
+
+convert on a \"triangle\" / \"tensor\" (optional \"weights\") converts it exactly: --to
+rectangle (one degenerate tensor, 15.4), --to rectangles3 (three tensors through the inner
+point U,V, default the centroid, and the edge points (G,0), (K,1-K), (0,H), default 0.5
+each; 15.5), --to triangles (two triangles of degree m+n, 15.6.3), --to triangle (a
+degenerate n x n tensor back to its triangle within --tol, default 1e-12), --split-line
+F1,F0 (the pieces on either side of u = F1 v + F0, 15.6), --split-curve A0,...,Ak (both
+sides of u = f(v), f with Bernstein coefficients A, 15.7), --trim FILE (the untrimmed
+pieces of the kept region, 15.7.3; FILE {\"direction\":\"u_of_v\"|\"v_of_u\",
+\"keep\":\"below\"|\"above\",\"segments\":[{\"interval\":[c0,c1],\"bezier\":[...]},...]}).
+Each piece carries its \"domain\" in the input's (u, v) and a \"report\" with the largest
+difference measured.
 
 check runs every vector of spec-vector files (the format of ../shared/spec/vectors-*.json:
 a list of {id, algorithm, params, input, expected, tol}) through the library by its
@@ -89,11 +104,81 @@ pub(crate) struct MergeArgs {
     pub(crate) output: Option<PathBuf>,
 }
 
+/// Options of `cagd convert` (the patch conversions read `to`, `inner`, `edges`,
+/// `split_line`, `split_curve`, `trim`, `tol`; `standard_form` belongs to the NURBS ones).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct ConvertArgs {
+    pub(crate) to: Option<String>,
+    pub(crate) inner: Option<(f64, f64)>,
+    pub(crate) edges: Option<Vec<f64>>,
+    pub(crate) split_line: Option<(f64, f64)>,
+    pub(crate) split_curve: Option<Vec<f64>>,
+    pub(crate) trim: Option<PathBuf>,
+    pub(crate) standard_form: bool,
+    pub(crate) tol: Option<f64>,
+    pub(crate) input: Option<PathBuf>,
+    pub(crate) output: Option<PathBuf>,
+    pub(crate) svg: Option<PathBuf>,
+}
+
+/// A comma-separated list of finite numbers.
+fn parse_list(s: &str, flag: &str) -> Result<Vec<f64>, String> {
+    s.split(',')
+        .map(|x| {
+            let v: f64 = parse_num(x.trim(), flag)?;
+            if v.is_finite() { Ok(v) } else { Err(format!("{flag}: {v} is not finite")) }
+        })
+        .collect()
+}
+
+/// A pair `A,B`.
+fn parse_pair(s: &str, flag: &str) -> Result<(f64, f64), String> {
+    match parse_list(s, flag)?[..] {
+        [a, b] => Ok((a, b)),
+        _ => Err(format!("{flag}: expected two numbers A,B, got {s:?}")),
+    }
+}
+
+/// The options of `cagd convert` (the arguments after `convert`).
+fn parse_convert<'a>(mut it: impl Iterator<Item = &'a String>) -> Result<ConvertArgs, String> {
+    let mut c = ConvertArgs {
+        to: None,
+        inner: None,
+        edges: None,
+        split_line: None,
+        split_curve: None,
+        trim: None,
+        standard_form: false,
+        tol: None,
+        input: None,
+        output: None,
+        svg: None,
+    };
+    while let Some(a) = it.next() {
+        match a.as_str() {
+            "--to" => c.to = Some(value(&mut it, a)?.to_string()),
+            "--inner" => c.inner = Some(parse_pair(value(&mut it, a)?, a)?),
+            "--edges" => c.edges = Some(parse_list(value(&mut it, a)?, a)?),
+            "--split-line" => c.split_line = Some(parse_pair(value(&mut it, a)?, a)?),
+            "--split-curve" => c.split_curve = Some(parse_list(value(&mut it, a)?, a)?),
+            "--trim" => c.trim = Some(PathBuf::from(value(&mut it, a)?)),
+            "--standard-form" => c.standard_form = true,
+            "--tol" => c.tol = Some(parse_tol(value(&mut it, a)?)?),
+            "-i" | "--input" => c.input = Some(PathBuf::from(value(&mut it, a)?)),
+            "-o" | "--output" => c.output = Some(PathBuf::from(value(&mut it, a)?)),
+            "--svg" => c.svg = Some(PathBuf::from(value(&mut it, a)?)),
+            other => return Err(format!("convert: unknown argument {other:?}")),
+        }
+    }
+    Ok(c)
+}
+
 /// A parsed command line.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) enum Command {
     Reduce(ReduceArgs),
     Merge(MergeArgs),
+    Convert(ConvertArgs),
     Demo { out: PathBuf },
     Check { files: Vec<PathBuf> },
     Help,
@@ -159,6 +244,7 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
             Ok(Command::Demo { out })
         }
         "merge" => parse_merge(it).map(Command::Merge),
+        "convert" => parse_convert(it).map(Command::Convert),
         "check" => {
             let files: Vec<PathBuf> = it.map(PathBuf::from).collect();
             if files.is_empty() {

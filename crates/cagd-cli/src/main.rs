@@ -10,7 +10,11 @@
 
 mod args;
 mod check;
+mod convert_patch_cmd;
+mod convert_patch_svg;
+mod convert_patch_trim;
 mod demo;
+mod demo_convert_patch;
 mod demo_patches;
 mod demo_splines;
 mod input;
@@ -148,6 +152,21 @@ fn merge(args: &args::MergeArgs) -> ExitCode {
     write_json(args.output.as_deref(), &json)
 }
 
+/// `cagd convert` on one `triangle` / `tensor` object (the patch conversions).
+fn convert(args: &args::ConvertArgs) -> ExitCode {
+    let result = read_input(args.input.as_deref()).and_then(|text| {
+        let v: Value = serde_json::from_str(&text).map_err(|e| format!("input: not valid JSON: {e}"))?;
+        convert_patch_cmd::run(&v, args)
+    });
+    match result {
+        Ok(json) => write_json(args.output.as_deref(), &json),
+        Err(e) => {
+            eprintln!("cagd: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
 fn main() -> ExitCode {
     let argv: Vec<String> = std::env::args().skip(1).collect();
     match args::parse(&argv) {
@@ -157,6 +176,7 @@ fn main() -> ExitCode {
         }
         Ok(args::Command::Reduce(r)) => reduce(&r),
         Ok(args::Command::Merge(m)) => merge(&m),
+        Ok(args::Command::Convert(c)) => convert(&c),
         Ok(args::Command::Check { files }) => match check::run_files(&files) {
             Ok(true) => ExitCode::SUCCESS,
             Ok(false) => ExitCode::from(1),

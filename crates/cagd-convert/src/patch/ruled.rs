@@ -116,8 +116,8 @@ pub(crate) fn ruled_domain(
             .iter()
             .enumerate()
             .map(|(j, &u)| {
-                let v = v0 + (v1 - v0) * j as f64 / k.max(1) as f64;
-                let v = if k == 0 { v0 } else { v };
+                let x = if k == 0 { 0.0 } else { j as f64 / k as f64 };
+                let v = (1.0 - x) * v0 + x * v1;
                 if transposed { [v, u] } else { [u, v] }
             })
             .collect()
