@@ -126,7 +126,11 @@ fn parse_list(s: &str, flag: &str) -> Result<Vec<f64>, String> {
     s.split(',')
         .map(|x| {
             let v: f64 = parse_num(x.trim(), flag)?;
-            if v.is_finite() { Ok(v) } else { Err(format!("{flag}: {v} is not finite")) }
+            if v.is_finite() {
+                Ok(v)
+            } else {
+                Err(format!("{flag}: {v} is not finite"))
+            }
         })
         .collect()
 }

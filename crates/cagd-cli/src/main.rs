@@ -155,7 +155,8 @@ fn merge(args: &args::MergeArgs) -> ExitCode {
 /// `cagd convert` on one `triangle` / `tensor` object (the patch conversions).
 fn convert(args: &args::ConvertArgs) -> ExitCode {
     let result = read_input(args.input.as_deref()).and_then(|text| {
-        let v: Value = serde_json::from_str(&text).map_err(|e| format!("input: not valid JSON: {e}"))?;
+        let v: Value =
+            serde_json::from_str(&text).map_err(|e| format!("input: not valid JSON: {e}"))?;
         convert_patch_cmd::run(&v, args)
     });
     match result {
