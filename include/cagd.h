@@ -36,6 +36,61 @@
 #include <stdint.h>
 
 /**
+ * Trimming curves `u = f(v)` (intervals in `v`).
+ */
+#define CAGD_TRIM_U_OF_V 0
+
+/**
+ * Trimming curves `v = g(u)` (intervals in `u`).
+ */
+#define CAGD_TRIM_V_OF_U 1
+
+/**
+ * Keep `u <= f(v)` (resp. `v <= g(u)`).
+ */
+#define CAGD_TRIM_KEEP_BELOW 0
+
+/**
+ * Keep `u >= f(v)` (resp. `v >= g(u)`).
+ */
+#define CAGD_TRIM_KEEP_ABOVE 1
+
+/**
+ * Piece kind: a tensor-product patch of degree `(deg_u, deg_v)`.
+ */
+#define CAGD_PIECE_TENSOR 1
+
+/**
+ * Piece kind: a triangular patch of degree `deg_u` (`deg_v` is the same number).
+ */
+#define CAGD_PIECE_TRIANGLE 2
+
+/**
+ * Domain kind: bilinear quadrilateral, 8 doubles `X00, X10, X01, X11` (each `u, v`): the
+ * piece's `(s, t)` maps to `(1-s)(1-t) X00 + s(1-t) X10 + (1-s) t X01 + s t X11`.
+ */
+#define CAGD_DOMAIN_BILINEAR 1
+
+/**
+ * Domain kind: triangle, 6 doubles `A, B, C`: the piece's `(u', v')` maps to
+ * `C + u'(A - C) + v'(B - C)`.
+ */
+#define CAGD_DOMAIN_TRIANGLE 2
+
+/**
+ * Domain kind: ruled region of a curved split, `4 (k + 1)` doubles: the `k + 1` control
+ * points `(u, v)` of the side `s = 0`, then those of the side `s = 1`; the piece's
+ * `(s, t)` maps to `(1 - s) L(t) + s R(t)` (`L`, `R` Bézier curves of degree `k`).
+ */
+#define CAGD_DOMAIN_RULED 3
+
+/**
+ * Domain kind: the triangle of a degenerate rectangle (`cagd_tensorpatch_to_triangle`),
+ * 0 doubles: the triangle's `(u, v)` is the rectangle's `(s, t) = (u, v / (1 - u))`.
+ */
+#define CAGD_DOMAIN_DEGENERATE_RECT 4
+
+/**
  * The default relative tolerance of `cagd_curve_exact_degree`: a difference
  * `Delta^j P_0` counts as zero when `||Delta^j P_0||_inf <= tol * 2^j * max ||P_i||_inf`
  * (an `f64`-elevated curve stays below `(n + 4) eps <= 1.6e-14`; 1e-12 leaves a margin
@@ -141,6 +196,20 @@ enum CagdStatus
    * A linear system that must be solved is singular.
    */
   CAGD_ERR_SINGULAR = 42,
+  /**
+   * An `n x n` rectangular patch is not a degenerate triangle (SPEC-convert §15.4,
+   * Theorem 15.4.2); the message gives the relative residual.
+   */
+  CAGD_ERR_NOT_DEGENERATE = 50,
+  /**
+   * A split of a patch's parameter domain folds or degenerates (Jacobian <= 0 at a
+   * corner of a sub-domain, SPEC-convert §15.5).
+   */
+  CAGD_ERR_DEGENERATE_SPLIT = 51,
+  /**
+   * A trimming layout the trimmed-patch tiling does not support (SPEC-convert §15.7.3).
+   */
+  CAGD_ERR_UNSUPPORTED_TRIM = 52,
   /**
    * A bug inside cagd was caught at the boundary (a Rust panic); please report it with
    * the message.
@@ -476,6 +545,13 @@ typedef struct CagdCurve CagdCurve;
  * Immutable; release with `cagd_curvelist_free`.
  */
 typedef struct CagdCurveList CagdCurveList;
+
+/**
+ * Opaque handle to the pieces of a patch conversion, in the order the conversion defines
+ * (see each `cagd_tripatch_to_*` / `cagd_tensorpatch_*` function). Immutable; release
+ * with `cagd_patchpiecelist_free`.
+ */
+typedef struct CagdPatchPieceList CagdPatchPieceList;
 
 /**
  * Opaque handle to the report of a reduction: the method, the degrees, the certified
@@ -1479,6 +1555,259 @@ CagdStatus cagd_bsplinesurface_reduce_to_tolerance(const struct CagdBSplineSurfa
                                                    const struct CagdReduceOptions *opts,
                                                    struct CagdBSplineSurface **surface_out,
                                                    struct CagdReport **report_out);
+
+/**
+ * The triangle as one degenerate `m x n` rectangle, `m >= n` (SPEC-convert §15.4, eq.
+ * 15.4.2; `m = n` for the square one): `P(s, t) = T(s, (1 - s) t)`.
+ *
+ * Parameters:
+ * - `patch` (in): the triangle of degree `n`.
+ * - `weights` (in): NULL (polynomial) or `(n + 1)(n + 2) / 2` weights `> 0` in the order of
+ *   the points (a rational patch; the result is rational).
+ * - `m` (in): the rectangle's `s`-degree, `n <= m <= 64`.
+ * - `list_out` (out): on `CAGD_OK`, one tensor piece with the bilinear domain
+ *   `[(0,0), (1,0), (0,1), (1,0)]`, owned by the caller (`cagd_patchpiecelist_free`).
+ *
+ * Returns:
+ * - `CAGD_OK`: `*list_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `list_out` is NULL.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `m < n`. `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `m > 64`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` NULL or a live handle; `weights` NULL or the documented number of doubles;
+ * `list_out` NULL or writable.
+ */
+CagdStatus cagd_tripatch_to_rect(const struct CagdTriPatch *patch,
+                                 const double *weights,
+                                 size_t m,
+                                 struct CagdPatchPieceList **list_out);
+
+/**
+ * The triangle over the quadrilateral `X00, X10, X01, X11` of its domain as one
+ * non-degenerate `n x n` rectangle, `P(s, t) = T(X(s, t))` with the bilinear `X`
+ * (SPEC-convert §15.5, general form; region D1 of eq. 15.5.3 is `[(0,0), (b,0), (0,d),
+ * (a,c)]`).
+ *
+ * Parameters:
+ * - `patch`, `weights` (in): as `cagd_tripatch_to_rect`.
+ * - `corners` (in): 8 doubles `X00.u, X00.v, X10.u, X10.v, X01.u, X01.v, X11.u, X11.v`,
+ *   each in the closed unit triangle.
+ * - `list_out` (out): on `CAGD_OK`, one tensor piece with that bilinear domain.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*list_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch`, `corners` or `list_out` is NULL.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a corner is not finite or outside the triangle, or a
+ *   pointer is misaligned.
+ * - `CAGD_ERR_DEGENERATE_SPLIT`: the map folds (Jacobian `<= 0` at a corner).
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * As `cagd_tripatch_to_rect`; `corners` NULL or 8 readable doubles.
+ */
+CagdStatus cagd_tripatch_to_quad(const struct CagdTriPatch *patch,
+                                 const double *weights,
+                                 const double *corners,
+                                 struct CagdPatchPieceList **list_out);
+
+/**
+ * The triangle as three non-degenerate `n x n` rectangles through the inner point
+ * `(inner_u, inner_v)` and the edge points `G = (g, 0)`, `K = (k, 1 - k)`, `H = (0, h)`
+ * (SPEC-convert §15.5; the centroid and `g = k = h = 0.5` are the usual choice). Pieces in
+ * the order `D1 = (O, G, H, P)`, `D2 = (U, K, G, P)`, `D3 = (V, H, K, P)`, each with its
+ * bilinear domain; neighbours share their boundary nets.
+ *
+ * Parameters:
+ * - `patch`, `weights` (in): as `cagd_tripatch_to_rect`.
+ * - `inner_u`, `inner_v` (in): the inner point, `> 0` with sum `< 1`.
+ * - `g`, `k`, `h` (in): the edge points' parameters, each in `(0, 1)`.
+ * - `list_out` (out): on `CAGD_OK`, the three pieces.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*list_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `list_out` is NULL.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a point outside its range, or a pointer misaligned.
+ * - `CAGD_ERR_DEGENERATE_SPLIT`: one of the three quadrilaterals folds.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * As `cagd_tripatch_to_rect`.
+ */
+CagdStatus cagd_tripatch_to_three_rects(const struct CagdTriPatch *patch,
+                                        const double *weights,
+                                        double inner_u,
+                                        double inner_v,
+                                        double g,
+                                        double k,
+                                        double h,
+                                        struct CagdPatchPieceList **list_out);
+
+/**
+ * An `n x n` rectangle that is a degenerate triangle (Theorem 15.4.2) back to its triangle
+ * of degree `n` (SPEC-convert §15.4, eq. 15.4.4 inverted: row `i` reduced exactly from
+ * degree `n` to `n - i`). `T(u, v) = P(u, v / (1 - u))`.
+ *
+ * Parameters:
+ * - `patch` (in): the `n x n` tensor patch; `weights` (in): NULL or `(n + 1)^2` weights.
+ * - `tol` (in): the largest relative residual accepted (e.g. `1e-12`), finite `> 0`.
+ * - `list_out` (out): on `CAGD_OK`, one triangle piece of domain kind
+ *   `CAGD_DOMAIN_DEGENERATE_RECT`.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*list_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `list_out` is NULL.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight (given or reduced) is `<= 0`.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: the patch is not square.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `tol` not finite `> 0`, or a pointer misaligned.
+ * - `CAGD_ERR_NOT_DEGENERATE`: the relative residual is above `tol` (the message gives it).
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` NULL or a live handle; `weights` NULL or `(n + 1)^2` readable doubles;
+ * `list_out` NULL or writable.
+ */
+CagdStatus cagd_tensorpatch_to_triangle(const struct CagdTensorPatch *patch,
+                                        const double *weights,
+                                        double tol,
+                                        struct CagdPatchPieceList **list_out);
+
+/**
+ * An `m x n` rectangle as two triangles of degree `m + n` (SPEC-convert §15.6.3): piece 0
+ * `T(u, v) = P(u, v)` on `u + v <= 1` (triangle domain `[(1,0), (0,1), (0,0)]`), piece 1
+ * `T'(u', v') = P(1 - u', 1 - v')` (domain `[(0,1), (1,0), (1,1)]`).
+ *
+ * Parameters:
+ * - `patch` (in): the tensor patch of degree `(m, n)`, `m + n <= 64`.
+ * - `weights` (in): NULL (polynomial) or `(m + 1)(n + 1)` weights `> 0` in the order of the
+ *   points (the result is rational).
+ * - `list_out` (out): on `CAGD_OK`, the two pieces, owned by the caller
+ *   (`cagd_patchpiecelist_free`).
+ *
+ * Returns:
+ * - `CAGD_OK`: `*list_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `list_out` is NULL.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `m + n > 64`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` NULL or a live handle; `weights` NULL or the documented number of doubles;
+ * `list_out` NULL or writable.
+ */
+CagdStatus cagd_tensorpatch_to_triangles(const struct CagdTensorPatch *patch,
+                                         const double *weights,
+                                         struct CagdPatchPieceList **list_out);
+
+/**
+ * Splits an `m x n` patch along the line `u = f1 v + f0` into exact pieces that tile the
+ * unit square (SPEC-convert §15.6): two trapezoids `m x (m + n)` when the line meets
+ * `v = 0` and `v = 1` inside `[0, 1]` (left first); a corner triangle and the pentagon as
+ * the spec decomposes it (a trapezoid and, unless the cut reaches the opposite corner, a
+ * strip) when it cuts a corner off; two trapezoids of the transposed patch when it meets
+ * `u = 0` and `u = 1`. Every piece has a bilinear domain.
+ *
+ * Parameters:
+ * - `patch`, `weights` (in): as `cagd_tensorpatch_to_triangles`.
+ * - `f1`, `f0` (in): the line.
+ * - `list_out` (out): on `CAGD_OK`, the pieces (2 or 3).
+ *
+ * Returns:
+ * - `CAGD_OK`: `*list_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `list_out` is NULL.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `f1` or `f0` not finite, the line does not cut the open
+ *   square in two, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * As `cagd_tensorpatch_to_triangles`.
+ */
+CagdStatus cagd_tensorpatch_split_line(const struct CagdTensorPatch *patch,
+                                       const double *weights,
+                                       double f1,
+                                       double f0,
+                                       struct CagdPatchPieceList **list_out);
+
+/**
+ * Splits an `m x n` patch along the curve `u = f(v) = sum_l B^k_l(v) a_l` (SPEC-convert
+ * §15.7, corner cutting): piece 0 is `{u <= f(v)}` (D5, `u = s f(t)`, `v = t`), piece 1
+ * `{u >= f(v)}` (`u = f(t) + s (1 - f(t))`), each `m x (k m + n)` with a ruled domain.
+ *
+ * Parameters:
+ * - `patch`, `weights` (in): as `cagd_tensorpatch_to_triangles`.
+ * - `coeffs` (in): the `k + 1` Bernstein coefficients `a_0 .. a_k` of `f`; `f` must stay
+ *   in `[0, 1]`.
+ * - `n_coeffs` (in): `k + 1 >= 1`.
+ * - `list_out` (out): on `CAGD_OK`, the two pieces.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*list_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch`, `coeffs` or `list_out` is NULL.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
+ * - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_coeffs == 0`. `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `k > 64`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `f` leaves `[0, 1]` or a coefficient is not finite, or a
+ *   pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * As `cagd_tensorpatch_to_triangles`; `coeffs` NULL or `n_coeffs` readable doubles.
+ */
+CagdStatus cagd_tensorpatch_split_curve(const struct CagdTensorPatch *patch,
+                                        const double *weights,
+                                        const double *coeffs,
+                                        size_t n_coeffs,
+                                        struct CagdPatchPieceList **list_out);
+
+/**
+ * The untrimmed patches covering exactly the kept region of a patch trimmed by one chain
+ * of polynomial curves (SPEC-convert §15.7.3; supported layout: the chain is the graph of
+ * a piecewise polynomial over one parameter, segments of degree `<= 3` on consecutive
+ * intervals, continuous, running from edge to edge of the square — across `[0, 1]` or
+ * starting / ending where the curve meets a side edge). Ruled pieces along the curves,
+ * bilinear strips beyond the chain's ends.
+ *
+ * Parameters:
+ * - `patch`, `weights` (in): as `cagd_tensorpatch_to_triangles`.
+ * - `direction` (in): `CAGD_TRIM_U_OF_V` or `CAGD_TRIM_V_OF_U`.
+ * - `keep` (in): `CAGD_TRIM_KEEP_BELOW` or `CAGD_TRIM_KEEP_ABOVE`.
+ * - `intervals` (in): `2 * n_segments` doubles, `start, end` of each segment's interval.
+ * - `n_coeffs` (in): `n_segments` counts, segment `s` has `n_coeffs[s]` (1..=4) Bernstein
+ *   coefficients over its local `t in [0, 1]`.
+ * - `coeffs` (in): the coefficients of all segments, one after the other
+ *   (`sum n_coeffs` doubles).
+ * - `n_segments` (in): `>= 1`.
+ * - `list_out` (out): on `CAGD_OK`, the pieces.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*list_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: a pointer argument is NULL.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: unknown `direction` / `keep`, a curve leaving `[0, 1]`, an
+ *   interval outside `[0, 1]`, a sum of counts that overflows, or a misaligned pointer.
+ * - `CAGD_ERR_UNSUPPORTED_TRIM`: a layout outside the supported one (gap, jump, end inside
+ *   the square, degree > 3, no segment).
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * As `cagd_tensorpatch_to_triangles`; `intervals` NULL or `2 * n_segments` readable
+ * doubles; `n_coeffs` NULL or `n_segments` readable `size_t`; `coeffs` NULL or
+ * `sum n_coeffs` readable doubles.
+ */
+CagdStatus cagd_tensorpatch_trim(const struct CagdTensorPatch *patch,
+                                 const double *weights,
+                                 int32_t direction,
+                                 int32_t keep,
+                                 const double *intervals,
+                                 const size_t *n_coeffs,
+                                 const double *coeffs,
+                                 size_t n_segments,
+                                 struct CagdPatchPieceList **list_out);
 
 /**
  * Creates a polynomial Bézier curve of degree `n_points - 1`.
@@ -2554,6 +2883,157 @@ CagdStatus cagd_report_patch(const struct CagdReport *report,
                              int32_t *patch_method_out,
                              size_t *degrees_out,
                              size_t *n_pieces_out);
+
+/**
+ * Releases a piece list. NULL is accepted and ignored; a non-NULL handle must be released
+ * exactly once and not used afterwards.
+ *
+ * Parameters:
+ * - `list` (in, consumed): a `CagdPatchPieceList **` output of a cagd function, or NULL.
+ *
+ * Does not change `cagd_last_error_message()`.
+ *
+ * # Safety
+ * `list` must be NULL or a live handle created by cagd that is not used afterwards.
+ */
+void cagd_patchpiecelist_free(struct CagdPatchPieceList *list);
+
+/**
+ * Reads the number of pieces.
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `count_out` (out): on `CAGD_OK`, the number of pieces.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*count_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `count_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; `count_out` NULL or writable.
+ */
+CagdStatus cagd_patchpiecelist_count(const struct CagdPatchPieceList *list, size_t *count_out);
+
+/**
+ * Describes piece `i`: its kind, degrees, dimension, whether it has weights, and the kind
+ * of its domain.
+ *
+ * Parameters:
+ * - `list` (in): the list; `i` (in): the piece index, `0 <= i < count`.
+ * - `kind_out` (out): `CAGD_PIECE_TENSOR` or `CAGD_PIECE_TRIANGLE`.
+ * - `deg_u_out`, `deg_v_out` (out): the degrees `(m, n)` of a tensor piece; a triangle's
+ *   degree `n` in both.
+ * - `dim_out` (out): coordinates per point.
+ * - `rational_out` (out): 1 when the piece has weights, else 0.
+ * - `domain_kind_out` (out): `CAGD_DOMAIN_BILINEAR`, `CAGD_DOMAIN_TRIANGLE`,
+ *   `CAGD_DOMAIN_RULED` or `CAGD_DOMAIN_DEGENERATE_RECT`.
+ *
+ * The piece has `(deg_u + 1)(deg_v + 1)` (tensor, i-major) or `(n + 1)(n + 2) / 2`
+ * (triangle, i-major) points. All outputs are written only on `CAGD_OK`.
+ *
+ * Returns:
+ * - `CAGD_OK`: every output is written.
+ * - `CAGD_ERR_NULL_POINTER`: any pointer argument is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; each output NULL or writable.
+ */
+CagdStatus cagd_patchpiecelist_info(const struct CagdPatchPieceList *list,
+                                    size_t i,
+                                    int32_t *kind_out,
+                                    size_t *deg_u_out,
+                                    size_t *deg_v_out,
+                                    size_t *dim_out,
+                                    int32_t *rational_out,
+                                    int32_t *domain_kind_out);
+
+/**
+ * Copies the control points of piece `i` (Euclidean, i-major, `n_points * dim` doubles).
+ *
+ * Parameters:
+ * - `list` (in): the list; `i` (in): the piece index.
+ * - `out` (out): `out_cap` doubles; may be NULL when `out_cap == 0` (size query).
+ * - `out_needed` (out): the number of doubles needed, also written on
+ *   `CAGD_ERR_BUFFER_TOO_SMALL`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the points are in `out[0 .. *out_needed]`.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < *out_needed`; `out` untouched.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` NULL or a live list; `out` NULL or `out_cap` writable doubles; `out_needed` NULL
+ * or writable.
+ */
+CagdStatus cagd_patchpiecelist_points(const struct CagdPatchPieceList *list,
+                                      size_t i,
+                                      double *out,
+                                      size_t out_cap,
+                                      size_t *out_needed);
+
+/**
+ * Copies the weights of a rational piece `i` (`n_points` doubles, in the order of the
+ * points).
+ *
+ * Parameters:
+ * - `list` (in): the list; `i` (in): the piece index.
+ * - `out` (out): `out_cap` doubles; may be NULL when `out_cap == 0` (size query).
+ * - `out_needed` (out): the number of doubles needed, also written on
+ *   `CAGD_ERR_BUFFER_TOO_SMALL`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the weights are in `out[0 .. *out_needed]`.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the piece is polynomial (nothing written, not even
+ *   `*out_needed`).
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < *out_needed`; `out` untouched.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * As `cagd_patchpiecelist_points`.
+ */
+CagdStatus cagd_patchpiecelist_weights(const struct CagdPatchPieceList *list,
+                                       size_t i,
+                                       double *out,
+                                       size_t out_cap,
+                                       size_t *out_needed);
+
+/**
+ * Copies the domain of piece `i`: the part of the input's `(u, v)` domain it covers, laid
+ * out as its domain kind says (`CAGD_DOMAIN_BILINEAR`: 8 doubles; `CAGD_DOMAIN_TRIANGLE`:
+ * 6; `CAGD_DOMAIN_RULED`: `4 (k + 1)`; `CAGD_DOMAIN_DEGENERATE_RECT`: 0).
+ *
+ * Parameters:
+ * - `list` (in): the list; `i` (in): the piece index.
+ * - `out` (out): `out_cap` doubles; may be NULL when `out_cap == 0` (size query).
+ * - `out_needed` (out): the number of doubles needed, also written on
+ *   `CAGD_ERR_BUFFER_TOO_SMALL`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the domain is in `out[0 .. *out_needed]`.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < *out_needed`; `out` untouched.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * As `cagd_patchpiecelist_points`.
+ */
+CagdStatus cagd_patchpiecelist_domain(const struct CagdPatchPieceList *list,
+                                      size_t i,
+                                      double *out,
+                                      size_t out_cap,
+                                      size_t *out_needed);
 
 /**
  * Reduces a curve of degree `n` to degree `opts->target` with `opts->method`, returning

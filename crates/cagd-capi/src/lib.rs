@@ -48,6 +48,11 @@
 //!   their `_to_tolerance` forms. All take one `CagdReduceOptions` (versioned by its
 //!   leading `struct_size`, filled by `cagd_reduce_options_init`).
 //!
+//! - Patch conversions (SPEC-convert §15.4–15.7), handles in and a `CagdPatchPieceList`
+//!   out (each piece a tensor or triangular patch, polynomial or rational, with the part of
+//!   the input's domain it covers): `cagd_tripatch_to_rect`, `_to_quad`, `_to_three_rects`,
+//!   `cagd_tensorpatch_to_triangle`, `_to_triangles`, `_split_line`, `_split_curve`, `_trim`.
+//!
 //! ## Supported range and accuracy
 //!
 //! That of cagd-core (degrees `0..=64`, any `dim >= 1`); the C layer adds no numerics, it
@@ -69,6 +74,10 @@ mod bspline_reduce;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod bspline_surface;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod convert_patch;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod convert_patch_rect;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod curve;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod curve_list;
@@ -87,6 +96,8 @@ mod matrices;
 mod patch_list;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod patch_reduce;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod piece_list;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod reduce;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
@@ -132,6 +143,15 @@ pub use bspline_surface::{
     cagd_bsplinesurface_free, cagd_bsplinesurface_new, cagd_bsplinesurface_reduce,
     cagd_bsplinesurface_reduce_to_tolerance, cagd_bsplinesurface_shape,
 };
+pub use convert_patch::{
+    cagd_tensorpatch_to_triangle, cagd_tripatch_to_quad, cagd_tripatch_to_rect,
+    cagd_tripatch_to_three_rects,
+};
+pub use convert_patch_rect::{
+    CAGD_TRIM_KEEP_ABOVE, CAGD_TRIM_KEEP_BELOW, CAGD_TRIM_U_OF_V, CAGD_TRIM_V_OF_U,
+    cagd_tensorpatch_split_curve, cagd_tensorpatch_split_line, cagd_tensorpatch_to_triangles,
+    cagd_tensorpatch_trim,
+};
 pub use curve::{
     CagdCurve, cagd_curve_degree, cagd_curve_dim, cagd_curve_free, cagd_curve_is_rational,
     cagd_curve_new, cagd_curve_new_rational, cagd_curve_points, cagd_curve_weights,
@@ -161,6 +181,12 @@ pub use patch_list::{
 pub use patch_reduce::{
     cagd_report_patch, cagd_tensorpatch_reduce, cagd_tensorpatch_reduce_to_tolerance,
     cagd_tripatch_reduce, cagd_tripatch_reduce_to_tolerance,
+};
+pub use piece_list::{
+    CAGD_DOMAIN_BILINEAR, CAGD_DOMAIN_DEGENERATE_RECT, CAGD_DOMAIN_RULED, CAGD_DOMAIN_TRIANGLE,
+    CAGD_PIECE_TENSOR, CAGD_PIECE_TRIANGLE, CagdPatchPieceList, cagd_patchpiecelist_count,
+    cagd_patchpiecelist_domain, cagd_patchpiecelist_free, cagd_patchpiecelist_info,
+    cagd_patchpiecelist_points, cagd_patchpiecelist_weights,
 };
 pub use reduce::{cagd_curve_reduce, cagd_curve_reduce_batch};
 pub use reduce_extra::{

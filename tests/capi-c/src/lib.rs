@@ -52,6 +52,10 @@ c_tests![
     curve_new_bad_input,
     curve_accessors_bad_input,
     curve_ops_bad_input,
+    // c/convert_patch.c
+    convert_triangle_to_rectangles,
+    convert_rectangle_splits,
+    convert_bad_input,
     // c/patch.c
     tensorpatch_roundtrip,
     tensorpatch_bad_input,
