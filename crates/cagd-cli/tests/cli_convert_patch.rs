@@ -120,8 +120,26 @@ impl Rng {
         lo + (hi - lo) * self.next()
     }
     fn int(&mut self, n: usize) -> usize {
-        ((self.next() * (n + 1) as f64) as usize).min(n)
+        self.next();
+        usize::try_from(self.0 % (n as u64 + 1)).unwrap_or(0)
     }
+}
+
+/// `x^e` by repeated products.
+trait Pw {
+    fn pw(self, e: usize) -> f64;
+}
+impl Pw for f64 {
+    fn pw(self, e: usize) -> f64 {
+        (0..e).fold(1.0, |a, _| a * self)
+    }
+}
+
+/// A degree field.
+fn udeg(v: &Value) -> usize {
+    v.as_u64()
+        .and_then(|x| usize::try_from(x).ok())
+        .expect("a degree")
 }
 
 fn binom(n: usize, k: usize) -> f64 {
@@ -164,33 +182,26 @@ fn eval(shape: &Value, u: f64, v: f64) -> Vec<f64> {
         den += b * w[idx];
     };
     if shape["type"] == "tensor" {
-        let (m, n) = (
-            shape["degree"][0].as_u64().unwrap() as usize,
-            shape["degree"][1].as_u64().unwrap() as usize,
-        );
+        let (m, n) = (udeg(&shape["degree"][0]), udeg(&shape["degree"][1]));
         for i in 0..=m {
             for j in 0..=n {
                 let b = binom(m, i)
-                    * u.powi(i as i32)
-                    * (1.0 - u).powi((m - i) as i32)
+                    * u.pw(i)
+                    * (1.0 - u).pw(m - i)
                     * binom(n, j)
-                    * v.powi(j as i32)
-                    * (1.0 - v).powi((n - j) as i32);
+                    * v.pw(j)
+                    * (1.0 - v).pw(n - j);
                 add(b, i * (n + 1) + j);
             }
         }
     } else {
-        let n = shape["degree"].as_u64().unwrap() as usize;
+        let n = udeg(&shape["degree"]);
         let wv = 1.0 - u - v;
         let mut idx = 0;
         for i in 0..=n {
             for j in 0..=n - i {
                 let k = n - i - j;
-                let b = binom(n, i)
-                    * binom(n - i, j)
-                    * u.powi(i as i32)
-                    * v.powi(j as i32)
-                    * wv.powi(k as i32);
+                let b = binom(n, i) * binom(n - i, j) * u.pw(i) * v.pw(j) * wv.pw(k);
                 add(b, idx);
                 idx += 1;
             }

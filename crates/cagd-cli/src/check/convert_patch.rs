@@ -42,7 +42,7 @@ fn weights(v: &Vector<'_>, key: &str) -> Result<Option<Vec<f64>>, String> {
 /// The input triangle (the library's refusal becomes `Err(Outcome)`).
 fn triangle(v: &Vector<'_>) -> Result<Result<TriSurface, String>, String> {
     let (pts, dim) = points(v.input("triangle_points")?, "input.triangle_points")?;
-    let count = if dim == 0 { 0 } else { pts.len() / dim };
+    let count = pts.len().checked_div(dim).unwrap_or(0);
     let n = (0..=64).find(|&n| tri_count(n) == count);
     let n = match (n, v.param("n")) {
         (Some(n), None) => n,
@@ -60,7 +60,7 @@ fn triangle(v: &Vector<'_>) -> Result<Result<TriSurface, String>, String> {
 /// The input rectangle.
 fn rect(v: &Vector<'_>) -> Result<Result<TensorSurface, String>, String> {
     let (pts, dim) = points(v.input("rect_points")?, "input.rect_points")?;
-    let count = if dim == 0 { 0 } else { pts.len() / dim };
+    let count = pts.len().checked_div(dim).unwrap_or(0);
     let (m, n) = match (v.param("m"), v.param("n")) {
         (Some(_), Some(_)) => (v.param_usize("m")?, v.param_usize("n")?),
         (None, Some(_)) => {

@@ -118,11 +118,11 @@ pub(crate) fn corner_cut(z: &[Vec<f64>], d: usize, dim: usize, c: &[f64]) -> Vec
         let mut row = vec![0.0; (e + 1) * dim];
         for q in 0..=e {
             let lo = q.saturating_sub(d);
-            for l in lo..=q.min(k) {
+            for (l, &cl) in c.iter().enumerate().take(q.min(k) + 1).skip(lo) {
                 let r = q - l;
                 let coef = cagd_core::binomial_f64(k, l) * cagd_core::binomial_f64(d, r)
                     / cagd_core::binomial_f64(e, q);
-                let (a, b) = ((1.0 - c[l]) * coef, c[l] * coef);
+                let (a, b) = ((1.0 - cl) * coef, cl * coef);
                 for x in 0..dim {
                     row[q * dim + x] += a * z[p][r * dim + x] + b * z[p + 1][r * dim + x];
                 }

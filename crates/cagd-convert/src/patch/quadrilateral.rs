@@ -69,7 +69,7 @@ fn check_quad(x: &[[f64; 2]; 4]) -> Result<()> {
     ];
     for (what, j) in jac {
         // Areas of order eps^2 of the unit triangle are folds for all practical purposes.
-        if !(j > 1e-14) {
+        if j.is_nan() || j <= 1e-14 {
             return Err(Error::DegenerateSplit { what, value: j });
         }
     }

@@ -11,21 +11,21 @@ use crate::patch::{
 
 const FILE: &str = "vectors-convert.json";
 
+/// `params.<key>` as a degree.
+fn deg(v: &cagd_testkit::serde_json::Value, key: &str) -> Option<usize> {
+    v["params"][key].as_u64().and_then(|x| usize::try_from(x).ok())
+}
+
 fn tri(v: &cagd_testkit::serde_json::Value) -> TriSurface {
     let p = &v["input"]["triangle_points"];
-    let n = v["params"]["n"].as_u64().unwrap() as usize;
+    let n = deg(v, "n").unwrap();
     TriSurface::new(flat(p), n, inner_dim(p), None).unwrap()
 }
 
 fn rect(v: &cagd_testkit::serde_json::Value) -> TensorSurface {
     let p = &v["input"]["rect_points"];
-    let (m, n) = match v["params"]["m"].as_u64() {
-        Some(m) => (m as usize, v["params"]["n"].as_u64().unwrap() as usize),
-        None => {
-            let n = v["params"]["n"].as_u64().unwrap() as usize;
-            (n, n)
-        }
-    };
+    let n = deg(v, "n").unwrap();
+    let m = deg(v, "m").unwrap_or(n);
     TensorSurface::new(flat(p), m, n, inner_dim(p), None).unwrap()
 }
 
