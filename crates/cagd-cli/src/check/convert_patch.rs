@@ -75,20 +75,30 @@ fn rect(v: &Vector<'_>) -> Result<Result<TensorSurface, String>, String> {
     Ok(TensorSurface::new(pts, m, n, dim.max(1), weights(v, "rect")?).map_err(|e| e.to_string()))
 }
 
-/// Points (and weights) of a tensor patch as JSON under `key`.
-fn put_tensor(out: &mut Map<String, Value>, key: &str, p: &TensorSurface) {
-    out.insert(key.into(), points_json(p.net().points(), p.dim()));
-    if let Some(w) = p.weights() {
+/// Weights of a rational result under the names a vector may use for them:
+/// `<key>_weights`, `<key without _points>_weights` and, for a single output, `weights`.
+fn put_weights(out: &mut Map<String, Value>, key: &str, w: Option<&[f64]>, single: bool) {
+    if let Some(w) = w {
         out.insert(format!("{key}_weights"), json!(w));
+        if let Some(stem) = key.strip_suffix("_points") {
+            out.insert(format!("{stem}_weights"), json!(w));
+        }
+        if single {
+            out.insert("weights".into(), json!(w));
+        }
     }
 }
 
+/// Points (and weights) of a tensor patch as JSON under `key`.
+fn put_tensor(out: &mut Map<String, Value>, key: &str, p: &TensorSurface) {
+    out.insert(key.into(), points_json(p.net().points(), p.dim()));
+    put_weights(out, key, p.weights(), true);
+}
+
 /// Points (and weights) of a triangular patch as JSON under `key`.
-fn put_tri(out: &mut Map<String, Value>, key: &str, t: &TriSurface) {
+fn put_tri(out: &mut Map<String, Value>, key: &str, t: &TriSurface, single: bool) {
     out.insert(key.into(), points_json(t.net().points(), t.dim()));
-    if let Some(w) = t.weights() {
-        out.insert(format!("{key}_weights"), json!(w));
-    }
+    put_weights(out, key, t.weights(), single);
 }
 
 /// The tensor patch of a piece.
@@ -99,8 +109,9 @@ fn tensor_of(piece: &PatchPiece) -> Result<&TensorSurface, String> {
     }
 }
 
-/// A tensor-piece result under `rect_points` with `degree: [m, n]`.
-fn tensor_outcome(r: cagd_core::Result<PatchPiece>, with_degree: bool) -> Result<Outcome, String> {
+/// A tensor-piece result under `rect_points` with `degree: [m, n]` (an extra key is
+/// harmless: only the keys of `expected` are compared).
+fn tensor_outcome(r: cagd_core::Result<PatchPiece>) -> Result<Outcome, String> {
     let piece = match r {
         Ok(p) => p,
         Err(e) => return Ok(Outcome::Refused(e.to_string())),
@@ -108,10 +119,8 @@ fn tensor_outcome(r: cagd_core::Result<PatchPiece>, with_degree: bool) -> Result
     let p = tensor_of(&piece)?;
     let mut out = Map::new();
     put_tensor(&mut out, "rect_points", p);
-    if with_degree {
-        let (m, n) = p.degrees();
-        out.insert("degree".into(), json!([m, n]));
-    }
+    let (m, n) = p.degrees();
+    out.insert("degree".into(), json!([m, n]));
     Ok(Outcome::Values(Value::Object(out)))
 }
 
@@ -131,7 +140,7 @@ fn run_tri_to_rect(v: &Vector<'_>) -> Result<Outcome, String> {
         Some(_) => v.param_usize("m")?,
         None => t.degree(),
     };
-    tensor_outcome(cagd_convert::triangle_to_degenerate_rect(&t, m), false)
+    tensor_outcome(cagd_convert::triangle_to_degenerate_rect(&t, m))
 }
 
 /// §15.4 inverse (Theorem 15.4.2); an error vector passes on `NotDegenerate`.
@@ -145,7 +154,7 @@ fn run_rect_to_tri(v: &Vector<'_>) -> Result<Outcome, String> {
     match cagd_convert::degenerate_rect_to_triangle(&p, tol) {
         Ok(t) => {
             let mut out = Map::new();
-            put_tri(&mut out, "triangle_points", &t);
+            put_tri(&mut out, "triangle_points", &t, true);
             Ok(Outcome::Values(Value::Object(out)))
         }
         Err(e) => Ok(Outcome::Refused(e.to_string())),
@@ -161,7 +170,7 @@ fn run_rect_d1(v: &Vector<'_>) -> Result<Outcome, String> {
         v.param_f64("c")?,
         v.param_f64("d")?,
     );
-    tensor_outcome(cagd_convert::triangle_to_rect_d1(&t, a, b, c, d), false)
+    tensor_outcome(cagd_convert::triangle_to_rect_d1(&t, a, b, c, d))
 }
 
 /// A parameter-plane point `[u, v]`.
@@ -231,19 +240,21 @@ fn run_three_rects(v: &Vector<'_>) -> Result<Outcome, String> {
 /// §15.6.1 left trapezoid.
 fn run_trapezoid(v: &Vector<'_>) -> Result<Outcome, String> {
     let p = input_or_refuse!(rect(v));
-    tensor_outcome(
-        cagd_convert::trapezoid(&p, v.param_f64("a")?, v.param_f64("b")?),
-        true,
-    )
+    tensor_outcome(cagd_convert::trapezoid(
+        &p,
+        v.param_f64("a")?,
+        v.param_f64("b")?,
+    ))
 }
 
 /// §15.6.2 corner triangle.
 fn run_corner(v: &Vector<'_>) -> Result<Outcome, String> {
     let p = input_or_refuse!(rect(v));
-    tensor_outcome(
-        cagd_convert::corner_triangle(&p, v.param_f64("a")?, v.param_f64("b")?),
-        true,
-    )
+    tensor_outcome(cagd_convert::corner_triangle(
+        &p,
+        v.param_f64("a")?,
+        v.param_f64("b")?,
+    ))
 }
 
 /// §15.6.3 rectangle → two triangles.
@@ -255,8 +266,8 @@ fn run_two_triangles(v: &Vector<'_>) -> Result<Outcome, String> {
     };
     let mut out = Map::new();
     out.insert("degree".into(), json!(lower.degree()));
-    put_tri(&mut out, "lower_triangle", &lower);
-    put_tri(&mut out, "upper_triangle", &upper);
+    put_tri(&mut out, "lower_triangle", &lower, false);
+    put_tri(&mut out, "upper_triangle", &upper, false);
     Ok(Outcome::Values(Value::Object(out)))
 }
 
@@ -280,9 +291,9 @@ fn run_curve(v: &Vector<'_>) -> Result<Outcome, String> {
     match v.param("b") {
         Some(b) => {
             let b = number(b, "params.b")?;
-            tensor_outcome(cagd_convert::curve_split_d7(&p, &a, b), true)
+            tensor_outcome(cagd_convert::curve_split_d7(&p, &a, b))
         }
-        None => tensor_outcome(cagd_convert::curve_split_d5(&p, &a), true),
+        None => tensor_outcome(cagd_convert::curve_split_d5(&p, &a)),
     }
 }
 
@@ -290,8 +301,5 @@ fn run_curve(v: &Vector<'_>) -> Result<Outcome, String> {
 fn run_curve_d7(v: &Vector<'_>) -> Result<Outcome, String> {
     let p = input_or_refuse!(rect(v));
     let a = curve_coeffs(v)?;
-    tensor_outcome(
-        cagd_convert::curve_split_d7(&p, &a, v.param_f64("b")?),
-        true,
-    )
+    tensor_outcome(cagd_convert::curve_split_d7(&p, &a, v.param_f64("b")?))
 }

@@ -13,7 +13,9 @@ const FILE: &str = "vectors-convert.json";
 
 /// `params.<key>` as a degree.
 fn deg(v: &cagd_testkit::serde_json::Value, key: &str) -> Option<usize> {
-    v["params"][key].as_u64().and_then(|x| usize::try_from(x).ok())
+    v["params"][key]
+        .as_u64()
+        .and_then(|x| usize::try_from(x).ok())
 }
 
 fn tri(v: &cagd_testkit::serde_json::Value) -> TriSurface {
