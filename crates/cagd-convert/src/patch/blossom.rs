@@ -106,6 +106,22 @@ pub(crate) fn tri_blossom_table(
         .collect()
 }
 
+/// Binomial coefficients `C(n, k)` for `n <= nmax` as `f64` (from cagd-core's exact table),
+/// row `n` holding `k = 0..=n`: looked up in the inner loops instead of converting `u128`.
+pub(crate) fn pascal(nmax: usize) -> Vec<Vec<f64>> {
+    (0..=nmax)
+        .map(|n| (0..=n).map(|k| cagd_core::binomial_f64(n, k)).collect())
+        .collect()
+}
+
+/// The left part of the degree-`n` curve subdivided at `t`: point `j` is the blossom
+/// `b(0^(n - j), t^j)`.
+pub(crate) fn left_part(points: &[f64], dim: usize, t: f64) -> Vec<f64> {
+    let (mut left, mut right) = (vec![0.0; points.len()], vec![0.0; points.len()]);
+    cagd_core::kernel::subdivide(points, dim, t, &mut left, &mut right);
+    left
+}
+
 /// Multiplies the degree-`d` Bernstein rows of `z` by the degree-`k` Bernstein
 /// function `c` in the corner-cutting step of SPEC-convert §15.7 ("recommended
 /// algorithm"): row `p` becomes `sum_l B^k_l(t) ((1 - c_l) z_p + c_l z_{p+1})`, degree
@@ -113,6 +129,7 @@ pub(crate) fn tri_blossom_table(
 pub(crate) fn corner_cut(z: &[Vec<f64>], d: usize, dim: usize, c: &[f64]) -> Vec<Vec<f64>> {
     let k = c.len() - 1;
     let e = d + k;
+    let binom = pascal(e);
     let mut out = Vec::with_capacity(z.len().saturating_sub(1));
     for p in 0..z.len().saturating_sub(1) {
         let mut row = vec![0.0; (e + 1) * dim];
@@ -120,8 +137,7 @@ pub(crate) fn corner_cut(z: &[Vec<f64>], d: usize, dim: usize, c: &[f64]) -> Vec
             let lo = q.saturating_sub(d);
             for (l, &cl) in c.iter().enumerate().take(q.min(k) + 1).skip(lo) {
                 let r = q - l;
-                let coef = cagd_core::binomial_f64(k, l) * cagd_core::binomial_f64(d, r)
-                    / cagd_core::binomial_f64(e, q);
+                let coef = binom[k][l] * binom[d][r] / binom[e][q];
                 let (a, b) = ((1.0 - cl) * coef, cl * coef);
                 for x in 0..dim {
                     row[q * dim + x] += a * z[p][r * dim + x] + b * z[p + 1][r * dim + x];

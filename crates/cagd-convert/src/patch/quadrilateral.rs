@@ -2,9 +2,9 @@
 //! (SPEC-convert §15.5, the general quadrilateral form; eqs. 15.5.1–15.5.3 with the
 //! erratum `k + l = j`).
 
-use cagd_core::{Error, Result, TensorPatch, binomial_f64};
+use cagd_core::{Error, Result, TensorPatch};
 
-use super::blossom::tri_blossom_table;
+use super::blossom::{pascal, tri_blossom_table};
 use super::surface::check_range;
 use super::{PatchPiece, PatchSurface, PieceDomain, TensorSurface, TriSurface};
 
@@ -92,13 +92,14 @@ pub fn triangle_to_quad(t: &TriSurface, corners: [[f64; 2]; 4]) -> Result<PatchP
     let (n, dim) = (h.degree(), h.dim());
     let [x00, x10, x01, x11] = corners;
     let table = tri_blossom_table(h.points(), n, dim, [x11, x10, x01, x00]);
+    let binom = pascal(n);
     let mut pts = vec![0.0; (n + 1) * (n + 1) * dim];
     for i in 0..=n {
         for j in 0..=n {
             let o = (i * (n + 1) + j) * dim;
-            let cj = binomial_f64(n, j);
+            let cj = binom[n][j];
             for k in (j + i).saturating_sub(n)..=i.min(j) {
-                let c = binomial_f64(i, k) * binomial_f64(n - i, j - k) / cj;
+                let c = binom[i][k] * binom[n - i][j - k] / cj;
                 let b = &table[k][i - k][j - k];
                 for x in 0..dim {
                     pts[o + x] += c * b[x];

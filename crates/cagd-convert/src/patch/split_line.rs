@@ -2,27 +2,29 @@
 //! (SPEC-convert §15.6.1 two trapezoids, §15.6.2 corner triangle + pentagon; the errata
 //! `k + l = j` and `i = 0..m` applied).
 
-use cagd_core::{Error, Result, TensorPatch, binomial_f64};
+use cagd_core::{Error, Result, TensorPatch};
 
-use super::blossom::{curve_blossom, elevate_to};
+use super::blossom::{elevate_to, left_part, pascal};
 use super::surface::check_range;
 use super::{PatchPiece, PatchSurface, PieceDomain, TensorSurface};
 
-/// `H_i` of eq. 15.6.3 / 15.6.7 from the `Q^{(i)}_{kl}` table given by `q(i, k, l)`,
-/// elevated to degree `m + n` (eq. 15.6.2): the net of the `m x (m + n)` result.
-fn assemble(
+/// `H_i` of eq. 15.6.3 / 15.6.7 from the `Q^{(i)}_{kl}` table given by `q(i, k, l)`
+/// (`dim` doubles), elevated to degree `m + n` (eq. 15.6.2): the net of the `m x (m + n)`
+/// result.
+fn assemble<'a>(
     m: usize,
     n: usize,
     dim: usize,
-    q: impl Fn(usize, usize, usize) -> Vec<f64>,
+    q: impl Fn(usize, usize, usize) -> &'a [f64],
 ) -> Vec<f64> {
+    let binom = pascal(m + n);
     let mut pts = Vec::with_capacity((m + 1) * (m + n + 1) * dim);
     for i in 0..=m {
         let mut h = vec![0.0; (n + i + 1) * dim];
         for k in 0..=i {
             for l in 0..=n {
                 let j = k + l;
-                let c = binomial_f64(i, k) * binomial_f64(n, l) / binomial_f64(n + i, j);
+                let c = binom[i][k] * binom[n][l] / binom[n + i][j];
                 let v = q(i, k, l);
                 for x in 0..dim {
                     h[j * dim + x] += c * v[x];
@@ -40,38 +42,58 @@ fn column(h: &TensorPatch, l: usize) -> Vec<f64> {
     (0..=m).flat_map(|i| h.point(i, l).to_vec()).collect()
 }
 
-/// `u`-blossom arguments `(x^(p), y^(q), 0^(rest))` for degree `m`.
-fn args(m: usize, x: f64, p: usize, y: f64, q: usize) -> Vec<f64> {
-    let mut a = vec![0.0; m];
-    a[..p].fill(x);
-    a[p..p + q].fill(y);
-    a
-}
-
 /// Net of the left trapezoid (15.6.1) of the homogeneous net `h`.
+///
+/// `Q^{(i)}_{kl}` is the `u`-blossom of column `l` at `(a^(i-k), b^k, 0^(m-i))` (15.6.4):
+/// level `p` of the de Casteljau pyramid of the column at `a` is the net `b(a^p, ·)`, and
+/// point `k` of its left part at `b` is `b(a^p, 0^(m-p-k), b^k)`; `table[l][p]` holds them.
 fn trapezoid_net(h: &TensorPatch, a: f64, b: f64) -> TensorPatch {
     let ((m, n), dim) = (h.degrees(), h.dim());
-    let cols: Vec<Vec<f64>> = (0..=n).map(|l| column(h, l)).collect();
-    // Q^{(i)}_{kl} = u-blossom of column l at (a^(i-k), b^k, 0^(m-i)) (15.6.4).
+    let table: Vec<Vec<Vec<f64>>> = (0..=n)
+        .map(|l| {
+            let mut level = column(h, l);
+            let mut rows = Vec::with_capacity(m + 1);
+            for p in 0..=m {
+                if p > 0 {
+                    let d = m - p + 1; // points of the level after this step
+                    for i in 0..d {
+                        for x in 0..dim {
+                            level[i * dim + x] =
+                                (1.0 - a) * level[i * dim + x] + a * level[(i + 1) * dim + x];
+                        }
+                    }
+                    level.truncate(d * dim);
+                }
+                rows.push(left_part(&level, dim, b));
+            }
+            rows
+        })
+        .collect();
     let pts = assemble(m, n, dim, |i, k, l| {
-        curve_blossom(&cols[l], dim, &args(m, a, i - k, b, k))
+        &table[l][i - k][k * dim..(k + 1) * dim]
     });
     TensorPatch::new(pts, m, m + n, dim).unwrap_or_else(|_| h.clone())
 }
 
 /// Net of the corner triangle (15.6.2) of the homogeneous net `h`.
+///
+/// `Q^{(i)}_{kl}` has `u`-arguments `(a^(i-k), 0^(m-i+k))` and `v`-arguments
+/// `(b^l, 0^(n-l))` (15.6.8): the blossoms `b(0^(m-p), a^p)` and `b(0^(n-l), b^l)` are the
+/// points of the left parts of the columns at `u = a` and of the rows at `v = b`, i.e. the
+/// net of the sub-patch `[0, a] x [0, b]`.
 fn corner_net(h: &TensorPatch, a: f64, b: f64) -> TensorPatch {
     let ((m, n), dim) = (h.degrees(), h.dim());
-    let cols: Vec<Vec<f64>> = (0..=n).map(|l| column(h, l)).collect();
-    // Q^{(i)}_{kl}: u-args (a^(i-k), 0^(m-i+k)), v-args (b^l, 0^(n-l)) (15.6.8).
-    let pts = assemble(m, n, dim, |i, k, l| {
-        let ua = args(m, a, i - k, 0.0, 0);
-        let row: Vec<f64> = cols
-            .iter()
-            .flat_map(|c| curve_blossom(c, dim, &ua))
-            .collect();
-        curve_blossom(&row, dim, &args(n, b, l, 0.0, 0))
-    });
+    let cols: Vec<Vec<f64>> = (0..=n).map(|l| left_part(&column(h, l), dim, a)).collect();
+    let table: Vec<Vec<f64>> = (0..=m)
+        .map(|p| {
+            let row: Vec<f64> = cols
+                .iter()
+                .flat_map(|c| c[p * dim..(p + 1) * dim].to_vec())
+                .collect();
+            left_part(&row, dim, b)
+        })
+        .collect();
+    let pts = assemble(m, n, dim, |i, k, l| &table[i - k][l * dim..(l + 1) * dim]);
     TensorPatch::new(pts, m, m + n, dim).unwrap_or_else(|_| h.clone())
 }
 

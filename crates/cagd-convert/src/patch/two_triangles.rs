@@ -1,6 +1,8 @@
 //! Rectangle → two triangles of degree `m + n` (SPEC-convert §15.6.3).
 
-use cagd_core::{Result, TensorPatch, TriPatch, binomial_f64, tri_count, tri_index};
+use cagd_core::{Result, TensorPatch, TriPatch, tri_count, tri_index};
+
+use super::blossom::pascal;
 
 use super::{PatchPiece, PatchSurface, PieceDomain, TensorSurface, TriSurface};
 
@@ -20,7 +22,8 @@ use super::{PatchPiece, PatchSurface, PieceDomain, TensorSurface, TriSurface};
 fn lower_net(h: &TensorPatch) -> Vec<f64> {
     let ((m, n), dim) = (h.degrees(), h.dim());
     let big_n = m + n;
-    let denom = binomial_f64(big_n, m);
+    let binom = pascal(big_n);
+    let denom = binom[big_n][m];
     let mut out = vec![0.0; tri_count(big_n) * dim];
     for i in 0..=big_n {
         for j in 0..=big_n - i {
@@ -32,8 +35,7 @@ fn lower_net(h: &TensorPatch) -> Vec<f64> {
                     if gamma > k || j - beta > n {
                         continue;
                     }
-                    let c = binomial_f64(i, alpha) * binomial_f64(j, beta) * binomial_f64(k, gamma)
-                        / denom;
+                    let c = binom[i][alpha] * binom[j][beta] * binom[k][gamma] / denom;
                     let src = h.point(alpha, j - beta);
                     for x in 0..dim {
                         out[o + x] += c * src[x];
