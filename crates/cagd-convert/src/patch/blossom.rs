@@ -125,11 +125,17 @@ pub(crate) fn left_part(points: &[f64], dim: usize, t: f64) -> Vec<f64> {
 /// Multiplies the degree-`d` Bernstein rows of `z` by the degree-`k` Bernstein
 /// function `c` in the corner-cutting step of SPEC-convert §15.7 ("recommended
 /// algorithm"): row `p` becomes `sum_l B^k_l(t) ((1 - c_l) z_p + c_l z_{p+1})`, degree
-/// `d + k`; one row fewer. Coefficients `C(k,l) C(d,r) / C(k+d,l+r) >= 0`.
-pub(crate) fn corner_cut(z: &[Vec<f64>], d: usize, dim: usize, c: &[f64]) -> Vec<Vec<f64>> {
+/// `d + k`; one row fewer. Coefficients `C(k,l) C(d,r) / C(k+d,l+r) >= 0`, read from
+/// `binom` (a [`pascal`] table up to `d + k` at least).
+pub(crate) fn corner_cut(
+    z: &[Vec<f64>],
+    d: usize,
+    dim: usize,
+    c: &[f64],
+    binom: &[Vec<f64>],
+) -> Vec<Vec<f64>> {
     let k = c.len() - 1;
     let e = d + k;
-    let binom = pascal(e);
     let mut out = Vec::with_capacity(z.len().saturating_sub(1));
     for p in 0..z.len().saturating_sub(1) {
         let mut row = vec![0.0; (e + 1) * dim];

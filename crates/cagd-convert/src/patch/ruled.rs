@@ -5,7 +5,7 @@
 
 use cagd_core::{Error, Result, TensorPatch};
 
-use super::blossom::{corner_cut, curve_restrict, elevate_to};
+use super::blossom::{corner_cut, curve_restrict, elevate_to, pascal};
 use super::{PatchPiece, PatchSurface, PieceDomain, TensorSurface};
 
 /// The exact sub-patch `Q(s, t) = P((1 - s) lo(t) + s hi(t), v0 + t (v1 - v0))` of the
@@ -30,16 +30,19 @@ pub(crate) fn ruled_net(h: &TensorPatch, lo: &[f64], hi: &[f64], v0: f64, v1: f6
             }
         })
         .collect();
+    let binom = pascal(n + m * (kl + kh));
     let mut pts = Vec::with_capacity((m + 1) * (out_n + 1) * dim);
+    // One sweep of hi-cuts: after i of them, `with_hi` holds b(hi^i, ·) (m + 1 - i rows,
+    // degree n + i kh); row i of the result then takes m - i lo-cuts of it.
+    let mut with_hi = rows;
     for i in 0..=m {
-        let mut z = rows.clone();
-        let mut d = n;
-        for _ in 0..i {
-            z = corner_cut(&z, d, dim, hi);
-            d += kh;
+        if i > 0 {
+            with_hi = corner_cut(&with_hi, n + (i - 1) * kh, dim, hi, &binom);
         }
+        let mut z = with_hi.clone();
+        let mut d = n + i * kh;
         for _ in i..m {
-            z = corner_cut(&z, d, dim, lo);
+            z = corner_cut(&z, d, dim, lo, &binom);
             d += kl;
         }
         pts.extend(elevate_to(&z[0], dim, out_n));
