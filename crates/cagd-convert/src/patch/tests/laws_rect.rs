@@ -54,6 +54,19 @@ proptest! {
         assert_tiles(&pieces, false);
     }
 
+    /// §15.7 D7: the curved triangle `u = s f(t)`, `v = b t` for random `f` and `b`.
+    #[test]
+    fn curve_triangle_d7_is_exact(
+        p in any_rect(0..=8, 0..=8),
+        a in proptest::collection::vec(0.0f64..1.0, 1..=4),
+        b in 0.05f64..1.0,
+    ) {
+        let mut a = a;
+        *a.last_mut().unwrap() = 0.0; // the curve meets u = 0 at v = b
+        let piece = curve_split_d7(&p, &a, b).unwrap();
+        assert_exact(&PatchSurface::Tensor(p), &[piece], EXACT);
+    }
+
     /// Independent routes: the 15.6.3 blossom formula of the trapezoid equals the corner
     /// cutting of §15.7 with k = 1, and the 15.6.2 corner triangle equals D7 with
     /// a = (a, 0).
