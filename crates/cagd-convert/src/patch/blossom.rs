@@ -69,12 +69,27 @@ pub(crate) fn tri_pyramid(net: &[f64], n: usize, dim: usize, p: [f64; 2]) -> Vec
     levels
 }
 
-/// Value of a degree-`n` net at the domain point `p` (the blossom `b(p^n)`).
+/// Value of a degree-`n` net at the domain point `p` (the blossom `b(p^n)`), by de
+/// Casteljau in place: level `d - 1` entry `(i, j)` is written at its own index, which is
+/// never above the indices of the three level-`d` entries a later `(i, j)` still reads.
 pub(crate) fn tri_value(net: &[f64], n: usize, dim: usize, p: [f64; 2]) -> Vec<f64> {
+    let (u, v) = (p[0], p[1]);
+    let w = 1.0 - u - v;
     let mut cur = net.to_vec();
     for d in (1..=n).rev() {
-        cur = tri_step(&cur, d, dim, p);
+        for i in 0..d {
+            for j in 0..d - i {
+                let o = tri_index(d - 1, i, j) * dim;
+                let a = tri_index(d, i + 1, j) * dim;
+                let b = tri_index(d, i, j + 1) * dim;
+                let c = tri_index(d, i, j) * dim;
+                for k in 0..dim {
+                    cur[o + k] = u * cur[a + k] + v * cur[b + k] + w * cur[c + k];
+                }
+            }
+        }
     }
+    cur.truncate(dim);
     cur
 }
 
