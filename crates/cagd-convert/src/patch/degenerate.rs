@@ -18,6 +18,19 @@ pub(crate) const DEGENERATE_DOMAIN: [[f64; 2]; 4] =
 ///
 /// # Errors
 /// [`Error::BadDegreePair`] when `m < n`, [`Error::DegreeOutOfRange`] when `m > 64`.
+///
+/// ```
+/// use cagd_convert::{PatchSurface, TriSurface, degenerate_rect_to_triangle, triangle_to_degenerate_rect};
+/// // T(u, v) = u + 2 v (degree 1), as a degenerate 1 x 1 rectangle and back.
+/// let t = TriSurface::new(vec![0.0, 2.0, 1.0], 1, 1, None)?;
+/// let piece = triangle_to_degenerate_rect(&t, 1)?;
+/// let PatchSurface::Tensor(r) = &piece.surface else { unreachable!() };
+/// assert_eq!(r.net().points(), &[0.0, 2.0, 1.0, 1.0]); // P(s, t) = T(s, (1 - s) t)
+/// let [u, v] = piece.domain.map(0.5, 0.5);
+/// assert!((r.eval(0.5, 0.5)[0] - t.eval(u, v)[0]).abs() < 1e-15);
+/// assert_eq!(degenerate_rect_to_triangle(r, 1e-12)?, t);
+/// # Ok::<(), cagd_core::Error>(())
+/// ```
 pub fn triangle_to_degenerate_rect(t: &TriSurface, m: usize) -> Result<PatchPiece> {
     let n = t.degree();
     if m < n {

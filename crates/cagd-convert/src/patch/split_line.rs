@@ -287,6 +287,19 @@ fn corner_and_pentagon(
 /// # Errors
 /// [`Error::BadParameter`] when `f1` or `f0` is not finite or the line does not cut the
 /// open square into two parts.
+///
+/// ```
+/// use cagd_convert::{TensorSurface, split_along_line};
+/// // A bilinear patch cut by u = 0.5 v + 0.25 into two trapezoids.
+/// let p = TensorSurface::new(vec![0.0, 1.0, 2.0, 4.0], 1, 1, 1, None)?;
+/// let pieces = split_along_line(&p, 0.5, 0.25)?;
+/// assert_eq!(pieces.len(), 2);
+/// for piece in &pieces {
+///     let [u, v] = piece.domain.map(0.3, 0.7);
+///     assert!((piece.surface.eval(0.3, 0.7)[0] - p.eval(u, v)[0]).abs() < 1e-14);
+/// }
+/// # Ok::<(), cagd_core::Error>(())
+/// ```
 pub fn split_along_line(p: &TensorSurface, f1: f64, f0: f64) -> Result<Vec<PatchPiece>> {
     let (a, b) = (f0, f0 + f1);
     for (name, x) in [("f1", f1), ("f0", f0)] {
