@@ -7,12 +7,17 @@ use std::sync::{Arc, Mutex, OnceLock};
 
 use nalgebra::DMatrix;
 
-use crate::basis_ball::{check_wsgb, wsgb_max_l, wsgb_to_bernstein};
-use crate::basis_closed::{
+mod ball;
+mod closed;
+
+pub use ball::{BallTerm, wsgb_max_l, wsgb_terms};
+
+use crate::{Error, ExactMatrix, Result, check_degree, check_points};
+use ball::{check_wsgb, wsgb_to_bernstein};
+use closed::{
     chebyshev_from_bernstein, chebyshev_to_bernstein, legendre_from_bernstein,
     legendre_to_bernstein, power_from_bernstein, power_to_bernstein,
 };
-use crate::{Error, ExactMatrix, Result, check_degree, check_points};
 
 /// A polynomial basis of degree `n` on `[0, 1]` other than Bernstein, for the basis-change
 /// matrices [`to_bernstein`], [`from_bernstein`] and their `_exact` forms.
@@ -258,13 +263,4 @@ pub fn convert_points(m: &DMatrix<f64>, points: &[f64], dim: usize) -> Result<Ve
 }
 
 #[cfg(test)]
-#[path = "basis_tests.rs"]
 mod tests;
-
-#[cfg(test)]
-#[path = "basis_tests_f64.rs"]
-mod tests_f64;
-
-#[cfg(test)]
-#[path = "basis_tests_spec.rs"]
-mod tests_spec;

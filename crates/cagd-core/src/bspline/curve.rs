@@ -6,7 +6,7 @@
 //! stored as Euclidean points plus weights (DESIGN.md); algorithms work on the homogeneous
 //! points `(w_i P_i, w_i)`.
 
-use crate::knots::check_knots;
+use super::knots::check_knots;
 use crate::validate::{check_points, check_weights};
 use crate::{Result, kernel};
 

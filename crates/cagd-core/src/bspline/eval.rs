@@ -1,8 +1,8 @@
 //! Evaluation and derivatives of [`BSplineCurve`] by de Boor's algorithm (Piegl & Tiller,
 //! "The NURBS Book", §2.5 / §3.3; rational curves in homogeneous space, §4.2).
 
+use super::knots::find_span;
 use crate::binomial::{MAX_BINOMIAL_N, binomial_f64};
-use crate::knots::find_span;
 use crate::validate::check_finite_param;
 use crate::{BSplineCurve, Error, Result};
 

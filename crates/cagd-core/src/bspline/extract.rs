@@ -6,7 +6,7 @@
 //! interior knot up to multiplicity `p` produces). Each is a de Boor triangle of convex
 //! combinations, so the points carry a relative error of a few `p` ulp.
 
-use crate::bspline_eval::blossom;
+use super::eval::blossom;
 use crate::validate::check_points;
 use crate::{BSplineCurve, BezierCurve, Result, kernel};
 
@@ -99,7 +99,7 @@ impl BSplineCurve {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::knot_insert::tests::curve_strategy;
+    use crate::bspline::insert::tests::curve_strategy;
     use proptest::prelude::*;
 
     proptest! {

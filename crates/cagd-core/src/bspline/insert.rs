@@ -3,7 +3,7 @@
 //! space, so the weights are refined too (and stay positive: every new point is a convex
 //! combination of two old ones).
 
-use crate::knots::knot_multiplicity;
+use super::knots::knot_multiplicity;
 use crate::validate::check_finite_param;
 use crate::{BSplineCurve, Error, Result};
 

@@ -158,7 +158,7 @@ impl BSplineCurve {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::knot_insert::tests::assert_same_curve;
+    use crate::bspline::insert::tests::assert_same_curve;
 
     #[test]
     fn vector_001_exact_merge_c0() {

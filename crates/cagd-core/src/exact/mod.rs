@@ -366,5 +366,4 @@ fn remove_content(row: &mut [BigInt]) {
 }
 
 #[cfg(test)]
-#[path = "exact_tests.rs"]
 mod tests;

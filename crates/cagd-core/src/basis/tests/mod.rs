@@ -4,6 +4,9 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 
+mod rounding;
+mod spec;
+
 /// Degrees used by the exact checks (a spread up to MAX_DEGREE, built once each).
 const DEGREES: [usize; 16] = [0, 1, 2, 3, 4, 5, 6, 7, 8, 11, 16, 21, 32, 47, 63, 64];
 

@@ -1,6 +1,6 @@
 //! f64 round trips (measured limits and an a-priori bound) and proptest laws.
 
-use super::*;
+use super::super::*;
 use crate::{MAX_DEGREE, kernel, wsgb_terms};
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -110,7 +110,7 @@ fn round_trip_within_condition_bound() {
 fn all_bases_f64(n: usize) -> Vec<Basis> {
     let mut v = vec![Basis::Power, Basis::Chebyshev, Basis::Legendre];
     v.extend(
-        tests::sample_orders(n)
+        super::sample_orders(n)
             .into_iter()
             .map(|l| Basis::Wsgb { l }),
     );

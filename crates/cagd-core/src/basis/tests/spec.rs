@@ -1,6 +1,6 @@
 //! Checks against the spec vectors (vectors-reduce.json).
 
-use super::*;
+use super::super::*;
 use crate::wsgb_terms;
 use num_bigint::BigInt;
 use num_rational::BigRational;

@@ -27,8 +27,8 @@
 //! the single removals (triangle inequality) and never exceeds the caller's tolerance.
 //!
 
-use crate::knot_insert::insert_once;
-use crate::knots::knot_multiplicity;
+use super::insert::insert_once;
+use super::knots::knot_multiplicity;
 use crate::validate::{check_finite_param, check_tolerance};
 use crate::{BSplineCurve, Error, Result};
 
@@ -374,5 +374,4 @@ impl BSplineCurve {
 }
 
 #[cfg(test)]
-#[path = "knot_removal_tests.rs"]
 mod tests;

@@ -1,7 +1,7 @@
 //! Tests of knot removal: exact recovery of inserted knots and bounds checked by sampling.
 
 use super::*;
-use crate::knot_insert::tests::curve_strategy;
+use crate::bspline::insert::tests::curve_strategy;
 use proptest::prelude::*;
 
 /// Sampled `max_t ||a(t) - b(t)||_2` on 2001 parameters of the domain.

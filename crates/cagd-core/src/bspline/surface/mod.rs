@@ -7,10 +7,10 @@
 //! a curve in `u` whose "points" have `n_v * (dim + 1)` coordinates, and each row is a curve
 //! in `v`.
 
-use crate::bezier_extract::extract_work;
-use crate::bspline_eval::{blossom, eval_work};
-use crate::knot_insert::insert_once;
-use crate::knots::{check_knots, find_span, knot_multiplicity};
+use super::eval::{blossom, eval_work};
+use super::extract::extract_work;
+use super::insert::insert_once;
+use super::knots::{check_knots, find_span, knot_multiplicity};
 use crate::validate::{check_finite_param, check_points, check_weights};
 use crate::{Error, Result, TensorPatch, kernel};
 
@@ -366,5 +366,4 @@ impl BSplineSurface {
 }
 
 #[cfg(test)]
-#[path = "bspline_surface_tests.rs"]
 mod tests;

@@ -289,5 +289,4 @@ fn difference_curve(a: &BezierCurve, b: &BezierCurve) -> BezierCurve {
 }
 
 #[cfg(test)]
-#[path = "distance_tests.rs"]
 mod tests;

@@ -9,7 +9,7 @@
 //! search (steps along `±u`, `±v`, `±(u - v)`, `±(u + v)`, halved when no step improves,
 //! points outside the domain rejected) down to a step of `1e-10`. The result is never below the sampled maximum.
 
-use crate::distance::max_distance_1d;
+use super::curve::max_distance_1d;
 use crate::{Error, Result, TensorPatch, TriPatch};
 
 /// Smallest step of the pattern search: the value error at a smooth maximum is quadratic in
@@ -288,5 +288,4 @@ pub fn tri_patch_distance(a: &TriPatch, b: &TriPatch) -> Result<f64> {
 }
 
 #[cfg(test)]
-#[path = "distance_2d_tests.rs"]
 mod tests;

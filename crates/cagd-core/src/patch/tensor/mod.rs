@@ -2,6 +2,10 @@
 //! `P(u, v) = sum_i sum_j B_i^m(u) B_j^n(v) P_ij`, stored i-major (`P_ij` at `i * (n + 1) + j`,
 //! `i` along `u`), DESIGN.md.
 
+mod ops;
+#[cfg(test)]
+mod tests;
+
 use crate::binomial::check_degree;
 use crate::validate::check_points;
 use crate::{Error, Result};

@@ -258,7 +258,3 @@ impl TensorPatch {
         (f, g)
     }
 }
-
-#[cfg(test)]
-#[path = "tensor_ops_tests.rs"]
-mod tests;

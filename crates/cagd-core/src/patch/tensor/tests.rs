@@ -1,5 +1,5 @@
 use super::*;
-use crate::binomial::binomial_f64;
+use crate::binomial::{binomial_f64, sign_binomial_f64};
 use cagd_testkit::{assert_close, flat, vector};
 use proptest::prelude::*;
 

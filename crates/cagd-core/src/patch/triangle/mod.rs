@@ -3,6 +3,9 @@
 //! on the domain `u, v >= 0, u + v <= 1` (seed 002 §15.4, seed 000 §14.1). Stored i-major:
 //! for `i` in `0..=n`, for `j` in `0..=n-i` (DESIGN.md).
 
+mod ops;
+mod subdivide;
+
 use crate::binomial::check_degree;
 use crate::validate::check_points;
 use crate::{Error, Result};
@@ -83,20 +86,4 @@ impl TriPatch {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn index_is_i_major() {
-        for n in 0..8 {
-            let mut k = 0;
-            for i in 0..=n {
-                for j in 0..=n - i {
-                    assert_eq!(tri_index(n, i, j), k);
-                    k += 1;
-                }
-            }
-            assert_eq!(k, tri_count(n));
-        }
-    }
-}
+mod tests;

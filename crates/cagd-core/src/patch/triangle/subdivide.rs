@@ -7,7 +7,7 @@
 //! blossom values `T'_ab = b(A^a, B^b, C^(n-a-b))`, computed by nested triangular
 //! de Casteljau pyramids (all convex combinations when the triangle lies in the domain).
 
-use crate::tri_ops::{tri_eval, tri_pyramid};
+use super::ops::{tri_eval, tri_pyramid};
 use crate::validate::check_finite_param;
 use crate::{Error, Result, TriPatch, tri_count, tri_index};
 
@@ -147,7 +147,3 @@ impl TriPatch {
         ]
     }
 }
-
-#[cfg(test)]
-#[path = "tri_tests.rs"]
-mod tests;

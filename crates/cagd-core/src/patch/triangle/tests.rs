@@ -1,4 +1,4 @@
-//! Tests of tri_ops.rs and tri_subdivide.rs.
+//! Tests of triangular patches: indexing, operations (ops.rs) and subdivision (subdivide.rs).
 
 use crate::binomial::binomial_f64;
 use crate::{Error, TriPatch, tri_count, tri_index};
@@ -264,4 +264,18 @@ fn layout_helpers_agree() {
     assert!((p1.point(0, 4)[0] - tp).abs() < 1e-16);
     assert!((p2.point(0, 0)[0] - tp).abs() < 1e-16);
     assert_eq!(tri_index(4, 4, 0), tri_count(4) - 1);
+}
+
+#[test]
+fn index_is_i_major() {
+    for n in 0..8 {
+        let mut k = 0;
+        for i in 0..=n {
+            for j in 0..=n - i {
+                assert_eq!(tri_index(n, i, j), k);
+                k += 1;
+            }
+        }
+        assert_eq!(k, tri_count(n));
+    }
 }
