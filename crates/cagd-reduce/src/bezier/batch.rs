@@ -3,7 +3,7 @@
 
 use cagd_core::{Error, Result};
 
-use crate::operator::Operator;
+use super::operator::Operator;
 
 /// Applies `op` (degree `n -> m`) to every curve of `input` and writes the reduced curves
 /// to `output`.

@@ -3,9 +3,9 @@
 
 use cagd_core::{BezierCurve, Result, check_tolerance};
 
-use crate::method::Method;
-use crate::operator::operator;
-use crate::reduce::{Reduction, reduce};
+use super::method::Method;
+use super::operator::operator;
+use super::reduce::{Reduction, reduce};
 
 /// Default relative tolerance of [`exact_degree`].
 ///
@@ -71,7 +71,7 @@ pub fn reduce_exact(curve: &BezierCurve) -> Result<Reduction> {
     if k >= n {
         return Ok(Reduction {
             curve: curve.clone(),
-            report: crate::reduce::Report {
+            report: super::reduce::Report {
                 method: Method::GeneralizedInverse,
                 degree_from: n,
                 degree_to: n,

@@ -3,9 +3,9 @@
 
 use cagd_core::{BezierCurve, Error, Result, binomial, sign_binomial_f64};
 
-use crate::method::Method;
-use crate::operator::hull_bound;
-use crate::reduce::{ReduceOptions, Reduction, finish};
+use super::method::Method;
+use super::operator::hull_bound;
+use super::reduce::{ReduceOptions, Reduction, finish};
 
 /// Reduces `curve` (degree `n >= 4`) to degree `n - 1` keeping both end points and the end
 /// tangent directions (G1), with `l1, l2` chosen to minimise the same objective as the

@@ -2,9 +2,9 @@
 
 use cagd_core::{BezierCurve, Error, Result};
 
-use crate::measure::max_deviation;
-use crate::method::Method;
-use crate::operator::operator;
+use super::measure::max_deviation;
+use super::method::Method;
+use super::operator::operator;
 
 /// The space an error number refers to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

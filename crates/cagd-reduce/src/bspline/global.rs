@@ -11,12 +11,10 @@
 
 use cagd_core::{BSplineCurve, Error, Result, knot_multiplicity};
 
-use crate::bspline_fit::{Source, SpanBound, fit, span_bounds};
-use crate::bspline_knots::{LocalBounds, Raw};
-use crate::bspline_measure::spline_max_deviation;
-use crate::bspline_reduce::{
-    BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy, order_at,
-};
+use super::fit::{Source, SpanBound, fit, span_bounds};
+use super::knots::{LocalBounds, Raw};
+use super::measure::spline_max_deviation;
+use super::reduce::{BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy, order_at};
 
 /// Share of the tolerance the fit must meet on every span; the rest is for knot removal.
 /// The share matters only for spans near the budget (refined ones); measured on the

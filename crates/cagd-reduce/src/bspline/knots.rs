@@ -5,8 +5,8 @@
 
 use cagd_core::{BSplineCurve, BezierCurve, Result, knot_multiplicity};
 
-use crate::bspline_measure::euclidean_from_homogeneous;
-use crate::operator::max_norm;
+use super::measure::euclidean_from_homogeneous;
+use crate::bezier::max_norm;
 
 /// Passes of the greedy knot removal (a later pass rarely removes more than a few knots).
 const MAX_PASSES: usize = 3;

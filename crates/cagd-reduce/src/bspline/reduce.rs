@@ -5,7 +5,7 @@
 
 use cagd_core::{BSplineCurve, Error, Result, check_tolerance, knot_multiplicity};
 
-use crate::method::Method;
+use crate::Method;
 
 /// How [`reduce_bspline`] builds the degree-`m` spline before knot removal.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -203,7 +203,7 @@ pub fn reduce_bspline(curve: &BSplineCurve, opts: &BSplineOptions) -> Result<BSp
         ..*opts
     };
     match opts.strategy {
-        BSplineStrategy::GlobalFit => crate::bspline_global::reduce_global(curve, &opts),
+        BSplineStrategy::GlobalFit => super::global::reduce_global(curve, &opts),
         BSplineStrategy::PieglTiller1995 => {
             crate::reduce_bspline_piegl_tiller(curve, m, opts.tolerance, opts.measure)
         }
@@ -218,11 +218,7 @@ pub fn reduce_bspline(curve: &BSplineCurve, opts: &BSplineOptions) -> Result<BSp
                     why: "segment reduction needs ConstrainedChebyshev or L2 (end orders set per knot)",
                 });
             }
-            crate::bspline_segments::reduce_segments(curve, &opts, method)
+            super::segments::reduce_segments(curve, &opts, method)
         }
     }
 }
-
-#[cfg(test)]
-#[path = "bspline_reduce_tests.rs"]
-mod tests;

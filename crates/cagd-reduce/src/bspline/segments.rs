@@ -7,12 +7,9 @@
 
 use cagd_core::{BSplineCurve, BezierCurve, Error, Result, knot_multiplicity};
 
-use crate::bspline_measure::spline_max_deviation;
-use crate::bspline_reduce::{
-    BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy, order_at,
-};
-use crate::method::Method;
-use crate::reduce::{ReduceOptions, reduce_with};
+use super::measure::spline_max_deviation;
+use super::reduce::{BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy, order_at};
+use crate::{Method, ReduceOptions, reduce_with};
 
 /// Share of the tolerance given to the per-segment reduction; the rest (per span: the
 /// tolerance minus that span's reduction bound) is for knot removal. Measured on the
@@ -229,17 +226,15 @@ fn reduce_segments_at(
     }
     let n_pieces = pieces.len();
     let segment_bound = pieces.iter().map(|x| x.bound).fold(0.0, f64::max);
-    let (merged, mut local) = crate::bspline_knots::merge_pieces(
-        pieces.iter().map(|x| (x.a, x.b, &x.curve, x.bound)),
-        curve,
-    )?;
+    let (merged, mut local) =
+        super::knots::merge_pieces(pieces.iter().map(|x| (x.a, x.b, &x.curve, x.bound)), curve)?;
     // Make the continuity of step 2 structural first: a later removal next to a C0-stored
     // joint would otherwise spoil its (only geometric) smoothness.
     let joints: Vec<(f64, usize)> = pieces[1..]
         .iter()
         .map(|x| (x.a, x.order.max(0) as usize))
         .collect();
-    let mut raw = crate::bspline_knots::Raw::new(&merged);
+    let mut raw = super::knots::Raw::new(&merged);
     if !local.remove_joint_copies(&mut raw, &joints, opts.tolerance)? {
         return Err(Error::ConditionNotMet {
             eq: "tolerance",

@@ -2,8 +2,9 @@
 //! the tolerance, continuity at every kept knot by derivative jumps.
 
 use super::*;
-use crate::spline_max_deviation;
+use crate::{Method, spline_max_deviation};
 use cagd_core::BezierCurve;
+use cagd_core::{BSplineCurve, Error, knot_multiplicity};
 use proptest::prelude::*;
 
 /// A clamped spline of degree `p` with `spans` distinct interior knots on `[0, 1]`

@@ -2,7 +2,7 @@
 
 use cagd_core::{TensorPatch, TriPatch};
 
-use crate::method::Method;
+use crate::Method;
 
 /// Extra conditions on a patch reduction, each a constrained version of the same
 /// minimisation (what is minimised is the method's own objective; see

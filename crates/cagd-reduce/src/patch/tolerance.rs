@@ -7,7 +7,7 @@
 
 use cagd_core::{Error, Result, TensorPatch, TriPatch, check_tolerance};
 
-use crate::patch_report::{
+use crate::patch::report::{
     PatchConstraint, PatchOptions, TensorPiece, TriMethod, TriOptions, TriPiece,
 };
 use crate::{reduce_tensor, reduce_triangle};

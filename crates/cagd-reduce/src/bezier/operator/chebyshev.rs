@@ -12,9 +12,9 @@
 use cagd_core::{Basis, Result, from_bernstein_exact, to_bernstein_exact};
 use num_traits::One;
 
-use crate::ends::{auxiliary, end_points};
+use super::ends::{auxiliary, end_points};
+use super::one_step::up;
 use crate::exact::{Q, RatMat, Row, binom_q, idx, to_i};
-use crate::one_step::up;
 
 /// `(N+1) x (N+1)` matrix: row `k` gives the Chebyshev coefficient of `T_k(2t-1)` of the
 /// degree-`N` Bézier polynomial with the given Bernstein coefficients.

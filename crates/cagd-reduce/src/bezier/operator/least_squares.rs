@@ -9,7 +9,7 @@
 
 use cagd_core::Result;
 
-use crate::ends::end_points;
+use super::ends::end_points;
 use crate::exact::{Q, RatMat, Row, binom_q, elevation, to_i, unit};
 
 /// `min ||A X - P||_2` for the full elevation matrix `A` (degree m -> n), eqs. 14.4.5 /

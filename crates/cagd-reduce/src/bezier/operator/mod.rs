@@ -7,11 +7,17 @@ use std::sync::{Arc, OnceLock, RwLock};
 
 use cagd_core::{Error, Result};
 
-use crate::chebyshev::{constrained, truncation};
+mod chebyshev;
+mod ends;
+mod hull;
+mod least_squares;
+mod one_step;
+
+use super::method::Method;
 use crate::exact::{RatMat, Row, Scaled};
-use crate::least_squares::{ginv_ends, l2};
-use crate::method::Method;
-use crate::one_step::{residual_term, step};
+use chebyshev::{constrained, truncation};
+use least_squares::{ginv_ends, l2};
+use one_step::{residual_term, step};
 
 /// One term `coef * ||sum_j g_j P_j||` of a method's own error bound.
 #[derive(Debug, Clone)]
@@ -180,7 +186,7 @@ impl Operator {
     /// [`Error::ZeroDimension`], [`Error::LengthMismatch`] (input or output length),
     /// [`Error::NonFinite`] (a non-finite input coordinate).
     pub fn apply_into(&self, points: &[f64], dim: usize, out: &mut [f64]) -> Result<()> {
-        crate::batch::reduce_batch(self, points, dim, out)
+        super::batch::reduce_batch(self, points, dim, out)
     }
 
     /// Applies the operator to `n + 1` points of `dim` coordinates and returns the `m + 1`
@@ -254,7 +260,7 @@ pub(crate) fn hull_bound(points: &[f64], reduced: &[f64], dim: usize) -> f64 {
     for (d, p) in diff.iter_mut().zip(points) {
         *d = p - *d;
     }
-    let hull = crate::hull::refined_hull_bound(&diff, dim, crate::hull::DEPTH);
+    let hull = hull::refined_hull_bound(&diff, dim, hull::DEPTH);
     let slack = 2.0 * (n as f64 + 3.0) * eps * (max_norm(points, dim) + max_norm(reduced, dim));
     hull * (1.0 + 4.0 * eps) + slack
 }

@@ -7,10 +7,10 @@
 
 use num_traits::{One, Zero};
 
-use crate::ends::{auxiliary, end_points};
+use super::ends::{auxiliary, end_points};
+use crate::bezier::method::Method;
+use crate::bezier::wn_table::perturbation_error_factor;
 use crate::exact::{Q, RatMat, Row, axpy, binom_q, frac, lin2, pow2, q_to_f64, scaled, to_i, unit};
-use crate::method::Method;
-use crate::wn_table::perturbation_error_factor;
 
 /// One exact step: the `k x (k+1)` operator and its bound terms (on the step's input).
 pub(crate) struct Step {

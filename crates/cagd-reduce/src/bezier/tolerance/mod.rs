@@ -1,13 +1,19 @@
 //! Reduction to a tolerance with `C^k` joins (seed 000 §14.2.2, Algorithm 14.2.1 and
 //! eq. 14.2.11, generalised to every linear method; SPEC-reduce §2.2).
 
+mod piecewise;
+mod stepwise;
+#[cfg(test)]
+mod tests;
+
+pub use piecewise::{PiecewiseReduction, PiecewiseReport, ReducedPiece};
+pub use stepwise::{reduce_to_tolerance_alg_14_2_1, subdivision_levels};
+
 use cagd_core::{BezierCurve, Error, Result, check_tolerance};
 
-use crate::method::Method;
-use crate::piecewise::{
-    PIECE_SHARE, PiecewiseReduction, PiecewiseReport, ReducedPiece, assemble, measure,
-};
-use crate::reduce::{ReduceOptions, reduce_with};
+use super::method::Method;
+use super::reduce::{ReduceOptions, reduce_with};
+use piecewise::{PIECE_SHARE, assemble, measure};
 
 /// Default deepest midpoint-subdivision level (`2^-30` of the parameter range).
 pub const DEFAULT_MAX_DEPTH: usize = 30;

@@ -4,8 +4,8 @@
 
 use cagd_core::{BSplineCurve, BezierCurve, Error, Result, max_distance_1d};
 
-use crate::method::Method;
-use crate::operator::max_norm;
+use crate::bezier::method::Method;
+use crate::bezier::operator::max_norm;
 
 /// One reduced piece: `curve(s)` approximates the original on `[start, end]`,
 /// `s = (t - start) / (end - start)`.

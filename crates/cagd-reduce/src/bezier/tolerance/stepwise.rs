@@ -4,11 +4,11 @@
 
 use cagd_core::{BezierCurve, Error, Result, binomial, check_degree, check_tolerance};
 
-use crate::method::Method;
-use crate::operator::operator;
-use crate::piecewise::{PiecewiseReduction, ReducedPiece};
-use crate::tolerance::{MAX_PIECES, ToleranceOptions, finish, levels_for, split_levels};
-use crate::wn_table::perturbation_error_factor;
+use super::piecewise::{PiecewiseReduction, ReducedPiece};
+use super::{MAX_PIECES, ToleranceOptions, finish, levels_for, split_levels};
+use crate::bezier::method::Method;
+use crate::bezier::operator::operator;
+use crate::bezier::wn_table::perturbation_error_factor;
 
 /// The smallest number `N` of midpoint-subdivision levels after which every piece of a
 /// degree-`n` curve with `||Delta^n P_0|| = norm_f` reduces one degree by the perturbation

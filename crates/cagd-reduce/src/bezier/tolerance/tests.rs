@@ -101,7 +101,7 @@ fn n_formula_matches_one_degree_perturbation() {
         let levels = subdivision_levels(6, nf, delta).unwrap();
         let red = reduce_to_tolerance(
             &curve,
-            &ToleranceOptions::new(Method::Perturb, 5, delta / crate::piecewise::PIECE_SHARE, 0),
+            &ToleranceOptions::new(Method::Perturb, 5, delta / super::piecewise::PIECE_SHARE, 0),
         )
         .unwrap();
         assert_eq!(red.report.pieces, 1 << levels, "delta {delta}");

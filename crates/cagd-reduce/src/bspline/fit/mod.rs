@@ -19,8 +19,10 @@
 use cagd_core::kernel::{de_casteljau, subdivide};
 use cagd_core::{BSplineCurve, Result, basis_functions, gauss_legendre};
 
-use crate::banded_lsq::BandedLsq;
-use crate::operator::{hull_bound, max_norm};
+mod banded_lsq;
+
+use crate::bezier::{hull_bound, max_norm};
+use banded_lsq::BandedLsq;
 
 /// The spline to approximate, as Bézier pieces in working coordinates.
 #[derive(Debug, Clone)]
@@ -301,5 +303,4 @@ fn copy_block(from: &[f64], d: usize, j: usize, blk: usize, to: &mut [f64]) {
 }
 
 #[cfg(test)]
-#[path = "bspline_fit_tests.rs"]
 mod tests;

@@ -7,12 +7,11 @@
 
 use cagd_core::{BSplineCurve, Error, Result, check_tolerance, kernel, knot_multiplicity};
 
-use crate::bspline_knots::{LocalBounds, Raw, merge_pieces};
-use crate::bspline_measure::{euclidean_from_homogeneous, spline_max_deviation};
-use crate::bspline_reduce::{BSplineReduction, BSplineReport, BSplineStrategy};
-use crate::method::Method;
-use crate::operator::max_norm;
-use crate::reduce::{ReduceOptions, reduce_with};
+use super::knots::{LocalBounds, Raw, merge_pieces};
+use super::measure::{euclidean_from_homogeneous, spline_max_deviation};
+use super::reduce::{BSplineReduction, BSplineReport, BSplineStrategy};
+use crate::bezier::max_norm;
+use crate::{Method, ReduceOptions, reduce_with};
 
 /// The `eq` of this algorithm's [`Error::ConditionNotMet`].
 const EQ: &str = "Piegl-Tiller 1995";
@@ -236,5 +235,4 @@ fn one_degree(
 }
 
 #[cfg(test)]
-#[path = "bspline_piegl_tiller_tests.rs"]
 mod tests;

@@ -9,7 +9,7 @@
 
 use cagd_core::{BSplineSurface, Error, Result, check_tolerance};
 
-use crate::bspline_surface_reduce::{SurfaceOptions, SurfaceReduction, reduce_bspline_surface};
+use super::patchwise::{SurfaceOptions, SurfaceReduction, reduce_bspline_surface};
 
 /// Deepest uniform refinement tried by [`reduce_bspline_surface_to_tolerance`]: `2^6 = 64`
 /// spans per input span and direction.

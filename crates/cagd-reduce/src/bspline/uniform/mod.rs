@@ -15,10 +15,10 @@ use cagd_core::{
     BSplineCurve, BezierCurve, Error, Result, s_matrix, s_matrix_exact, s_matrix_inverse_exact,
 };
 
-use crate::bspline_measure::euclidean_from_homogeneous;
+use super::measure::euclidean_from_homogeneous;
+use crate::bezier::{hull_bound, max_norm};
 use crate::exact::{Q, RatMat};
-use crate::method::Method;
-use crate::operator::{hull_bound, max_norm, operator};
+use crate::{Method, operator};
 
 /// How the reduced segments are joined (seed 001 §4).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -82,7 +82,7 @@ fn matrices(method: Method, n: usize, m: usize) -> Result<Arc<SegmentMatrices>> 
             return Ok(Arc::clone(x));
         }
     }
-    let (t, _) = crate::operator::exact_operator(method, n, m)?;
+    let (t, _) = crate::bezier::exact_operator(method, n, m)?;
     let ts = t.mul(&rat(s_matrix_exact(n)?, n + 1))?;
     let local = rat(s_matrix_inverse_exact(m)?, m + 1).mul(&ts)?;
     let built = Arc::new(SegmentMatrices {
@@ -317,5 +317,4 @@ pub(crate) fn to_curve(work: &[f64], pdim: usize, rational: bool) -> Result<Bezi
 }
 
 #[cfg(test)]
-#[path = "bspline_uniform_tests.rs"]
 mod tests;

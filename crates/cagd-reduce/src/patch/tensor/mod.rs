@@ -6,14 +6,16 @@ use cagd_core::{
     Error, ExactMatrix, Result, TensorPatch, binomial_f64, sign_binomial_f64, tensor_patch_distance,
 };
 
-use crate::patch_exact::{
+mod curves;
+
+use crate::patch::exact::{
     Cache, Mat, cached, elevation_exact, inverse_elevate, max_diff, max_norm, norm, pinv_columns,
 };
-use crate::patch_report::{
+use crate::patch::report::{
     PatchConstraint, PatchOptions, PatchReduction, PatchReport, TensorMethod,
 };
-use crate::patch_tensor_curves::reduce_curves;
 use crate::{Method, operator};
+use curves::reduce_curves;
 
 /// Reduces a tensor-product patch of degree `(m, n)` to degree `target = (m', n')`.
 ///

@@ -14,9 +14,9 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 
 use crate::operator;
-use crate::patch_exact::{Cache, Mat, cached, q_binom};
-use crate::patch_report::PatchConstraint;
-use crate::patch_tensor::check_boundary_method;
+use crate::patch::exact::{Cache, Mat, cached, q_binom};
+use crate::patch::report::PatchConstraint;
+use crate::patch::tensor::check_boundary_method;
 
 /// The rounded operators of one `(n, m, kind)`.
 #[derive(Debug)]

@@ -6,9 +6,11 @@ use cagd_core::{
     Error, ExactMatrix, Result, TriPatch, binomial_f64, tri_count, tri_index, tri_patch_distance,
 };
 
-use crate::patch_exact::{Cache, Mat, cached, max_norm, q_binom};
-use crate::patch_report::{PatchReport, TriMethod, TriOptions, TriReduction};
-use crate::patch_tri_l2::reduce_l2;
+mod l2;
+
+use crate::patch::exact::{Cache, Mat, cached, max_norm, q_binom};
+use crate::patch::report::{PatchReport, TriMethod, TriOptions, TriReduction};
+use l2::reduce_l2;
 
 /// Reduces a triangular patch of degree `n` to degree `m < n`.
 ///
@@ -239,7 +241,7 @@ mod tests {
             let t = TriPatch::new(pts, n, 2).unwrap();
             let e = t.elevate(1).unwrap();
             let back = inverse_elevate_tri(e.points(), n + 1, 2);
-            let err = crate::patch_exact::max_diff(&back, t.points(), 2);
+            let err = crate::patch::exact::max_diff(&back, t.points(), 2);
             assert!(err < 1e-13, "n = {n}: {err}");
         }
     }

@@ -15,10 +15,10 @@
 
 use cagd_core::{BSplineCurve, BSplineSurface, Error, Result, check_tolerance};
 
-use crate::bspline_fit::Source;
-use crate::bspline_global::{fit_to_budget, initial_knots};
-use crate::bspline_knots::{LocalBounds, Raw};
-use crate::bspline_surface_reduce::sampled_error;
+use super::patchwise::sampled_error;
+use crate::bspline::fit::Source;
+use crate::bspline::global::{fit_to_budget, initial_knots};
+use crate::bspline::knots::{LocalBounds, Raw};
 
 /// Share of a direction's tolerance the fit must meet; the rest is for knot removal.
 const FIT_SHARE: f64 = 0.9;
@@ -261,5 +261,4 @@ fn homogeneous_net(s: &BSplineSurface) -> Vec<f64> {
 }
 
 #[cfg(test)]
-#[path = "bspline_surface_fit_tests.rs"]
 mod tests;

@@ -6,9 +6,9 @@
 
 use cagd_core::{BSplineSurface, Error, Result, knot_multiplicity};
 
-use crate::bspline_measure::euclidean_from_homogeneous;
-use crate::method::Method;
-use crate::operator::{max_norm, operator};
+use crate::bezier::max_norm;
+use crate::bspline::measure::euclidean_from_homogeneous;
+use crate::{Method, operator};
 
 /// Options of [`reduce_bspline_surface`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -334,5 +334,4 @@ pub(crate) fn sampled_error(
 }
 
 #[cfg(test)]
-#[path = "bspline_surface_tests.rs"]
 mod tests;
