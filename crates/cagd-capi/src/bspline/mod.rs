@@ -4,6 +4,22 @@
 
 use cagd_core::{BSplineCurve, Error};
 
+mod arrays;
+mod merge;
+mod ops;
+mod surface;
+
+pub use arrays::{cagd_bspline_knots, cagd_bspline_points, cagd_bspline_weights};
+pub use merge::cagd_bspline_from_beziers;
+pub use ops::{
+    cagd_bspline_derivatives, cagd_bspline_eval, cagd_bspline_insert_knot, cagd_bspline_to_beziers,
+};
+pub use surface::{
+    CagdBSplineSurface, cagd_bsplinesurface_array, cagd_bsplinesurface_eval,
+    cagd_bsplinesurface_free, cagd_bsplinesurface_new, cagd_bsplinesurface_reduce,
+    cagd_bsplinesurface_reduce_to_tolerance, cagd_bsplinesurface_shape,
+};
+
 use crate::boundary::{
     CResult, Failure, boundary, boundary_void, free_handle, handle_ref, into_handle, nonnull,
     out_ref, points_in, slice_in,

@@ -5,7 +5,7 @@ use crate::boundary::{
     Failure, OUT, boundary, checked_len, handle_ref, into_handle, out_ref, slice_out,
 };
 use crate::bspline::CagdBSpline;
-use crate::curve_list::{CagdCurveList, Piece};
+use crate::curve::{CagdCurveList, Piece};
 use crate::status::CagdStatus;
 
 /// Evaluates a spline at one parameter `t` (de Boor; in homogeneous coordinates for a

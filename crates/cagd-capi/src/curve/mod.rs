@@ -3,6 +3,20 @@
 
 use cagd_core::BezierCurve;
 
+mod list;
+mod ops;
+
+pub use list::{
+    CagdCurveList, cagd_curvelist_bound, cagd_curvelist_count, cagd_curvelist_free,
+    cagd_curvelist_get, cagd_curvelist_interval,
+};
+pub use ops::{
+    cagd_curve_elevate, cagd_curve_eval, cagd_curve_eval_many, cagd_curve_segment,
+    cagd_curve_subdivide,
+};
+
+pub(crate) use list::Piece;
+
 use crate::boundary::{
     OUT, boundary, boundary_void, free_handle, handle_ref, into_handle, nonnull, out_ref,
     points_in, slice_in, slice_out,

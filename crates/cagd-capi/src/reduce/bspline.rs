@@ -8,9 +8,9 @@ use cagd_reduce::{Merge, reduce_bspline, reduce_uniform_bspline, spline_max_devi
 
 use crate::boundary::{CResult, Failure, boundary, handle_ref, into_handle, nonnull, out_ref};
 use crate::bspline::{CagdBSpline, spline_failure};
-use crate::reduce_options::{CagdReduceOptions, read_options};
+use crate::reduce::{CagdReduceOptions, read_options};
+use crate::reduce::{CagdSplineStrategy, spline_options};
 use crate::report::{CagdReport, ReportKind, SplineReport, StrategyReport};
-use crate::spline_strategy::{CagdSplineStrategy, spline_options};
 use crate::status::CagdStatus;
 
 /// Checks and borrows the two outputs (distinct, non-NULL, aligned).

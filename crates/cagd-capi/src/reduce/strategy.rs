@@ -4,7 +4,7 @@
 use cagd_reduce::{BSplineOptions, BSplineStrategy, SurfaceFitOptions};
 
 use crate::boundary::{CResult, Failure};
-use crate::reduce_options::{CagdReduceMethod, CagdReduceOptions};
+use crate::reduce::{CagdReduceMethod, CagdReduceOptions};
 
 /// How `cagd_bspline_reduce` builds the degree-`target` spline from a degree-`p` one
 /// (`CagdReduceOptions.spline_strategy`, an `int32_t`; cagd-reduce `BSplineStrategy`).

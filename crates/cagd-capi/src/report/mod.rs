@@ -3,11 +3,17 @@
 
 use cagd_reduce::{ErrorSpace, PatchReport, PiecewiseReport, ReducedPiece, Report};
 
+mod piecewise;
+mod spline;
+
+pub use piecewise::{cagd_report_pieces, cagd_report_piecewise, cagd_report_step_bounds};
+pub use spline::{cagd_report_spline, cagd_report_spline_continuity, cagd_report_spline_strategy};
+
 use crate::boundary::{
     CResult, Failure, boundary, boundary_void, free_handle, handle_ref, out_ref,
 };
-use crate::reduce_options::CagdErrorSpace;
-use crate::spline_strategy::CagdSplineStrategy;
+use crate::reduce::CagdErrorSpace;
+use crate::reduce::CagdSplineStrategy;
 use crate::status::CagdStatus;
 
 /// Opaque handle to the report of a reduction: the method, the degrees, the certified

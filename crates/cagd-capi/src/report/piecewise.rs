@@ -4,7 +4,7 @@
 use crate::boundary::{
     CResult, Failure, OUT, boundary, handle_ref, into_handle, out_ref, slice_out,
 };
-use crate::curve_list::{CagdCurveList, Piece};
+use crate::curve::{CagdCurveList, Piece};
 use crate::report::{CagdReport, ReportKind};
 use crate::status::CagdStatus;
 

@@ -2,6 +2,10 @@
 
 use cagd_core::{TriPatch, tri_count};
 
+mod ops;
+
+pub use ops::{cagd_tripatch_elevate, cagd_tripatch_eval, cagd_tripatch_subdivide_midpoint};
+
 use crate::boundary::{
     OUT, boundary, boundary_void, free_handle, handle_ref, into_handle, nonnull, out_ref,
     points_in, slice_out,

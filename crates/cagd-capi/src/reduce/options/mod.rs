@@ -4,7 +4,7 @@
 use cagd_reduce::{ErrorSpace, Method, ReduceOptions};
 
 use crate::boundary::{CResult, Failure, boundary, nonnull, out_ref};
-use crate::spline_strategy::CagdSplineStrategy;
+use crate::reduce::CagdSplineStrategy;
 use crate::status::CagdStatus;
 
 /// The degree-reduction methods (cagd-reduce `Method`; seed 000 chapter 14 and the
@@ -371,5 +371,4 @@ pub unsafe extern "C" fn cagd_reduce_options_init(opts: *mut CagdReduceOptions) 
 }
 
 #[cfg(test)]
-#[path = "reduce_options_tests.rs"]
 mod tests;
