@@ -1,5 +1,5 @@
 //! Every reduction of the C ABI and its options: `CagdReduceOptions` and the codes of its
-//! fields (`options/`), the B-spline strategy translation (`strategy.rs`), and the entry
+//! fields (`options/`), their translation to the B-spline options (`strategy.rs`), and the entry
 //! points by object: Bézier curves (`curve.rs`: `cagd_curve_reduce`, batch; `extra.rs`:
 //! exact degree, G1 optimal, operator; `tolerance.rs`: to a tolerance), B-splines
 //! (`bspline.rs`) and patches (`patch.rs`). `cagd_bsplinesurface_reduce*` live with their
@@ -21,13 +21,12 @@ pub use extra::{
 };
 pub use options::{
     CagdErrorSpace, CagdMerge, CagdPatchConstraint, CagdPatchMethod, CagdReduceMethod,
-    CagdReduceOptions, cagd_reduce_options_init,
+    CagdReduceOptions, CagdSplineStrategy, cagd_reduce_options_init,
 };
 pub use patch::{
     cagd_report_patch, cagd_tensorpatch_reduce, cagd_tensorpatch_reduce_to_tolerance,
     cagd_tripatch_reduce, cagd_tripatch_reduce_to_tolerance,
 };
-pub use strategy::CagdSplineStrategy;
 pub use tolerance::{cagd_curve_reduce_to_tolerance, cagd_curve_reduce_to_tolerance_stepwise};
 
 pub(crate) use options::read_options;

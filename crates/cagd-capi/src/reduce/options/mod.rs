@@ -1,10 +1,10 @@
-//! `CagdReduceMethod`, `CagdErrorSpace` and `CagdReduceOptions`: how a reduction is asked
-//! for from C, and their translation to `cagd_reduce::ReduceOptions`.
+//! `CagdReduceOptions` and the codes of its fields (`CagdReduceMethod`, `CagdErrorSpace`,
+//! `CagdPatchMethod`, `CagdPatchConstraint`, `CagdMerge`, `CagdSplineStrategy`): how a
+//! reduction is asked for from C, and their translation to `cagd_reduce::ReduceOptions`.
 
-use cagd_reduce::{ErrorSpace, Method, ReduceOptions};
+use cagd_reduce::{BSplineStrategy, ErrorSpace, Method, ReduceOptions};
 
 use crate::boundary::{CResult, Failure, boundary, nonnull, out_ref};
-use crate::reduce::CagdSplineStrategy;
 use crate::status::CagdStatus;
 
 /// The degree-reduction methods (cagd-reduce `Method`; seed 000 chapter 14 and the
@@ -129,6 +129,66 @@ pub enum CagdMerge {
     /// keeps uniform simple knots (`C^(target-1)`) at the price of an extra change, which
     /// the certified bound includes.
     MERGE_LOSSY = 1,
+}
+
+/// How `cagd_bspline_reduce` builds the degree-`target` spline from a degree-`p` one
+/// (`CagdReduceOptions.spline_strategy`, an `int32_t`; cagd-reduce `BSplineStrategy`).
+/// Each keeps, at every interior knot of the input that is still a knot of the result,
+/// the continuity `C^min(k, c)`: `c` the input's continuity there (`p - s` for a knot of
+/// multiplicity `s`), `k` the `spline_continuity` asked for, at most the strategy's maximum
+/// given below (`-1`: that maximum).
+///
+/// cbindgen:rename-all=prefix:CAGD_
+#[repr(i32)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[allow(
+    non_camel_case_types,
+    reason = "C names: the variants become CAGD_SPLINE_*"
+)]
+pub enum CagdSplineStrategy {
+    /// One least-squares fit (parameter L2 norm, end points kept) on the whole
+    /// degree-`target` spline space whose knots are the input's with the multiplicities
+    /// that keep the continuity; spans whose certified bound misses their share of the
+    /// tolerance are split and the fit repeated; then knot removal within the rest of the
+    /// tolerance. Keeps up to `C^(target - 1)`. The default.
+    SPLINE_FIT = 0,
+    /// Every Bézier segment reduced on its own by `method` (`CAGD_METHOD_L2` or
+    /// `CAGD_METHOD_CONSTRAINED_CHEBYSHEV`) with Hermite data at both ends, split where
+    /// needed, merged, then knot removal. Keeps at most
+    /// `C^floor((target - 1) / 2)` (two-sided Hermite data need `2k + 1 <= target`).
+    SPLINE_SEGMENTS = 1,
+    /// The classical algorithm of Piegl & Tiller 1995 (NURBS Book A5.11), as a reference:
+    /// one degree at a time, every segment reduced by one degree, merged, and every
+    /// interior knot left with one copy fewer per degree. Never subdivides: fails with
+    /// `CAGD_ERR_CONDITION_NOT_MET` when the curve is not reducible within the tolerance
+    /// that way (it succeeds essentially for degree-elevated splines and those within the
+    /// tolerance of one). Keeps the input's `C^c` wherever a knot stays (at most
+    /// `C^(target - 1)`).
+    SPLINE_PIEGL_TILLER_1995 = 2,
+}
+
+impl CagdSplineStrategy {
+    /// The C code of a cagd-reduce strategy.
+    pub(crate) fn of(strategy: &BSplineStrategy) -> Self {
+        match strategy {
+            BSplineStrategy::GlobalFit => Self::SPLINE_FIT,
+            BSplineStrategy::Segments(_) => Self::SPLINE_SEGMENTS,
+            BSplineStrategy::PieglTiller1995 => Self::SPLINE_PIEGL_TILLER_1995,
+        }
+    }
+
+    /// The `CagdReduceMethod` code `cagd_report_method` gives for a reduction by this
+    /// strategy: the method that reduced the pieces (`asked`, the options' `method`, for
+    /// segments; `CAGD_METHOD_L2` for the fit, which minimises the L2 norm with the end
+    /// points kept; `CAGD_METHOD_PIEGL_TILLER`, the one-degree segment reduction of
+    /// Piegl & Tiller 1995).
+    pub(crate) fn reported_method(self, asked: i32) -> i32 {
+        match self {
+            Self::SPLINE_FIT => CagdReduceMethod::METHOD_L2 as i32,
+            Self::SPLINE_SEGMENTS => asked,
+            Self::SPLINE_PIEGL_TILLER_1995 => CagdReduceMethod::METHOD_PIEGL_TILLER as i32,
+        }
+    }
 }
 
 /// How to reduce: a plain struct the caller owns. Fill it with
