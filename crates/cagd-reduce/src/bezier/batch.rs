@@ -1,9 +1,33 @@
 //! The batch entry point: one operator applied to many curves stored contiguously, with no
-//! allocation.
+//! allocation; [`Operator::apply_into`] and [`Operator::apply`] (one curve) are defined
+//! here, on top of it, so that `operator/` does not depend on this module.
 
 use cagd_core::{Error, Result};
 
 use super::operator::Operator;
+
+impl Operator {
+    /// Applies the operator to `n + 1` points of `dim` coordinates (row-major), writing
+    /// `m + 1` points to `out`.
+    ///
+    /// # Errors
+    /// [`Error::ZeroDimension`], [`Error::LengthMismatch`] (input or output length),
+    /// [`Error::NonFinite`] (a non-finite input coordinate).
+    pub fn apply_into(&self, points: &[f64], dim: usize, out: &mut [f64]) -> Result<()> {
+        reduce_batch(self, points, dim, out)
+    }
+
+    /// Applies the operator to `n + 1` points of `dim` coordinates and returns the `m + 1`
+    /// reduced points.
+    ///
+    /// # Errors
+    /// As [`Operator::apply_into`].
+    pub fn apply(&self, points: &[f64], dim: usize) -> Result<Vec<f64>> {
+        let mut out = vec![0.0; (self.degree_to() + 1) * dim];
+        self.apply_into(points, dim, &mut out)?;
+        Ok(out)
+    }
+}
 
 /// Applies `op` (degree `n -> m`) to every curve of `input` and writes the reduced curves
 /// to `output`.

@@ -179,27 +179,6 @@ impl Operator {
         self.op_norm
     }
 
-    /// Applies the operator to `n + 1` points of `dim` coordinates (row-major), writing
-    /// `m + 1` points to `out`.
-    ///
-    /// # Errors
-    /// [`Error::ZeroDimension`], [`Error::LengthMismatch`] (input or output length),
-    /// [`Error::NonFinite`] (a non-finite input coordinate).
-    pub fn apply_into(&self, points: &[f64], dim: usize, out: &mut [f64]) -> Result<()> {
-        super::batch::reduce_batch(self, points, dim, out)
-    }
-
-    /// Applies the operator to `n + 1` points of `dim` coordinates and returns the `m + 1`
-    /// reduced points.
-    ///
-    /// # Errors
-    /// As [`Operator::apply_into`].
-    pub fn apply(&self, points: &[f64], dim: usize) -> Result<Vec<f64>> {
-        let mut out = vec![0.0; (self.m + 1) * dim];
-        self.apply_into(points, dim, &mut out)?;
-        Ok(out)
-    }
-
     /// A certified upper bound of `max_t ||P(t) - Q(t)||` (Euclidean norm, in the space of
     /// the given points) for input `points` and the reduced points `reduced` this operator
     /// produced from them (`f64` rounding of `reduced` included). Cheap: `O(n^2 dim)`, no
@@ -397,7 +376,7 @@ mod tests {
         ));
         assert!(matches!(op.apply(&[], 0), Err(Error::ZeroDimension)));
         let mut out = vec![0.0; 5];
-        assert!(crate::reduce_batch(&op, &[0.0; 8], 1, &mut out).is_err());
-        assert!(crate::reduce_batch(&op, &[0.0; 7], 1, &mut out[..3]).is_err());
+        assert!(op.apply_into(&[0.0; 8], 1, &mut out).is_err());
+        assert!(op.apply_into(&[0.0; 7], 1, &mut out[..3]).is_err());
     }
 }

@@ -3,7 +3,7 @@
 
 use cagd_core::{Result, TensorPatch};
 
-use super::{map_columns, map_rows};
+use super::lines::{map_columns, map_rows};
 use crate::{Method, operator};
 
 /// `Q = R_u P R_vᵀ` (columns first, then rows of the intermediate net) and its certified
