@@ -80,6 +80,10 @@ mod report;
     reason = "C entry points (no_mangle) returning static strings"
 )]
 mod status;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod tensorpatch;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod tripatch;
 mod version;
 
 pub use bspline::{
@@ -87,9 +91,10 @@ pub use bspline::{
     cagd_bspline_dim, cagd_bspline_domain, cagd_bspline_eval, cagd_bspline_free,
     cagd_bspline_from_beziers, cagd_bspline_insert_knot, cagd_bspline_is_rational,
     cagd_bspline_knots, cagd_bspline_n_points, cagd_bspline_new, cagd_bspline_new_rational,
-    cagd_bspline_points, cagd_bspline_to_beziers, cagd_bspline_weights, cagd_bsplinesurface_array,
-    cagd_bsplinesurface_eval, cagd_bsplinesurface_free, cagd_bsplinesurface_new,
-    cagd_bsplinesurface_reduce, cagd_bsplinesurface_reduce_to_tolerance, cagd_bsplinesurface_shape,
+    cagd_bspline_points, cagd_bspline_reduce, cagd_bspline_reduce_uniform, cagd_bspline_to_beziers,
+    cagd_bspline_weights, cagd_bsplinesurface_array, cagd_bsplinesurface_eval,
+    cagd_bsplinesurface_free, cagd_bsplinesurface_new, cagd_bsplinesurface_reduce,
+    cagd_bsplinesurface_reduce_to_tolerance, cagd_bsplinesurface_shape,
 };
 pub use curve::{
     CagdCurve, CagdCurveList, cagd_curve_degree, cagd_curve_dim, cagd_curve_elevate,
@@ -108,23 +113,18 @@ pub use matrices::{
     cagd_uniform_bspline_matrix,
 };
 pub use patch::{
-    CagdTensorPatch, CagdTensorPatchList, CagdTriPatch, CagdTriPatchList, cagd_tensorpatch_elevate,
-    cagd_tensorpatch_eval, cagd_tensorpatch_free, cagd_tensorpatch_new, cagd_tensorpatch_points,
-    cagd_tensorpatch_shape, cagd_tensorpatch_subdivide_u, cagd_tensorpatch_subdivide_v,
-    cagd_tensorpatchlist_count, cagd_tensorpatchlist_free, cagd_tensorpatchlist_get,
-    cagd_tripatch_elevate, cagd_tripatch_eval, cagd_tripatch_free, cagd_tripatch_new,
-    cagd_tripatch_points, cagd_tripatch_shape, cagd_tripatch_subdivide_midpoint,
+    CagdTensorPatchList, CagdTriPatchList, cagd_report_patch, cagd_tensorpatch_reduce,
+    cagd_tensorpatch_reduce_to_tolerance, cagd_tensorpatchlist_count, cagd_tensorpatchlist_free,
+    cagd_tensorpatchlist_get, cagd_tripatch_reduce, cagd_tripatch_reduce_to_tolerance,
     cagd_tripatchlist_count, cagd_tripatchlist_free, cagd_tripatchlist_get,
 };
 pub use reduce::{
     CAGD_EXACT_DEGREE_REL_TOL, CagdErrorSpace, CagdMerge, CagdPatchConstraint, CagdPatchMethod,
-    CagdReduceMethod, CagdReduceOptions, CagdSplineStrategy, cagd_bspline_reduce,
-    cagd_bspline_reduce_uniform, cagd_curve_exact_degree, cagd_curve_reduce,
-    cagd_curve_reduce_batch, cagd_curve_reduce_exact, cagd_curve_reduce_g1_optimal,
-    cagd_curve_reduce_to_tolerance, cagd_curve_reduce_to_tolerance_stepwise, cagd_reduce_operator,
-    cagd_reduce_options_init, cagd_report_method_params, cagd_report_patch,
-    cagd_tensorpatch_reduce, cagd_tensorpatch_reduce_to_tolerance, cagd_tripatch_reduce,
-    cagd_tripatch_reduce_to_tolerance,
+    CagdReduceMethod, CagdReduceOptions, CagdSplineStrategy, cagd_curve_exact_degree,
+    cagd_curve_reduce, cagd_curve_reduce_batch, cagd_curve_reduce_exact,
+    cagd_curve_reduce_g1_optimal, cagd_curve_reduce_to_tolerance,
+    cagd_curve_reduce_to_tolerance_stepwise, cagd_reduce_operator, cagd_reduce_options_init,
+    cagd_report_method_params,
 };
 pub use report::{
     CagdReport, cagd_report_bound, cagd_report_free, cagd_report_max_error, cagd_report_method,
@@ -132,4 +132,13 @@ pub use report::{
     cagd_report_spline_continuity, cagd_report_spline_strategy, cagd_report_step_bounds,
 };
 pub use status::{CagdStatus, cagd_status_name, status_of_core};
+pub use tensorpatch::{
+    CagdTensorPatch, cagd_tensorpatch_elevate, cagd_tensorpatch_eval, cagd_tensorpatch_free,
+    cagd_tensorpatch_new, cagd_tensorpatch_points, cagd_tensorpatch_shape,
+    cagd_tensorpatch_subdivide_u, cagd_tensorpatch_subdivide_v,
+};
+pub use tripatch::{
+    CagdTriPatch, cagd_tripatch_elevate, cagd_tripatch_eval, cagd_tripatch_free, cagd_tripatch_new,
+    cagd_tripatch_points, cagd_tripatch_shape, cagd_tripatch_subdivide_midpoint,
+};
 pub use version::{CAGD_VERSION_MAJOR, CAGD_VERSION_MINOR, CAGD_VERSION_PATCH};

@@ -7,6 +7,7 @@ use cagd_core::{BSplineCurve, Error};
 mod arrays;
 mod merge;
 mod ops;
+mod reduce;
 mod surface;
 
 pub use arrays::{cagd_bspline_knots, cagd_bspline_points, cagd_bspline_weights};
@@ -14,6 +15,7 @@ pub use merge::cagd_bspline_from_beziers;
 pub use ops::{
     cagd_bspline_derivatives, cagd_bspline_eval, cagd_bspline_insert_knot, cagd_bspline_to_beziers,
 };
+pub use reduce::{cagd_bspline_reduce, cagd_bspline_reduce_uniform};
 pub use surface::{
     CagdBSplineSurface, cagd_bsplinesurface_array, cagd_bsplinesurface_eval,
     cagd_bsplinesurface_free, cagd_bsplinesurface_new, cagd_bsplinesurface_reduce,

@@ -7,9 +7,9 @@ use crate::boundary::{
     CResult, Failure, OUT, boundary, boundary_void, free_handle, handle_ref, into_handle, out_ref,
     slice_out,
 };
-use crate::patch::CagdTensorPatch;
-use crate::patch::CagdTriPatch;
 use crate::status::CagdStatus;
+use crate::tensorpatch::CagdTensorPatch;
+use crate::tripatch::CagdTriPatch;
 
 /// Opaque handle to the reduced pieces of a tensor-product patch, in u-major order: piece
 /// `i` is the reduction of the input on the sub-domain `[u0, u1] x [v0, v1]`, parametrised

@@ -8,12 +8,12 @@ use cagd_reduce::{
 };
 
 use crate::boundary::{CResult, Failure, boundary, handle_ref, into_handle, nonnull, out_ref};
-use crate::patch::CagdTensorPatch;
-use crate::patch::CagdTriPatch;
 use crate::patch::{CagdTensorPatchList, CagdTriPatchList};
 use crate::reduce::{CagdReduceOptions, read_options};
 use crate::report::{CagdReport, ReportKind};
 use crate::status::CagdStatus;
+use crate::tensorpatch::CagdTensorPatch;
+use crate::tripatch::CagdTriPatch;
 
 /// The constraint the options name.
 fn constraint(o: &CagdReduceOptions) -> CResult<PatchConstraint> {

@@ -5,8 +5,8 @@ use cagd_core::TensorPatch;
 use crate::boundary::{
     CResult, Failure, OUT, boundary, handle_ref, into_handle, nonnull, out_ref, slice_out,
 };
-use crate::patch::CagdTensorPatch;
 use crate::status::CagdStatus;
+use crate::tensorpatch::CagdTensorPatch;
 
 /// Evaluates a tensor-product patch at `(u, v)` (de Casteljau along v in every row, then
 /// along u). `(u, v)` in `[0, 1]^2` is the patch; other finite values extrapolate.

@@ -1,8 +1,8 @@
 //! Operations on `CagdTriPatch`: evaluation, degree elevation, midpoint subdivision.
 
 use crate::boundary::{CResult, Failure, OUT, boundary, handle_ref, into_handle, slice_out};
-use crate::patch::CagdTriPatch;
 use crate::status::CagdStatus;
+use crate::tripatch::CagdTriPatch;
 
 /// Evaluates a triangular patch at `(u, v)` (triangular de Casteljau at the barycentric
 /// point `(u, v, 1 - u - v)`): `T(u, v) = sum_{i+j<=n} n!/(i! j! k!) u^i v^j w^k T_ij`,
