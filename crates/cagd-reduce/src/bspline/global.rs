@@ -12,9 +12,10 @@
 use cagd_core::{BSplineCurve, Error, Result, knot_multiplicity};
 
 use super::fit::{Source, SpanBound, fit, span_bounds};
+use super::knots::order_at;
 use super::knots::{LocalBounds, Raw};
 use super::measure::spline_max_deviation;
-use super::reduce::{BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy, order_at};
+use super::options::{BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy};
 
 /// Share of the tolerance the fit must meet on every span; the rest is for knot removal.
 /// The share matters only for spans near the budget (refined ones); measured on the

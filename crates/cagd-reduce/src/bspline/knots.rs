@@ -2,8 +2,9 @@
 //! as Piegl & Tiller do it: a knot removal changes the curve only on the support of the
 //! basis functions whose points move, so its bound is charged to those spans only, and a
 //! removal is accepted when every charged span stays within the tolerance.
+//! Also the continuity order a strategy keeps at a knot ([`order_at`]).
 
-use cagd_core::{BSplineCurve, BezierCurve, Result, knot_multiplicity};
+use cagd_core::{BSplineCurve, BezierCurve, Error, Result, knot_multiplicity};
 
 use super::measure::euclidean_from_homogeneous;
 use crate::bezier::max_norm;
@@ -267,4 +268,21 @@ pub(crate) fn merge_pieces<'a>(
         err[j + 1] += add;
     }
     Ok((merged, LocalBounds { breaks, err }))
+}
+
+/// The continuity order to keep at the interior knot `t` of `knots` (degree `p`):
+/// `min(k, p - s)`, `s` its multiplicity.
+///
+/// # Errors
+/// [`Error::BadParameter`] for a knot of multiplicity `p + 1` (the input may jump there).
+pub(crate) fn order_at(knots: &[f64], p: usize, k: usize, t: f64) -> Result<usize> {
+    let s = knot_multiplicity(knots, t);
+    if s > p {
+        return Err(Error::BadParameter {
+            name: "knots",
+            value: t,
+            why: "interior knot of multiplicity p + 1 (possibly discontinuous)",
+        });
+    }
+    Ok(k.min(p - s))
 }

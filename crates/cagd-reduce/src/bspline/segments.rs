@@ -7,8 +7,9 @@
 
 use cagd_core::{BSplineCurve, BezierCurve, Error, Result, knot_multiplicity};
 
+use super::knots::order_at;
 use super::measure::spline_max_deviation;
-use super::reduce::{BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy, order_at};
+use super::options::{BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy};
 use crate::{Method, ReduceOptions, reduce_with};
 
 /// Share of the tolerance given to the per-segment reduction; the rest (per span: the

@@ -9,7 +9,7 @@ use cagd_core::{BSplineCurve, Error, Result, check_tolerance, kernel, knot_multi
 
 use super::knots::{LocalBounds, Raw, merge_pieces};
 use super::measure::{euclidean_from_homogeneous, spline_max_deviation};
-use super::reduce::{BSplineReduction, BSplineReport, BSplineStrategy};
+use super::options::{BSplineReduction, BSplineReport, BSplineStrategy};
 use crate::bezier::max_norm;
 use crate::{Method, ReduceOptions, reduce_with};
 
