@@ -1,8 +1,8 @@
 //! The global-fit strategy of [`crate::reduce_bspline`] ([`BSplineStrategy::GlobalFit`]):
 //! the degree-`m` spline space with the input's knots at the multiplicities that keep its
-//! continuity, the L2-best fit in it ([`crate::bspline_fit`]), adaptive refinement of the
+//! continuity, the L2-best fit in it ([`super::fit`]), adaptive refinement of the
 //! spans whose certified bound exceeds their share of the tolerance, then knot removal
-//! within the rest, tracked per span ([`crate::bspline_knots`]).
+//! within the rest, tracked per span ([`super::knots`]).
 //!
 //! Why a global fit: reducing segment by segment can only join segments with Hermite data
 //! matched on both sides, which needs `2k + 1 <= m` (C1 at best for cubics), while the

@@ -228,7 +228,7 @@ pub(crate) fn max_norm(x: &[f64], dim: usize) -> f64 {
 
 /// The convex-hull bound of seed 000 §14.4.3 on *computed* reduced points (their rounding
 /// is included by construction), refined by subdivision of the difference curve
-/// ([`crate::hull::refined_hull_bound`]): `D = P - E Q`, `E` = elevation `m -> n`, plus an
+/// ([`hull::refined_hull_bound`]): `D = P - E Q`, `E` = elevation `m -> n`, plus an
 /// allowance for the rounding of the elevation and the subtraction.
 pub(crate) fn hull_bound(points: &[f64], reduced: &[f64], dim: usize) -> f64 {
     let n = points.len() / dim - 1;

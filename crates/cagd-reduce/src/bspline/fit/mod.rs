@@ -9,7 +9,7 @@
 //! rule of each span integrates it exactly. The integral is therefore the squared norm of
 //! the residual of a weighted collocation system with one row per (span, node) — weight
 //! `sqrt(w_q h)` — and the fit is that system's least-squares solution, computed by
-//! banded Givens QR ([`crate::banded_lsq`]). No normal equations are formed.
+//! banded Givens QR ([`banded_lsq`]). No normal equations are formed.
 //!
 //! NURBS are fitted in homogeneous coordinates. The points may also be *bundles* of
 //! `blocks` curves side by side (the rows of a tensor-product surface, fitted in one
@@ -160,7 +160,7 @@ pub(crate) struct SpanBound {
 /// The spans `[a, b]` of the degree-`m` spline `(knots, points)` (working coordinates of
 /// `src`) with a certified bound of `max ||C - S||` on each (Euclidean, model space): per
 /// span, the piece of `C` restricted to it minus `S` elevated to degree `p`, bounded by the
-/// refined convex hull ([`crate::operator::hull_bound`], rounding included), the largest
+/// refined convex hull ([`crate::bezier::hull_bound`], rounding included), the largest
 /// over the blocks; for NURBS by [`rational_bound`] (centred, in model space). A span on
 /// which a control weight of `S` is not positive gets an infinite bound.
 pub(crate) fn span_bounds(

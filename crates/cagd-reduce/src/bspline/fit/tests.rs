@@ -3,7 +3,6 @@
 //! target space is reproduced, span bounds cover sampled errors, unclamped input.
 
 use super::*;
-use crate::{BSplineOptions, reduce_bspline};
 use cagd_core::find_span;
 
 /// A clamped degree-5 planar spline with uneven spans and a double knot.
@@ -109,57 +108,5 @@ fn reproduces_a_spline_of_the_target_space_and_bounds_cover_samples() {
             sb.bound
         );
         assert!(sb.floor < 1e-13);
-    }
-}
-
-#[test]
-fn unclamped_input_is_reduced_on_its_domain() {
-    // Uniform unclamped degree-4 knots: the domain is [u_4, u_n] = [4, 10].
-    let knots: Vec<f64> = (0..15).map(f64::from).collect();
-    let pts: Vec<f64> = (0..20).map(|i| ((i * 13 % 7) as f64) - 3.0).collect();
-    let c = BSplineCurve::new(4, knots, pts, 2).unwrap();
-    let opts = BSplineOptions {
-        measure: true,
-        ..BSplineOptions::new(2, 1e-4)
-    };
-    let r = reduce_bspline(&c, &opts).unwrap();
-    assert_eq!(r.curve.domain(), (4.0, 10.0));
-    assert_eq!(r.spans_in, 6);
-    let measured = r.report.max_error.unwrap();
-    assert!(measured <= r.report.error_bound && r.report.error_bound <= 1e-4);
-    // Its ends are the input's end points.
-    for t in [4.0, 10.0] {
-        let (a, b) = (c.eval(t).unwrap(), r.curve.eval(t).unwrap());
-        assert!((a[0] - b[0]).abs() < 1e-12 && (a[1] - b[1]).abs() < 1e-12);
-    }
-}
-
-/// High degrees: a degree-40 spline (the Gauss rule has 41 nodes) to degree 8, and a
-/// degree-64 one (the largest supported) to degree 20, meet the tolerance with a bound
-/// above the sampled error.
-#[test]
-fn high_degrees() {
-    for (p, m, tol) in [(40usize, 8usize, 1e-6), (64, 20, 1e-8)] {
-        let spans = 4;
-        let mut knots = vec![0.0; p + 1];
-        knots.extend((1..spans).map(|i| f64::from(i) / f64::from(spans)));
-        knots.extend(std::iter::repeat_n(1.0, p + 1));
-        let n = knots.len() - p - 1;
-        let pts: Vec<f64> = (0..2 * n)
-            .map(|i| (i as f64 * 0.37).sin() + 0.1 * ((i * 7 % 5) as f64))
-            .collect();
-        let c = BSplineCurve::new(p, knots, pts, 2).unwrap();
-        let opts = BSplineOptions {
-            measure: true,
-            ..BSplineOptions::new(m, tol)
-        };
-        let r = reduce_bspline(&c, &opts).unwrap();
-        let measured = r.report.max_error.unwrap();
-        assert!(
-            r.report.error_bound <= tol,
-            "{p}: {:e}",
-            r.report.error_bound
-        );
-        assert!(measured <= r.report.error_bound, "{p}: {measured:e}");
     }
 }

@@ -235,4 +235,4 @@ fn one_degree(
 }
 
 #[cfg(test)]
-mod tests;
+pub(super) mod tests;
