@@ -69,6 +69,11 @@ mod invariants;
 mod last_error;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod matrices;
+#[allow(
+    unsafe_code,
+    reason = "reads the caller's options through a raw pointer"
+)]
+mod options;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod patch;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
@@ -112,6 +117,10 @@ pub use matrices::{
     CagdBasis, cagd_basis_matrix, cagd_perturbation_error_factor, cagd_subdivision_levels,
     cagd_uniform_bspline_matrix,
 };
+pub use options::{
+    CagdErrorSpace, CagdMerge, CagdPatchConstraint, CagdPatchMethod, CagdReduceMethod,
+    CagdReduceOptions, CagdSplineStrategy,
+};
 pub use patch::{
     CagdTensorPatchList, CagdTriPatchList, cagd_report_patch, cagd_tensorpatch_reduce,
     cagd_tensorpatch_reduce_to_tolerance, cagd_tensorpatchlist_count, cagd_tensorpatchlist_free,
@@ -119,10 +128,8 @@ pub use patch::{
     cagd_tripatchlist_count, cagd_tripatchlist_free, cagd_tripatchlist_get,
 };
 pub use reduce::{
-    CAGD_EXACT_DEGREE_REL_TOL, CagdErrorSpace, CagdMerge, CagdPatchConstraint, CagdPatchMethod,
-    CagdReduceMethod, CagdReduceOptions, CagdSplineStrategy, cagd_curve_exact_degree,
-    cagd_curve_reduce, cagd_curve_reduce_batch, cagd_curve_reduce_exact,
-    cagd_curve_reduce_g1_optimal, cagd_curve_reduce_to_tolerance,
+    CAGD_EXACT_DEGREE_REL_TOL, cagd_curve_exact_degree, cagd_curve_reduce, cagd_curve_reduce_batch,
+    cagd_curve_reduce_exact, cagd_curve_reduce_g1_optimal, cagd_curve_reduce_to_tolerance,
     cagd_curve_reduce_to_tolerance_stepwise, cagd_reduce_operator, cagd_reduce_options_init,
     cagd_report_method_params,
 };

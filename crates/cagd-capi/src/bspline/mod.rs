@@ -1,6 +1,8 @@
 //! `CagdBSpline`: B-spline and NURBS curves — creation, scalar read-back, release. The
-//! arrays are read back in `bspline_arrays.rs`; the operations (evaluation, derivatives,
-//! knot insertion, Bézier extraction) are in `bspline_ops.rs`.
+//! arrays are read back in `arrays.rs`; the operations (evaluation, derivatives, knot
+//! insertion, Bézier extraction) are in `ops.rs`, the merge of Bézier segments in `merge.rs`,
+//! the reductions in `reduce.rs`, and the surface handle `CagdBSplineSurface` in
+//! `surface.rs`.
 
 use cagd_core::{BSplineCurve, Error};
 

@@ -1,15 +1,15 @@
 //! B-spline / NURBS degree reduction from C: general splines to a tolerance
-//! (`cagd_bspline_reduce`, strategies in `spline_strategy.rs`) and seed 001's uniform
+//! (`cagd_bspline_reduce`, strategies translated in `reduce/strategy.rs`) and seed 001's uniform
 //! pipeline (`cagd_bspline_reduce_uniform`); the report accessors are in
-//! `report_spline.rs`.
+//! `report/spline.rs`.
 
 use cagd_core::BSplineCurve;
 use cagd_reduce::{Merge, reduce_bspline, reduce_uniform_bspline, spline_max_deviation};
 
 use crate::boundary::{CResult, Failure, boundary, handle_ref, into_handle, nonnull, out_ref};
 use crate::bspline::{CagdBSpline, spline_failure};
-use crate::reduce::{CagdReduceOptions, read_options};
-use crate::reduce::{CagdSplineStrategy, spline_options};
+use crate::options::{CagdReduceOptions, read_options};
+use crate::options::{CagdSplineStrategy, spline_options};
 use crate::report::{CagdReport, ReportKind, SplineReport, StrategyReport};
 use crate::status::CagdStatus;
 

@@ -12,7 +12,7 @@ use crate::boundary::{
     into_handle, nonnull, out_ref, points_in, slice_in, slice_out,
 };
 use crate::bspline::spline_failure;
-use crate::reduce::{CagdReduceMethod, CagdReduceOptions, read_options};
+use crate::options::{CagdReduceMethod, CagdReduceOptions, read_options};
 use crate::report::{CagdReport, ReportKind};
 use crate::status::CagdStatus;
 
@@ -425,7 +425,7 @@ fn surface_reduce(
     r_out: &mut *mut CagdReport,
 ) -> CResult<()> {
     if let Some(tol) = tolerance {
-        let fit = crate::reduce::surface_fit_options(o, tol)?;
+        let fit = crate::options::surface_fit_options(o, tol)?;
         if let Some(fopts) = fit {
             let red = reduce_bspline_surface_fit(s, &fopts).map_err(spline_failure)?;
             let out = SurfaceOut {

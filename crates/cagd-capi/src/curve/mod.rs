@@ -1,5 +1,6 @@
 //! `CagdCurve`: Bézier curves (polynomial or rational) — creation, read-back, release.
-//! The operations (evaluation, elevation, subdivision) are in `curve_ops.rs`.
+//! The operations (evaluation, elevation, subdivision) are in `ops.rs`, the piecewise result
+//! `CagdCurveList` in `list.rs`; the reductions are in `reduce/`.
 
 use cagd_core::BezierCurve;
 

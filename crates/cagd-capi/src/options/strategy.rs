@@ -3,8 +3,8 @@
 
 use cagd_reduce::{BSplineOptions, BSplineStrategy, SurfaceFitOptions};
 
+use super::CagdReduceOptions;
 use crate::boundary::{CResult, Failure};
-use crate::reduce::CagdReduceOptions;
 
 /// The options of `cagd_bspline_reduce`: `spline_strategy` (with `method` for segments
 /// only), `target`, `tolerance`, `spline_continuity`, `measure`.
@@ -88,7 +88,7 @@ pub(crate) fn surface_fit_options(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::reduce::{CagdReduceMethod, CagdSplineStrategy};
+    use crate::options::{CagdReduceMethod, CagdSplineStrategy};
     use crate::status::CagdStatus;
     use cagd_reduce::Method;
 

@@ -1,7 +1,8 @@
-//! Tests of `reduce_options.rs`: the pinned codes and their translation, the
+//! Tests of the options (`mod.rs`): the pinned codes and their translation, the
 //! `struct_size` versioning rule.
 
 use super::*;
+use crate::status::CagdStatus;
 
 #[test]
 fn method_codes_are_pinned_and_translate() {

@@ -8,8 +8,8 @@ use cagd_reduce::{
 };
 
 use crate::boundary::{CResult, Failure, boundary, handle_ref, into_handle, nonnull, out_ref};
+use crate::options::{CagdReduceOptions, read_options};
 use crate::patch::{CagdTensorPatchList, CagdTriPatchList};
-use crate::reduce::{CagdReduceOptions, read_options};
 use crate::report::{CagdReport, ReportKind};
 use crate::status::CagdStatus;
 use crate::tensorpatch::CagdTensorPatch;

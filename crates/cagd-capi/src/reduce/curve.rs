@@ -9,7 +9,7 @@ use crate::boundary::{
     slice_out,
 };
 use crate::curve::CagdCurve;
-use crate::reduce::{CagdReduceOptions, read_options};
+use crate::options::{CagdReduceOptions, read_options};
 use crate::report::{CagdReport, ReportKind};
 use crate::status::CagdStatus;
 

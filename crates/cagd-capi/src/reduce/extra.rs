@@ -10,7 +10,7 @@ use crate::boundary::{
     CResult, Failure, OUT, boundary, handle_ref, into_handle, nonnull, out_ref, slice_out,
 };
 use crate::curve::CagdCurve;
-use crate::reduce::{CagdReduceMethod, CagdReduceOptions, read_options};
+use crate::options::{CagdReduceMethod, CagdReduceOptions, read_options};
 use crate::report::{CagdReport, ReportKind};
 use crate::status::CagdStatus;
 

@@ -9,7 +9,7 @@ use cagd_reduce::{
 use crate::boundary::{CResult, Failure, boundary, handle_ref, into_handle, nonnull, out_ref};
 use crate::bspline::CagdBSpline;
 use crate::curve::CagdCurve;
-use crate::reduce::{CagdReduceOptions, read_options};
+use crate::options::{CagdReduceOptions, read_options};
 use crate::report::{CagdReport, ReportKind};
 use crate::status::CagdStatus;
 

@@ -1,5 +1,6 @@
 //! `CagdReport`: what a reduction did and how far the result is from the input. The
-//! accessors that only piecewise reductions answer are in `report_piecewise.rs`.
+//! accessors that only piecewise reductions answer are in `piecewise.rs`,
+//! those of B-spline reductions in `spline.rs`.
 
 use cagd_reduce::{ErrorSpace, PatchReport, PiecewiseReport, ReducedPiece, Report};
 
@@ -12,8 +13,8 @@ pub use spline::{cagd_report_spline, cagd_report_spline_continuity, cagd_report_
 use crate::boundary::{
     CResult, Failure, boundary, boundary_void, free_handle, handle_ref, out_ref,
 };
-use crate::reduce::CagdErrorSpace;
-use crate::reduce::CagdSplineStrategy;
+use crate::options::CagdErrorSpace;
+use crate::options::CagdSplineStrategy;
 use crate::status::CagdStatus;
 
 /// Opaque handle to the report of a reduction: the method, the degrees, the certified
