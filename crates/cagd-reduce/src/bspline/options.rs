@@ -6,7 +6,8 @@ use cagd_core::BSplineCurve;
 
 use crate::Method;
 
-/// How [`reduce_bspline`] builds the degree-`m` spline before knot removal.
+/// How [`reduce_bspline`](crate::reduce_bspline) builds the degree-`m` spline before knot
+/// removal.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum BSplineStrategy {
     /// One least-squares fit on the whole degree-`m` spline space whose knots are the
@@ -26,7 +27,7 @@ pub enum BSplineStrategy {
     PieglTiller1995,
 }
 
-/// Options of [`reduce_bspline`].
+/// Options of [`reduce_bspline`](crate::reduce_bspline).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BSplineOptions {
     /// The target degree `m` (`1 <= m < p`).
@@ -58,7 +59,7 @@ impl BSplineOptions {
     }
 }
 
-/// What [`reduce_bspline`] did.
+/// What [`reduce_bspline`](crate::reduce_bspline) did.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BSplineReport {
     /// The strategy used.
