@@ -228,7 +228,7 @@ fn use_tree(
 fn absolute(here: &[String], path: &[String], modules: &HashSet<ModPath>) -> Option<ModPath> {
     let first = path.first()?;
     let mut base: ModPath = here.to_vec();
-    let mut rest = &path[..];
+    let mut rest = path;
     match first.as_str() {
         "crate" => {
             base.clear();
