@@ -4,8 +4,6 @@
 //! the reductions in `reduce.rs`, and the surface handle `CagdBSplineSurface` in
 //! `surface.rs`.
 
-use cagd_core::{BSplineCurve, Error};
-
 mod arrays;
 mod merge;
 mod ops;
@@ -23,6 +21,8 @@ pub use surface::{
     cagd_bsplinesurface_free, cagd_bsplinesurface_new, cagd_bsplinesurface_reduce,
     cagd_bsplinesurface_reduce_to_tolerance, cagd_bsplinesurface_shape,
 };
+
+use cagd_core::{BSplineCurve, Error};
 
 use crate::boundary::{
     CResult, Failure, boundary, boundary_void, free_handle, handle_ref, into_handle, nonnull,

@@ -2,8 +2,6 @@
 //! The operations (evaluation, elevation, subdivision) are in `ops.rs`, the piecewise result
 //! `CagdCurveList` in `list.rs`; the reductions are in `reduce/`.
 
-use cagd_core::BezierCurve;
-
 mod list;
 mod ops;
 
@@ -17,6 +15,8 @@ pub use ops::{
 };
 
 pub(crate) use list::Piece;
+
+use cagd_core::BezierCurve;
 
 use crate::boundary::{
     OUT, boundary, boundary_void, free_handle, handle_ref, into_handle, nonnull, out_ref,

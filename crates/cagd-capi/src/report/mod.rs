@@ -1,8 +1,6 @@
 //! `CagdReport`: what a reduction did and how far the result is from the input. The
-//! accessors that only piecewise reductions answer are in `piecewise.rs`,
-//! those of B-spline reductions in `spline.rs`.
-
-use cagd_reduce::{ErrorSpace, PatchReport, PiecewiseReport, ReducedPiece, Report};
+//! accessors that only piecewise reductions answer are in `piecewise.rs`, those of B-spline
+//! reductions in `spline.rs`.
 
 mod piecewise;
 mod spline;
@@ -10,11 +8,12 @@ mod spline;
 pub use piecewise::{cagd_report_pieces, cagd_report_piecewise, cagd_report_step_bounds};
 pub use spline::{cagd_report_spline, cagd_report_spline_continuity, cagd_report_spline_strategy};
 
+use cagd_reduce::{ErrorSpace, PatchReport, PiecewiseReport, ReducedPiece, Report};
+
 use crate::boundary::{
     CResult, Failure, boundary, boundary_void, free_handle, handle_ref, out_ref,
 };
-use crate::options::CagdErrorSpace;
-use crate::options::CagdSplineStrategy;
+use crate::options::{CagdErrorSpace, CagdSplineStrategy};
 use crate::status::CagdStatus;
 
 /// Opaque handle to the report of a reduction: the method, the degrees, the certified

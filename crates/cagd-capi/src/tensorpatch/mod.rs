@@ -1,13 +1,13 @@
 //! `CagdTensorPatch`: tensor-product Bézier patches — creation, read-back, release.
 
-use cagd_core::TensorPatch;
-
 mod ops;
 
 pub use ops::{
     cagd_tensorpatch_elevate, cagd_tensorpatch_eval, cagd_tensorpatch_subdivide_u,
     cagd_tensorpatch_subdivide_v,
 };
+
+use cagd_core::TensorPatch;
 
 use crate::boundary::{
     CResult, Failure, OUT, boundary, boundary_void, free_handle, handle_ref, into_handle, nonnull,

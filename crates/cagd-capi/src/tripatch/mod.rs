@@ -1,10 +1,10 @@
 //! `CagdTriPatch`: triangular Bézier patches — creation, read-back, release.
 
-use cagd_core::{TriPatch, tri_count};
-
 mod ops;
 
 pub use ops::{cagd_tripatch_elevate, cagd_tripatch_eval, cagd_tripatch_subdivide_midpoint};
+
+use cagd_core::{TriPatch, tri_count};
 
 use crate::boundary::{
     OUT, boundary, boundary_void, free_handle, handle_ref, into_handle, nonnull, out_ref,
