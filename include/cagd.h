@@ -36,26 +36,6 @@
 #include <stdint.h>
 
 /**
- * Trimming curves `u = f(v)` (intervals in `v`).
- */
-#define CAGD_TRIM_U_OF_V 0
-
-/**
- * Trimming curves `v = g(u)` (intervals in `u`).
- */
-#define CAGD_TRIM_V_OF_U 1
-
-/**
- * Keep `u <= f(v)` (resp. `v <= g(u)`).
- */
-#define CAGD_TRIM_KEEP_BELOW 0
-
-/**
- * Keep `u >= f(v)` (resp. `v >= g(u)`).
- */
-#define CAGD_TRIM_KEEP_ABOVE 1
-
-/**
  * Piece kind: a tensor-product patch of degree `(deg_u, deg_v)`.
  */
 #define CAGD_PIECE_TENSOR 1
@@ -89,6 +69,26 @@
  * 0 doubles: the triangle's `(u, v)` is the rectangle's `(s, t) = (u, v / (1 - u))`.
  */
 #define CAGD_DOMAIN_DEGENERATE_RECT 4
+
+/**
+ * Trimming curves `u = f(v)` (intervals in `v`).
+ */
+#define CAGD_TRIM_U_OF_V 0
+
+/**
+ * Trimming curves `v = g(u)` (intervals in `u`).
+ */
+#define CAGD_TRIM_V_OF_U 1
+
+/**
+ * Keep `u <= f(v)` (resp. `v <= g(u)`).
+ */
+#define CAGD_TRIM_KEEP_BELOW 0
+
+/**
+ * Keep `u >= f(v)` (resp. `v >= g(u)`).
+ */
+#define CAGD_TRIM_KEEP_ABOVE 1
 
 /**
  * The default relative tolerance of `cagd_curve_exact_degree`: a difference
@@ -1557,124 +1557,155 @@ CagdStatus cagd_bsplinesurface_reduce_to_tolerance(const struct CagdBSplineSurfa
                                                    struct CagdReport **report_out);
 
 /**
- * The triangle as one degenerate `m x n` rectangle, `m >= n` (SPEC-convert §15.4, eq.
- * 15.4.2; `m = n` for the square one): `P(s, t) = T(s, (1 - s) t)`.
+ * Releases a piece list. NULL is accepted and ignored; a non-NULL handle must be released
+ * exactly once and not used afterwards.
  *
  * Parameters:
- * - `patch` (in): the triangle of degree `n`.
- * - `weights` (in): NULL (polynomial) or `(n + 1)(n + 2) / 2` weights `> 0` in the order of
- *   the points (a rational patch; the result is rational).
- * - `m` (in): the rectangle's `s`-degree, `n <= m <= 64`.
- * - `list_out` (out): on `CAGD_OK`, one tensor piece with the bilinear domain
- *   `[(0,0), (1,0), (0,1), (1,0)]`, owned by the caller (`cagd_patchpiecelist_free`).
+ * - `list` (in, consumed): a `CagdPatchPieceList **` output of a cagd function, or NULL.
+ *
+ * Does not change `cagd_last_error_message()`.
+ *
+ * # Safety
+ * `list` must be NULL or a live handle created by cagd that is not used afterwards.
+ */
+void cagd_patchpiecelist_free(struct CagdPatchPieceList *list);
+
+/**
+ * Reads the number of pieces.
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `count_out` (out): on `CAGD_OK`, the number of pieces.
  *
  * Returns:
- * - `CAGD_OK`: `*list_out` is written.
- * - `CAGD_ERR_NULL_POINTER`: `patch` or `list_out` is NULL.
- * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
- * - `CAGD_ERR_BAD_DEGREE_PAIR`: `m < n`. `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `m > 64`.
+ * - `CAGD_OK`: `*count_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `count_out` is NULL.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
- * `patch` NULL or a live handle; `weights` NULL or the documented number of doubles;
- * `list_out` NULL or writable.
+ * `list` must be NULL or a live list handle; `count_out` NULL or writable.
  */
-CagdStatus cagd_tripatch_to_rect(const struct CagdTriPatch *patch,
-                                 const double *weights,
-                                 size_t m,
-                                 struct CagdPatchPieceList **list_out);
+CagdStatus cagd_patchpiecelist_count(const struct CagdPatchPieceList *list, size_t *count_out);
 
 /**
- * The triangle over the quadrilateral `X00, X10, X01, X11` of its domain as one
- * non-degenerate `n x n` rectangle, `P(s, t) = T(X(s, t))` with the bilinear `X`
- * (SPEC-convert §15.5, general form; region D1 of eq. 15.5.3 is `[(0,0), (b,0), (0,d),
- * (a,c)]`).
+ * Describes piece `i`: its kind, degrees, dimension, whether it has weights, and the kind
+ * of its domain.
  *
  * Parameters:
- * - `patch`, `weights` (in): as `cagd_tripatch_to_rect`.
- * - `corners` (in): 8 doubles `X00.u, X00.v, X10.u, X10.v, X01.u, X01.v, X11.u, X11.v`,
- *   each in the closed unit triangle.
- * - `list_out` (out): on `CAGD_OK`, one tensor piece with that bilinear domain.
+ * - `list` (in): the list; `i` (in): the piece index, `0 <= i < count`.
+ * - `kind_out` (out): `CAGD_PIECE_TENSOR` or `CAGD_PIECE_TRIANGLE`.
+ * - `deg_u_out`, `deg_v_out` (out): the degrees `(m, n)` of a tensor piece; a triangle's
+ *   degree `n` in both.
+ * - `dim_out` (out): coordinates per point.
+ * - `rational_out` (out): 1 when the piece has weights, else 0.
+ * - `domain_kind_out` (out): `CAGD_DOMAIN_BILINEAR`, `CAGD_DOMAIN_TRIANGLE`,
+ *   `CAGD_DOMAIN_RULED` or `CAGD_DOMAIN_DEGENERATE_RECT`.
+ *
+ * The piece has `(deg_u + 1)(deg_v + 1)` (tensor, i-major) or `(n + 1)(n + 2) / 2`
+ * (triangle, i-major) points. All outputs are written only on `CAGD_OK`.
  *
  * Returns:
- * - `CAGD_OK`: `*list_out` is written.
- * - `CAGD_ERR_NULL_POINTER`: `patch`, `corners` or `list_out` is NULL.
- * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
- * - `CAGD_ERR_INVALID_ARGUMENT`: a corner is not finite or outside the triangle, or a
- *   pointer is misaligned.
- * - `CAGD_ERR_DEGENERATE_SPLIT`: the map folds (Jacobian `<= 0` at a corner).
+ * - `CAGD_OK`: every output is written.
+ * - `CAGD_ERR_NULL_POINTER`: any pointer argument is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
- * As `cagd_tripatch_to_rect`; `corners` NULL or 8 readable doubles.
+ * `list` must be NULL or a live list handle; each output NULL or writable.
  */
-CagdStatus cagd_tripatch_to_quad(const struct CagdTriPatch *patch,
-                                 const double *weights,
-                                 const double *corners,
-                                 struct CagdPatchPieceList **list_out);
+CagdStatus cagd_patchpiecelist_info(const struct CagdPatchPieceList *list,
+                                    size_t i,
+                                    int32_t *kind_out,
+                                    size_t *deg_u_out,
+                                    size_t *deg_v_out,
+                                    size_t *dim_out,
+                                    int32_t *rational_out,
+                                    int32_t *domain_kind_out);
 
 /**
- * The triangle as three non-degenerate `n x n` rectangles through the inner point
- * `(inner_u, inner_v)` and the edge points `G = (g, 0)`, `K = (k, 1 - k)`, `H = (0, h)`
- * (SPEC-convert §15.5; the centroid and `g = k = h = 0.5` are the usual choice). Pieces in
- * the order `D1 = (O, G, H, P)`, `D2 = (U, K, G, P)`, `D3 = (V, H, K, P)`, each with its
- * bilinear domain; neighbours share their boundary nets.
+ * Copies the control points of piece `i` (Euclidean, i-major, `n_points * dim` doubles).
  *
  * Parameters:
- * - `patch`, `weights` (in): as `cagd_tripatch_to_rect`.
- * - `inner_u`, `inner_v` (in): the inner point, `> 0` with sum `< 1`.
- * - `g`, `k`, `h` (in): the edge points' parameters, each in `(0, 1)`.
- * - `list_out` (out): on `CAGD_OK`, the three pieces.
+ * - `list` (in): the list; `i` (in): the piece index.
+ * - `out` (out): `out_cap` doubles; may be NULL when `out_cap == 0` (size query).
+ * - `out_needed` (out): the number of doubles needed, also written on
+ *   `CAGD_ERR_BUFFER_TOO_SMALL`.
  *
  * Returns:
- * - `CAGD_OK`: `*list_out` is written.
- * - `CAGD_ERR_NULL_POINTER`: `patch` or `list_out` is NULL.
- * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
- * - `CAGD_ERR_INVALID_ARGUMENT`: a point outside its range, or a pointer misaligned.
- * - `CAGD_ERR_DEGENERATE_SPLIT`: one of the three quadrilaterals folds.
+ * - `CAGD_OK`: the points are in `out[0 .. *out_needed]`.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < *out_needed`; `out` untouched.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
- * As `cagd_tripatch_to_rect`.
+ * `list` NULL or a live list; `out` NULL or `out_cap` writable doubles; `out_needed` NULL
+ * or writable.
  */
-CagdStatus cagd_tripatch_to_three_rects(const struct CagdTriPatch *patch,
-                                        const double *weights,
-                                        double inner_u,
-                                        double inner_v,
-                                        double g,
-                                        double k,
-                                        double h,
-                                        struct CagdPatchPieceList **list_out);
+CagdStatus cagd_patchpiecelist_points(const struct CagdPatchPieceList *list,
+                                      size_t i,
+                                      double *out,
+                                      size_t out_cap,
+                                      size_t *out_needed);
 
 /**
- * An `n x n` rectangle that is a degenerate triangle (Theorem 15.4.2) back to its triangle
- * of degree `n` (SPEC-convert §15.4, eq. 15.4.4 inverted: row `i` reduced exactly from
- * degree `n` to `n - i`). `T(u, v) = P(u, v / (1 - u))`.
+ * Copies the weights of a rational piece `i` (`n_points` doubles, in the order of the
+ * points).
  *
  * Parameters:
- * - `patch` (in): the `n x n` tensor patch; `weights` (in): NULL or `(n + 1)^2` weights.
- * - `tol` (in): the largest relative residual accepted (e.g. `1e-12`), finite `> 0`.
- * - `list_out` (out): on `CAGD_OK`, one triangle piece of domain kind
- *   `CAGD_DOMAIN_DEGENERATE_RECT`.
+ * - `list` (in): the list; `i` (in): the piece index.
+ * - `out` (out): `out_cap` doubles; may be NULL when `out_cap == 0` (size query).
+ * - `out_needed` (out): the number of doubles needed, also written on
+ *   `CAGD_ERR_BUFFER_TOO_SMALL`.
  *
  * Returns:
- * - `CAGD_OK`: `*list_out` is written.
- * - `CAGD_ERR_NULL_POINTER`: `patch` or `list_out` is NULL.
- * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight (given or reduced) is `<= 0`.
- * - `CAGD_ERR_BAD_DEGREE_PAIR`: the patch is not square.
- * - `CAGD_ERR_INVALID_ARGUMENT`: `tol` not finite `> 0`, or a pointer misaligned.
- * - `CAGD_ERR_NOT_DEGENERATE`: the relative residual is above `tol` (the message gives it).
+ * - `CAGD_OK`: the weights are in `out[0 .. *out_needed]`.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the piece is polynomial (nothing written, not even
+ *   `*out_needed`).
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < *out_needed`; `out` untouched.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
- * `patch` NULL or a live handle; `weights` NULL or `(n + 1)^2` readable doubles;
- * `list_out` NULL or writable.
+ * As `cagd_patchpiecelist_points`.
  */
-CagdStatus cagd_tensorpatch_to_triangle(const struct CagdTensorPatch *patch,
-                                        const double *weights,
-                                        double tol,
-                                        struct CagdPatchPieceList **list_out);
+CagdStatus cagd_patchpiecelist_weights(const struct CagdPatchPieceList *list,
+                                       size_t i,
+                                       double *out,
+                                       size_t out_cap,
+                                       size_t *out_needed);
+
+/**
+ * Copies the domain of piece `i`: the part of the input's `(u, v)` domain it covers, laid
+ * out as its domain kind says (`CAGD_DOMAIN_BILINEAR`: 8 doubles; `CAGD_DOMAIN_TRIANGLE`:
+ * 6; `CAGD_DOMAIN_RULED`: `4 (k + 1)`; `CAGD_DOMAIN_DEGENERATE_RECT`: 0).
+ *
+ * Parameters:
+ * - `list` (in): the list; `i` (in): the piece index.
+ * - `out` (out): `out_cap` doubles; may be NULL when `out_cap == 0` (size query).
+ * - `out_needed` (out): the number of doubles needed, also written on
+ *   `CAGD_ERR_BUFFER_TOO_SMALL`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the domain is in `out[0 .. *out_needed]`.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < *out_needed`; `out` untouched.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * As `cagd_patchpiecelist_points`.
+ */
+CagdStatus cagd_patchpiecelist_domain(const struct CagdPatchPieceList *list,
+                                      size_t i,
+                                      double *out,
+                                      size_t out_cap,
+                                      size_t *out_needed);
 
 /**
  * An `m x n` rectangle as two triangles of degree `m + n` (SPEC-convert §15.6.3): piece 0
@@ -1808,6 +1839,126 @@ CagdStatus cagd_tensorpatch_trim(const struct CagdTensorPatch *patch,
                                  const double *coeffs,
                                  size_t n_segments,
                                  struct CagdPatchPieceList **list_out);
+
+/**
+ * The triangle as one degenerate `m x n` rectangle, `m >= n` (SPEC-convert §15.4, eq.
+ * 15.4.2; `m = n` for the square one): `P(s, t) = T(s, (1 - s) t)`.
+ *
+ * Parameters:
+ * - `patch` (in): the triangle of degree `n`.
+ * - `weights` (in): NULL (polynomial) or `(n + 1)(n + 2) / 2` weights `> 0` in the order of
+ *   the points (a rational patch; the result is rational).
+ * - `m` (in): the rectangle's `s`-degree, `n <= m <= 64`.
+ * - `list_out` (out): on `CAGD_OK`, one tensor piece with the bilinear domain
+ *   `[(0,0), (1,0), (0,1), (1,0)]`, owned by the caller (`cagd_patchpiecelist_free`).
+ *
+ * Returns:
+ * - `CAGD_OK`: `*list_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `list_out` is NULL.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `m < n`. `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `m > 64`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` NULL or a live handle; `weights` NULL or the documented number of doubles;
+ * `list_out` NULL or writable.
+ */
+CagdStatus cagd_tripatch_to_rect(const struct CagdTriPatch *patch,
+                                 const double *weights,
+                                 size_t m,
+                                 struct CagdPatchPieceList **list_out);
+
+/**
+ * The triangle over the quadrilateral `X00, X10, X01, X11` of its domain as one
+ * non-degenerate `n x n` rectangle, `P(s, t) = T(X(s, t))` with the bilinear `X`
+ * (SPEC-convert §15.5, general form; region D1 of eq. 15.5.3 is `[(0,0), (b,0), (0,d),
+ * (a,c)]`).
+ *
+ * Parameters:
+ * - `patch`, `weights` (in): as `cagd_tripatch_to_rect`.
+ * - `corners` (in): 8 doubles `X00.u, X00.v, X10.u, X10.v, X01.u, X01.v, X11.u, X11.v`,
+ *   each in the closed unit triangle.
+ * - `list_out` (out): on `CAGD_OK`, one tensor piece with that bilinear domain.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*list_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch`, `corners` or `list_out` is NULL.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a corner is not finite or outside the triangle, or a
+ *   pointer is misaligned.
+ * - `CAGD_ERR_DEGENERATE_SPLIT`: the map folds (Jacobian `<= 0` at a corner).
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * As `cagd_tripatch_to_rect`; `corners` NULL or 8 readable doubles.
+ */
+CagdStatus cagd_tripatch_to_quad(const struct CagdTriPatch *patch,
+                                 const double *weights,
+                                 const double *corners,
+                                 struct CagdPatchPieceList **list_out);
+
+/**
+ * The triangle as three non-degenerate `n x n` rectangles through the inner point
+ * `(inner_u, inner_v)` and the edge points `G = (g, 0)`, `K = (k, 1 - k)`, `H = (0, h)`
+ * (SPEC-convert §15.5; the centroid and `g = k = h = 0.5` are the usual choice). Pieces in
+ * the order `D1 = (O, G, H, P)`, `D2 = (U, K, G, P)`, `D3 = (V, H, K, P)`, each with its
+ * bilinear domain; neighbours share their boundary nets.
+ *
+ * Parameters:
+ * - `patch`, `weights` (in): as `cagd_tripatch_to_rect`.
+ * - `inner_u`, `inner_v` (in): the inner point, `> 0` with sum `< 1`.
+ * - `g`, `k`, `h` (in): the edge points' parameters, each in `(0, 1)`.
+ * - `list_out` (out): on `CAGD_OK`, the three pieces.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*list_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `list_out` is NULL.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a point outside its range, or a pointer misaligned.
+ * - `CAGD_ERR_DEGENERATE_SPLIT`: one of the three quadrilaterals folds.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * As `cagd_tripatch_to_rect`.
+ */
+CagdStatus cagd_tripatch_to_three_rects(const struct CagdTriPatch *patch,
+                                        const double *weights,
+                                        double inner_u,
+                                        double inner_v,
+                                        double g,
+                                        double k,
+                                        double h,
+                                        struct CagdPatchPieceList **list_out);
+
+/**
+ * An `n x n` rectangle that is a degenerate triangle (Theorem 15.4.2) back to its triangle
+ * of degree `n` (SPEC-convert §15.4, eq. 15.4.4 inverted: row `i` reduced exactly from
+ * degree `n` to `n - i`). `T(u, v) = P(u, v / (1 - u))`.
+ *
+ * Parameters:
+ * - `patch` (in): the `n x n` tensor patch; `weights` (in): NULL or `(n + 1)^2` weights.
+ * - `tol` (in): the largest relative residual accepted (e.g. `1e-12`), finite `> 0`.
+ * - `list_out` (out): on `CAGD_OK`, one triangle piece of domain kind
+ *   `CAGD_DOMAIN_DEGENERATE_RECT`.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*list_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `list_out` is NULL.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight (given or reduced) is `<= 0`.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: the patch is not square.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `tol` not finite `> 0`, or a pointer misaligned.
+ * - `CAGD_ERR_NOT_DEGENERATE`: the relative residual is above `tol` (the message gives it).
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` NULL or a live handle; `weights` NULL or `(n + 1)^2` readable doubles;
+ * `list_out` NULL or writable.
+ */
+CagdStatus cagd_tensorpatch_to_triangle(const struct CagdTensorPatch *patch,
+                                        const double *weights,
+                                        double tol,
+                                        struct CagdPatchPieceList **list_out);
 
 /**
  * Creates a polynomial Bézier curve of degree `n_points - 1`.
@@ -2883,157 +3034,6 @@ CagdStatus cagd_report_patch(const struct CagdReport *report,
                              int32_t *patch_method_out,
                              size_t *degrees_out,
                              size_t *n_pieces_out);
-
-/**
- * Releases a piece list. NULL is accepted and ignored; a non-NULL handle must be released
- * exactly once and not used afterwards.
- *
- * Parameters:
- * - `list` (in, consumed): a `CagdPatchPieceList **` output of a cagd function, or NULL.
- *
- * Does not change `cagd_last_error_message()`.
- *
- * # Safety
- * `list` must be NULL or a live handle created by cagd that is not used afterwards.
- */
-void cagd_patchpiecelist_free(struct CagdPatchPieceList *list);
-
-/**
- * Reads the number of pieces.
- *
- * Parameters:
- * - `list` (in): the list.
- * - `count_out` (out): on `CAGD_OK`, the number of pieces.
- *
- * Returns:
- * - `CAGD_OK`: `*count_out` is written.
- * - `CAGD_ERR_NULL_POINTER`: `list` or `count_out` is NULL.
- * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
- * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
- *
- * # Safety
- * `list` must be NULL or a live list handle; `count_out` NULL or writable.
- */
-CagdStatus cagd_patchpiecelist_count(const struct CagdPatchPieceList *list, size_t *count_out);
-
-/**
- * Describes piece `i`: its kind, degrees, dimension, whether it has weights, and the kind
- * of its domain.
- *
- * Parameters:
- * - `list` (in): the list; `i` (in): the piece index, `0 <= i < count`.
- * - `kind_out` (out): `CAGD_PIECE_TENSOR` or `CAGD_PIECE_TRIANGLE`.
- * - `deg_u_out`, `deg_v_out` (out): the degrees `(m, n)` of a tensor piece; a triangle's
- *   degree `n` in both.
- * - `dim_out` (out): coordinates per point.
- * - `rational_out` (out): 1 when the piece has weights, else 0.
- * - `domain_kind_out` (out): `CAGD_DOMAIN_BILINEAR`, `CAGD_DOMAIN_TRIANGLE`,
- *   `CAGD_DOMAIN_RULED` or `CAGD_DOMAIN_DEGENERATE_RECT`.
- *
- * The piece has `(deg_u + 1)(deg_v + 1)` (tensor, i-major) or `(n + 1)(n + 2) / 2`
- * (triangle, i-major) points. All outputs are written only on `CAGD_OK`.
- *
- * Returns:
- * - `CAGD_OK`: every output is written.
- * - `CAGD_ERR_NULL_POINTER`: any pointer argument is NULL.
- * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
- * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
- *
- * # Safety
- * `list` must be NULL or a live list handle; each output NULL or writable.
- */
-CagdStatus cagd_patchpiecelist_info(const struct CagdPatchPieceList *list,
-                                    size_t i,
-                                    int32_t *kind_out,
-                                    size_t *deg_u_out,
-                                    size_t *deg_v_out,
-                                    size_t *dim_out,
-                                    int32_t *rational_out,
-                                    int32_t *domain_kind_out);
-
-/**
- * Copies the control points of piece `i` (Euclidean, i-major, `n_points * dim` doubles).
- *
- * Parameters:
- * - `list` (in): the list; `i` (in): the piece index.
- * - `out` (out): `out_cap` doubles; may be NULL when `out_cap == 0` (size query).
- * - `out_needed` (out): the number of doubles needed, also written on
- *   `CAGD_ERR_BUFFER_TOO_SMALL`.
- *
- * Returns:
- * - `CAGD_OK`: the points are in `out[0 .. *out_needed]`.
- * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < *out_needed`; `out` untouched.
- * - `CAGD_ERR_NULL_POINTER`: `list` or `out_needed` is NULL, or `out` is NULL with
- *   `out_cap > 0`.
- * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
- * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
- *
- * # Safety
- * `list` NULL or a live list; `out` NULL or `out_cap` writable doubles; `out_needed` NULL
- * or writable.
- */
-CagdStatus cagd_patchpiecelist_points(const struct CagdPatchPieceList *list,
-                                      size_t i,
-                                      double *out,
-                                      size_t out_cap,
-                                      size_t *out_needed);
-
-/**
- * Copies the weights of a rational piece `i` (`n_points` doubles, in the order of the
- * points).
- *
- * Parameters:
- * - `list` (in): the list; `i` (in): the piece index.
- * - `out` (out): `out_cap` doubles; may be NULL when `out_cap == 0` (size query).
- * - `out_needed` (out): the number of doubles needed, also written on
- *   `CAGD_ERR_BUFFER_TOO_SMALL`.
- *
- * Returns:
- * - `CAGD_OK`: the weights are in `out[0 .. *out_needed]`.
- * - `CAGD_ERR_NOT_AVAILABLE`: the piece is polynomial (nothing written, not even
- *   `*out_needed`).
- * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < *out_needed`; `out` untouched.
- * - `CAGD_ERR_NULL_POINTER`: `list` or `out_needed` is NULL, or `out` is NULL with
- *   `out_cap > 0`.
- * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
- * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
- *
- * # Safety
- * As `cagd_patchpiecelist_points`.
- */
-CagdStatus cagd_patchpiecelist_weights(const struct CagdPatchPieceList *list,
-                                       size_t i,
-                                       double *out,
-                                       size_t out_cap,
-                                       size_t *out_needed);
-
-/**
- * Copies the domain of piece `i`: the part of the input's `(u, v)` domain it covers, laid
- * out as its domain kind says (`CAGD_DOMAIN_BILINEAR`: 8 doubles; `CAGD_DOMAIN_TRIANGLE`:
- * 6; `CAGD_DOMAIN_RULED`: `4 (k + 1)`; `CAGD_DOMAIN_DEGENERATE_RECT`: 0).
- *
- * Parameters:
- * - `list` (in): the list; `i` (in): the piece index.
- * - `out` (out): `out_cap` doubles; may be NULL when `out_cap == 0` (size query).
- * - `out_needed` (out): the number of doubles needed, also written on
- *   `CAGD_ERR_BUFFER_TOO_SMALL`.
- *
- * Returns:
- * - `CAGD_OK`: the domain is in `out[0 .. *out_needed]`.
- * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < *out_needed`; `out` untouched.
- * - `CAGD_ERR_NULL_POINTER`: `list` or `out_needed` is NULL, or `out` is NULL with
- *   `out_cap > 0`.
- * - `CAGD_ERR_INVALID_ARGUMENT`: `i >= count`, or a pointer is misaligned.
- * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
- *
- * # Safety
- * As `cagd_patchpiecelist_points`.
- */
-CagdStatus cagd_patchpiecelist_domain(const struct CagdPatchPieceList *list,
-                                      size_t i,
-                                      double *out,
-                                      size_t out_cap,
-                                      size_t *out_needed);
 
 /**
  * Reduces a curve of degree `n` to degree `opts->target` with `opts->method`, returning
