@@ -59,6 +59,10 @@ pub enum CagdStatus {
     ERR_NO_CONVERGENCE = 41,
     /// A linear system that must be solved is singular.
     ERR_SINGULAR = 42,
+    /// A condition of a form conversion is not met (SPEC-convert §15.1.8, §15.3.13–16: an
+    /// inverse NURBS weight would be `<= 0`; §15.2: Bézier weights that are not separable
+    /// `G_i H_j`). The message names the condition, the failing weight and its value.
+    ERR_CONVERSION_CONDITION = 43,
     /// A bug inside cagd was caught at the boundary (a Rust panic); please report it with
     /// the message.
     ERR_PANIC = 99,
@@ -85,6 +89,7 @@ impl CagdStatus {
             CagdStatus::ERR_CONDITION_NOT_MET => c"CAGD_ERR_CONDITION_NOT_MET",
             CagdStatus::ERR_NO_CONVERGENCE => c"CAGD_ERR_NO_CONVERGENCE",
             CagdStatus::ERR_SINGULAR => c"CAGD_ERR_SINGULAR",
+            CagdStatus::ERR_CONVERSION_CONDITION => c"CAGD_ERR_CONVERSION_CONDITION",
             CagdStatus::ERR_PANIC => c"CAGD_ERR_PANIC",
         }
     }
@@ -96,7 +101,7 @@ impl CagdStatus {
 }
 
 /// Every status, in numeric order (used by tests and by `cagd_status_name`).
-pub(crate) const ALL_STATUSES: [CagdStatus; 18] = [
+pub(crate) const ALL_STATUSES: [CagdStatus; 19] = [
     CagdStatus::OK,
     CagdStatus::ERR_NULL_POINTER,
     CagdStatus::ERR_BUFFER_TOO_SMALL,
@@ -114,6 +119,7 @@ pub(crate) const ALL_STATUSES: [CagdStatus; 18] = [
     CagdStatus::ERR_CONDITION_NOT_MET,
     CagdStatus::ERR_NO_CONVERGENCE,
     CagdStatus::ERR_SINGULAR,
+    CagdStatus::ERR_CONVERSION_CONDITION,
     CagdStatus::ERR_PANIC,
 ];
 
@@ -141,6 +147,7 @@ pub fn status_of_core(e: &Error) -> CagdStatus {
         Error::ConditionNotMet { .. } => CagdStatus::ERR_CONDITION_NOT_MET,
         Error::NoConvergence { .. } => CagdStatus::ERR_NO_CONVERGENCE,
         Error::Singular { .. } => CagdStatus::ERR_SINGULAR,
+        Error::ConversionCondition { .. } => CagdStatus::ERR_CONVERSION_CONDITION,
         _ => CagdStatus::ERR_INVALID_ARGUMENT,
     }
 }
@@ -170,7 +177,7 @@ mod tests {
 
     #[test]
     fn discriminants_are_pinned() {
-        let expected: [(CagdStatus, i32); 18] = [
+        let expected: [(CagdStatus, i32); 19] = [
             (CagdStatus::OK, 0),
             (CagdStatus::ERR_NULL_POINTER, 1),
             (CagdStatus::ERR_BUFFER_TOO_SMALL, 2),
@@ -188,6 +195,7 @@ mod tests {
             (CagdStatus::ERR_CONDITION_NOT_MET, 40),
             (CagdStatus::ERR_NO_CONVERGENCE, 41),
             (CagdStatus::ERR_SINGULAR, 42),
+            (CagdStatus::ERR_CONVERSION_CONDITION, 43),
             (CagdStatus::ERR_PANIC, 99),
         ];
         for (i, (s, code)) in expected.into_iter().enumerate() {
@@ -211,7 +219,7 @@ mod tests {
         for s in ALL_STATUSES {
             assert_eq!(name_of(s as i32), format!("CAGD_{s:?}"));
         }
-        for code in [-1, 6, 19, 43, 98, 100, i32::MIN, i32::MAX] {
+        for code in [-1, 6, 19, 44, 98, 100, i32::MIN, i32::MAX] {
             assert_eq!(name_of(code), "CAGD_ERR_UNKNOWN", "{code}");
         }
     }
@@ -319,6 +327,15 @@ mod tests {
                 S::ERR_NO_CONVERGENCE,
             ),
             (Error::Singular { what: "Gram" }, S::ERR_SINGULAR),
+            (
+                Error::ConversionCondition {
+                    condition: "15.1.8",
+                    what: "inverse weight",
+                    index: 0,
+                    value: -1.0,
+                },
+                S::ERR_CONVERSION_CONDITION,
+            ),
         ];
         for (e, s) in cases {
             assert_eq!(status_of_core(&e), s, "{e:?}");
