@@ -9,6 +9,7 @@
 //! An algorithm no table knows is a failure, never a skip.
 
 mod compare;
+mod convert_nurbs;
 mod fields;
 
 use std::path::Path;
@@ -43,7 +44,7 @@ pub(crate) enum Outcome {
 pub(crate) type Runner = fn(&Vector<'_>) -> Result<Outcome, String>;
 
 /// The dispatch tables, one per spec family.
-const TABLES: &[&[(&str, Runner)]] = &[];
+const TABLES: &[&[(&str, Runner)]] = &[convert_nurbs::TABLE];
 
 /// The runner of `algorithm`, if any table knows it.
 pub(crate) fn lookup(algorithm: &str) -> Option<Runner> {
