@@ -10,6 +10,9 @@ usage:
               [--merge exact|lossy] [--strategy fit|segments|piegl-tiller-1995]
               [-i FILE] [-o FILE] [--svg FILE]
   cagd merge [--continuity K] [--tol T] [-i FILE] [-o FILE]
+  cagd convert --to bezier|nurbs [--standard-form] [--tol T] [-i FILE] [-o FILE] [--svg FILE]
+               [--inner U,V] [--edges G,K,H] [--split-line F1,F0] [--split-curve A0,A1,...]
+               [--trim FILE]
   cagd demo [--out DIR]
   cagd check FILE...
   cagd --help
@@ -39,6 +42,18 @@ degree-m segments (--continuity K, default 0, K < m). The joints are checked: C0
 T, C^K by a certified knot removal within T. --tol T defaults to
 1e-9 * max(1, largest |coordinate|) (the homogeneous coordinates (w x, w) of rational
 segments included); the report gives the T used.
+
+convert converts between NURBS and (rational) Bézier form (SPEC-convert §15.1-15.3).
+--to bezier: a \"bspline\" becomes its pieces as the \"beziers\" object merge reads
+(segments, weights or null, breaks = the distinct knot values), a \"bspline-surface\" its
+\"bezier-patches\" (degree, breaks_u, breaks_v, patches u outer / v inner, weights);
+--to nurbs: a \"beziers\" object, one \"bezier\", or \"bezier-patches\" become one
+\"bspline\" / \"bspline-surface\" with the highest continuity the pieces have at each
+joint (joint tolerance --tol T in homogeneous coordinates, default 1e-12 times the largest
+one); the two directions round-trip. A \"report\" gives pieces, continuity and the
+largest difference measured. --standard-form writes rational Bézier output with end weights
+1. --svg draws the curve with both control polygons. The patch options (--inner, --edges,
+--split-line, --split-curve, --trim; triangle and tensor inputs) are not yet supported.
 
 check runs every vector of spec-vector files (the format of ../shared/spec/vectors-*.json:
 a list of {id, algorithm, params, input, expected, tol}) through the library by its
@@ -89,11 +104,29 @@ pub(crate) struct MergeArgs {
     pub(crate) output: Option<PathBuf>,
 }
 
+/// Options of `cagd convert` (NURBS ↔ Bézier here; the patch options belong to the patch
+/// conversions of SPEC-convert §15.4–15.7).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub(crate) struct ConvertArgs {
+    pub(crate) to: Option<String>,
+    pub(crate) inner: Option<(f64, f64)>,
+    pub(crate) edges: Option<Vec<f64>>,
+    pub(crate) split_line: Option<(f64, f64)>,
+    pub(crate) split_curve: Option<Vec<f64>>,
+    pub(crate) trim: Option<PathBuf>,
+    pub(crate) standard_form: bool,
+    pub(crate) tol: Option<f64>,
+    pub(crate) input: Option<PathBuf>,
+    pub(crate) output: Option<PathBuf>,
+    pub(crate) svg: Option<PathBuf>,
+}
+
 /// A parsed command line.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) enum Command {
     Reduce(ReduceArgs),
     Merge(MergeArgs),
+    Convert(ConvertArgs),
     Demo { out: PathBuf },
     Check { files: Vec<PathBuf> },
     Help,
@@ -140,6 +173,41 @@ fn parse_merge<'a>(mut it: impl Iterator<Item = &'a String>) -> Result<MergeArgs
     Ok(m)
 }
 
+/// A comma-separated list of numbers (`--edges G,K,H`).
+fn parse_list(s: &str, flag: &str) -> Result<Vec<f64>, String> {
+    s.split(',').map(|x| parse_num(x.trim(), flag)).collect()
+}
+
+/// Exactly two comma-separated numbers (`--inner U,V`).
+fn parse_pair(s: &str, flag: &str) -> Result<(f64, f64), String> {
+    match parse_list(s, flag)?.as_slice() {
+        [a, b] => Ok((*a, *b)),
+        _ => Err(format!("{flag}: expected two numbers A,B, got {s:?}")),
+    }
+}
+
+/// The options of `cagd convert` (the arguments after `convert`).
+fn parse_convert<'a>(mut it: impl Iterator<Item = &'a String>) -> Result<ConvertArgs, String> {
+    let mut c = ConvertArgs::default();
+    while let Some(a) = it.next() {
+        match a.as_str() {
+            "--to" => c.to = Some(value(&mut it, a)?.to_string()),
+            "--inner" => c.inner = Some(parse_pair(value(&mut it, a)?, a)?),
+            "--edges" => c.edges = Some(parse_list(value(&mut it, a)?, a)?),
+            "--split-line" => c.split_line = Some(parse_pair(value(&mut it, a)?, a)?),
+            "--split-curve" => c.split_curve = Some(parse_list(value(&mut it, a)?, a)?),
+            "--trim" => c.trim = Some(PathBuf::from(value(&mut it, a)?)),
+            "--standard-form" => c.standard_form = true,
+            "--tol" => c.tol = Some(parse_tol(value(&mut it, a)?)?),
+            "-i" | "--input" => c.input = Some(PathBuf::from(value(&mut it, a)?)),
+            "-o" | "--output" => c.output = Some(PathBuf::from(value(&mut it, a)?)),
+            "--svg" => c.svg = Some(PathBuf::from(value(&mut it, a)?)),
+            other => return Err(format!("convert: unknown argument {other:?}")),
+        }
+    }
+    Ok(c)
+}
+
 /// Parses the arguments after the program name.
 pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
     let mut it = args.iter();
@@ -159,6 +227,7 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
             Ok(Command::Demo { out })
         }
         "merge" => parse_merge(it).map(Command::Merge),
+        "convert" => parse_convert(it).map(Command::Convert),
         "check" => {
             let files: Vec<PathBuf> = it.map(PathBuf::from).collect();
             if files.is_empty() {
@@ -273,6 +342,40 @@ mod tests {
         assert_eq!(
             parse(&args("merge --to 3")).unwrap_err(),
             "merge: unknown argument \"--to\""
+        );
+    }
+
+    #[test]
+    fn convert_arguments() {
+        let Command::Convert(c) = parse(&args(
+            "convert --to nurbs --inner 0.25,0.5 --edges 1,2,3 --split-line 0.5,-1 \
+             --split-curve 0,1,2 --trim t.json --standard-form --tol 1e-9 -i a -o b --svg c",
+        ))
+        .unwrap() else {
+            panic!("not convert");
+        };
+        assert_eq!(c.to.as_deref(), Some("nurbs"));
+        assert_eq!(c.inner, Some((0.25, 0.5)));
+        assert_eq!(c.edges, Some(vec![1.0, 2.0, 3.0]));
+        assert_eq!(c.split_line, Some((0.5, -1.0)));
+        assert_eq!(c.split_curve, Some(vec![0.0, 1.0, 2.0]));
+        assert_eq!(c.trim, Some(PathBuf::from("t.json")));
+        assert!(c.standard_form);
+        assert_eq!(c.tol, Some(1e-9));
+        assert_eq!(c.input, Some(PathBuf::from("a")));
+        assert_eq!(c.output, Some(PathBuf::from("b")));
+        assert_eq!(c.svg, Some(PathBuf::from("c")));
+        assert_eq!(
+            parse(&args("convert --inner 1")).unwrap_err(),
+            "--inner: expected two numbers A,B, got \"1\""
+        );
+        assert_eq!(
+            parse(&args("convert --edges 1,x")).unwrap_err(),
+            "--edges: cannot read \"x\" as a number"
+        );
+        assert_eq!(
+            parse(&args("convert --frob")).unwrap_err(),
+            "convert: unknown argument \"--frob\""
         );
     }
 

@@ -10,6 +10,7 @@
 
 mod args;
 mod check;
+mod convert_cmd;
 mod demo;
 mod demo_patches;
 mod demo_splines;
@@ -148,6 +149,31 @@ fn merge(args: &args::MergeArgs) -> ExitCode {
     write_json(args.output.as_deref(), &json)
 }
 
+/// `cagd convert`: one object in, its other form out (and a picture with `--svg`).
+fn convert(args: &args::ConvertArgs) -> ExitCode {
+    let result = read_input(args.input.as_deref())
+        .and_then(|text| convert_cmd::run(&text, args).map_err(|e| e.to_string()));
+    let out = match result {
+        Ok(v) => v,
+        Err(e) => {
+            eprintln!("cagd: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    if let Some(svg_path) = &args.svg {
+        let rows: Vec<_> = if out.picture.is_empty() {
+            Vec::new()
+        } else {
+            vec![out.picture]
+        };
+        if let Err(e) = write_output(Some(svg_path), &svg::render(&rows)) {
+            eprintln!("cagd: {e}");
+            return ExitCode::from(1);
+        }
+    }
+    write_json(args.output.as_deref(), &out.json)
+}
+
 fn main() -> ExitCode {
     let argv: Vec<String> = std::env::args().skip(1).collect();
     match args::parse(&argv) {
@@ -157,6 +183,7 @@ fn main() -> ExitCode {
         }
         Ok(args::Command::Reduce(r)) => reduce(&r),
         Ok(args::Command::Merge(m)) => merge(&m),
+        Ok(args::Command::Convert(c)) => convert(&c),
         Ok(args::Command::Check { files }) => match check::run_files(&files) {
             Ok(true) => ExitCode::SUCCESS,
             Ok(false) => ExitCode::from(1),

@@ -3,6 +3,7 @@
 //! vectors pass only when refused, and vectors of other knots (double and triple), weights
 //! and dimensions pass against an independent route (cagd-core's blossoming extraction).
 
+#[allow(dead_code, reason = "shared helpers; this file needs only cagd()")]
 mod common;
 
 use cagd_core::BSplineCurve;
@@ -31,7 +32,10 @@ fn check(vectors: &[Value], name: &str) -> (bool, String) {
     std::fs::write(&path, serde_json::to_string(vectors).unwrap()).unwrap();
     let out = cagd(&["check", path.to_str().unwrap()], "");
     let _ = std::fs::remove_file(&path);
-    (out.status.success(), String::from_utf8_lossy(&out.stdout).into_owned())
+    (
+        out.status.success(),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+    )
 }
 
 #[test]
@@ -56,7 +60,13 @@ fn first_number(v: &mut Value) -> Option<&mut Value> {
 #[test]
 fn altered_expected_fails() {
     for v in public_vectors() {
-        for key in v["expected"].as_object().unwrap().keys().cloned().collect::<Vec<_>>() {
+        for key in v["expected"]
+            .as_object()
+            .unwrap()
+            .keys()
+            .cloned()
+            .collect::<Vec<_>>()
+        {
             let mut bad = v.clone();
             let x = first_number(&mut bad["expected"][&key]).unwrap();
             *x = json!(x.as_f64().unwrap() + 1e-6);
@@ -110,7 +120,13 @@ fn error_vectors_pass_only_when_refused() {
 
 /// Local knots, points and weights of one span of a random-ish spline; the Bézier segment
 /// by cagd-core's blossoming extraction (an independent route).
-fn core_segment(p: usize, knots: &[f64], pts: &[f64], w: &[f64], dim: usize) -> (Vec<f64>, Vec<f64>) {
+fn core_segment(
+    p: usize,
+    knots: &[f64],
+    pts: &[f64],
+    w: &[f64],
+    dim: usize,
+) -> (Vec<f64>, Vec<f64>) {
     // Full knot vector: repeat the outer local knots once more.
     let mut full = vec![knots[0]];
     full.extend_from_slice(knots);
@@ -123,37 +139,55 @@ fn core_segment(p: usize, knots: &[f64], pts: &[f64], w: &[f64], dim: usize) -> 
 #[test]
 fn other_knots_weights_and_dimensions_pass_both_ways() {
     let cases: Vec<(usize, Vec<f64>, usize)> = vec![
-        (2, vec![0.0, 0.0, 2.0, 5.0], 2),             // b = 0 (double start)
-        (2, vec![0.0, 1.0, 1.5, 1.5], 3),             // d = 0
-        (3, vec![1.0, 1.0, 1.0, 2.0, 3.0, 5.0], 2),   // a = b = 0 (triple start)
-        (3, vec![0.0, 1.0, 2.0, 4.0, 4.0, 4.0], 1),   // d = e = 0 (triple end)
-        (3, vec![0.0, 0.5, 0.5, 2.0, 2.0, 2.5], 4),   // b = d = 0
+        (2, vec![0.0, 0.0, 2.0, 5.0], 2),           // b = 0 (double start)
+        (2, vec![0.0, 1.0, 1.5, 1.5], 3),           // d = 0
+        (3, vec![1.0, 1.0, 1.0, 2.0, 3.0, 5.0], 2), // a = b = 0 (triple start)
+        (3, vec![0.0, 1.0, 2.0, 4.0, 4.0, 4.0], 1), // d = e = 0 (triple end)
+        (3, vec![0.0, 0.5, 0.5, 2.0, 2.0, 2.5], 4), // b = d = 0
         (3, vec![-3.0, -1.0, 0.0, 0.25, 7.0, 8.0], 3), // uneven
     ];
     let mut vectors = Vec::new();
     for (case, (p, knots, dim)) in cases.into_iter().enumerate() {
         let n = p + 1;
-        let pts: Vec<f64> = (0..n * dim).map(|k| ((k * 7 + case) as f64 * 0.91).sin() * 4.0).collect();
-        let w: Vec<f64> = (0..n).map(|k| 0.3 + ((k + case) as f64 * 1.3).cos().abs() * 3.0).collect();
+        let pts: Vec<f64> = (0..n * dim)
+            .map(|k| ((k * 7 + case) as f64 * 0.91).sin() * 4.0)
+            .collect();
+        let w: Vec<f64> = (0..n)
+            .map(|k| 0.3 + ((k + case) as f64 * 1.3).cos().abs() * 3.0)
+            .collect();
         let (bp, bw) = core_segment(p, &knots, &pts, &w, dim);
         let rows = |f: &[f64]| f.chunks(dim).map(|c| json!(c)).collect::<Vec<_>>();
         let (fwd, inv) = if p == 2 {
-            ("nurbs2_span_to_rational_bezier", "rational_bezier2_to_nurbs_span")
+            (
+                "nurbs2_span_to_rational_bezier",
+                "rational_bezier2_to_nurbs_span",
+            )
         } else {
-            ("nurbs3_span_to_rational_bezier", "rational_bezier3_to_nurbs_span")
+            (
+                "nurbs3_span_to_rational_bezier",
+                "rational_bezier3_to_nurbs_span",
+            )
         };
-        vectors.push(json!({"id": format!("fwd-{case}"), "algorithm": fwd, "params": {},
+        vectors.push(
+            json!({"id": format!("fwd-{case}"), "algorithm": fwd, "params": {},
             "input": {"knots_local": knots, "weights": w, "points": rows(&pts)},
-            "expected": {"bezier_weights": bw, "bezier_points": rows(&bp)}, "tol": 1e-12}));
-        let names: &[&str] = if p == 2 { &["b", "c", "d"] } else { &["a", "b", "c", "d", "e"] };
+            "expected": {"bezier_weights": bw, "bezier_points": rows(&bp)}, "tol": 1e-12}),
+        );
+        let names: &[&str] = if p == 2 {
+            &["b", "c", "d"]
+        } else {
+            &["a", "b", "c", "d", "e"]
+        };
         let params: serde_json::Map<String, Value> = names
             .iter()
             .enumerate()
             .map(|(i, n)| (n.to_string(), json!(knots[i + 1] - knots[i])))
             .collect();
-        vectors.push(json!({"id": format!("inv-{case}"), "algorithm": inv, "params": params,
+        vectors.push(
+            json!({"id": format!("inv-{case}"), "algorithm": inv, "params": params,
             "input": {"bezier_weights": bw, "bezier_points": rows(&bp)},
-            "expected": {"weights": w, "points": rows(&pts)}, "tol": 1e-10}));
+            "expected": {"weights": w, "points": rows(&pts)}, "tol": 1e-10}),
+        );
     }
     let (ok, text) = check(&vectors, "others");
     assert!(ok, "{text}");

@@ -73,7 +73,11 @@ fn refused(e: &Error) -> Outcome {
 
 /// Forward 15.1 / 15.3.
 fn run_forward(v: &Vector<'_>, degree: usize) -> Result<Outcome, String> {
-    let gaps: &[&str] = if degree == 2 { &["b", "c", "d"] } else { &["a", "b", "c", "d", "e"] };
+    let gaps: &[&str] = if degree == 2 {
+        &["b", "c", "d"]
+    } else {
+        &["a", "b", "c", "d", "e"]
+    };
     let knots = local_knots(v, &["knots_local", "knots"], gaps)?;
     let (pts, dim) = points(field(v, "points").ok_or("input.points: missing")?, "points")?;
     let n = pts.len() / dim.max(1);
@@ -94,7 +98,11 @@ fn run_forward(v: &Vector<'_>, degree: usize) -> Result<Outcome, String> {
 
 /// Inverse 15.1 / 15.3.
 fn run_inverse(v: &Vector<'_>, degree: usize) -> Result<Outcome, String> {
-    let gaps: &[&str] = if degree == 2 { &["b", "c", "d"] } else { &["a", "b", "c", "d", "e"] };
+    let gaps: &[&str] = if degree == 2 {
+        &["b", "c", "d"]
+    } else {
+        &["a", "b", "c", "d", "e"]
+    };
     let knots = local_knots(v, &["knots_local", "knots"], gaps)?;
     let (pts, dim) = points(
         field(v, "bezier_points").ok_or("input.bezier_points: missing")?,
@@ -165,7 +173,9 @@ fn run_nurbs22(v: &Vector<'_>) -> Result<Outcome, String> {
             let g = weights_or_ones(v, &["g"], 3)?;
             let h = weights_or_ones(v, &["h"], 3)?;
             cagd_convert::biquadratic_separable_to_bezier(&uk, &vk, &g, &h, &pts, dim).map(|s| {
-                let w: Vec<f64> = (0..9).map(|k| s.u_weights[k / 3] * s.v_weights[k % 3]).collect();
+                let w: Vec<f64> = (0..9)
+                    .map(|k| s.u_weights[k / 3] * s.v_weights[k % 3])
+                    .collect();
                 json!({
                     "G": s.u_weights,
                     "H": s.v_weights,
@@ -223,7 +233,9 @@ fn run_bezier22(v: &Vector<'_>) -> Result<Outcome, String> {
     };
     Ok(match result {
         Ok(s) => {
-            let w: Vec<f64> = (0..9).map(|k| s.u_weights[k / 3] * s.v_weights[k % 3]).collect();
+            let w: Vec<f64> = (0..9)
+                .map(|k| s.u_weights[k / 3] * s.v_weights[k % 3])
+                .collect();
             Outcome::Values(json!({
                 "g": s.u_weights,
                 "h": s.v_weights,
