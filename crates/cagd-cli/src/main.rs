@@ -12,6 +12,7 @@ mod args;
 mod check;
 mod convert_cmd;
 mod demo;
+mod demo_convert;
 mod demo_patches;
 mod demo_splines;
 mod input;
