@@ -433,4 +433,3 @@ fn standard_form_keeps_the_shape() {
         }
     }
 }
-
