@@ -41,8 +41,10 @@ pub(crate) struct Merged {
 ///    residuals grow geometrically with the number of joints at high degree (measured:
 ///    x50 per joint at degree 9).
 /// 2. With the knots known, control point `i` is the blossom `b(u_{i+1}, ..., u_{i+p})`
-///    (Ramshaw) of the piece on one span of its support, the span where the de Casteljau
-///    extrapolation is smallest (`prod_k (|1 - t_k| + |t_k|)` over the local arguments).
+///    (Ramshaw) of the piece on one span of its support: the span whose farthest argument
+///    lies the fewest of its own lengths outside it (the de Casteljau extrapolation grows
+///    with `prod_k (|1 - t_k| + |t_k|)` over the local arguments, dominated by the
+///    extreme ones).
 pub(crate) fn merge<L>(breaks: &[f64], p: usize, pdim: usize, tol: f64, mut load: L) -> Merged
 where
     L: FnMut(usize, usize, &mut [f64]),
@@ -122,23 +124,22 @@ where
         while span_of[first_piece] < i {
             first_piece += 1;
         }
-        let mut best = (f64::INFINITY, first_piece);
+        // The span of the support whose farthest argument lies the fewest span lengths
+        // outside it (the extreme arguments dominate the extrapolation); compared by cross
+        // multiplication, no division.
+        let (lo_arg, hi_arg) = (knots[i + 1], knots[i + p]);
+        let (mut best, mut best_d, mut best_l) = (first_piece, f64::INFINITY, 1.0);
         let mut k = first_piece;
         while k < nseg && span_of[k] <= i + p {
             let s = span_of[k];
             let (a, b) = (knots[s], knots[s + 1]);
-            let inv = 1.0 / (b - a);
-            let mut amp = 1.0;
-            for x in &knots[i + 1..=i + p] {
-                let t = (x - a) * inv;
-                amp *= (1.0 - t).abs() + t.abs();
-            }
-            if amp < best.0 {
-                best = (amp, k);
+            let d = (a - lo_arg).max(hi_arg - b).max(0.0);
+            if d * best_l < best_d * (b - a) {
+                (best, best_d, best_l) = (k, d, b - a);
             }
             k += 1;
         }
-        let k = best.1;
+        let k = best;
         let s = span_of[k];
         let (a, b) = (knots[s], knots[s + 1]);
         let inv = 1.0 / (b - a);
@@ -239,16 +240,18 @@ fn remove_last_knot(
         .copy_from_slice(&work[(last + 1) * pdim..(last + 2) * pdim]);
     for i in first..k {
         let a = alpha[i - first];
+        let (inv, b) = (1.0 / a, 1.0 - a);
         let m = i - first + 1;
         for c in 0..pdim {
-            tmp[m * pdim + c] = (work[i * pdim + c] - (1.0 - a) * tmp[(m - 1) * pdim + c]) / a;
+            tmp[m * pdim + c] = (work[i * pdim + c] - b * tmp[(m - 1) * pdim + c]) * inv;
         }
     }
     for i in (k + 1..=last).rev() {
         let a = alpha[i - first];
+        let inv = 1.0 / (1.0 - a);
         let m = i - first;
         for c in 0..pdim {
-            tmp[m * pdim + c] = (work[i * pdim + c] - a * tmp[(m + 1) * pdim + c]) / (1.0 - a);
+            tmp[m * pdim + c] = (work[i * pdim + c] - a * tmp[(m + 1) * pdim + c]) * inv;
         }
     }
     let a = alpha[k - first];

@@ -433,3 +433,44 @@ fn standard_form_keeps_the_shape() {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// §15.2: the Euclidean closed form (separable weights), the homogeneous route and the
+    /// general surface route (a one-span NURBS surface on the local knots, extracted by
+    /// cagd-core's blossoming) agree; the inverse gives the net back.
+    #[test]
+    fn biquadratic_closed_form_equals_the_general_routes(
+        gu in proptest::collection::vec(prop_oneof![Just(0.0), 0.05f64..3.0], 3),
+        gv in proptest::collection::vec(prop_oneof![Just(0.0), 0.05f64..3.0], 3),
+        (q, c) in (0.05f64..3.0, 0.05f64..3.0),
+        g in proptest::collection::vec(0.05f64..20.0, 3),
+        h in proptest::collection::vec(0.05f64..20.0, 3),
+        pts in cagd_testkit::points(9, 3),
+    ) {
+        let uk = [0.0, gu[0], gu[0] + q, gu[0] + q + gu[2]];
+        let vk = [0.0, gv[0], gv[0] + c, gv[0] + c + gv[2]];
+        let closed = biquadratic_separable_to_bezier(&uk, &vk, &g, &h, &pts, 3).unwrap();
+        let w: Vec<f64> = (0..9).map(|k| g[k / 3] * h[k % 3]).collect();
+        let (hp, hw) = biquadratic_to_bezier(&uk, &vk, &pts, &w, 3).unwrap();
+        let full = |k: &[f64; 4]| vec![k[0], k[0], k[1], k[2], k[3], k[3]];
+        let s = BSplineSurface::new_rational((2, 2), full(&uk), full(&vk), pts.clone(), w.clone(), (3, 3), 3).unwrap();
+        let core = s.to_beziers().unwrap();
+        prop_assert_eq!(core.len(), 1);
+        let scale = pts.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+        for k in 0..27 {
+            prop_assert!((closed.points[k] - hp[k]).abs() <= 1e-13 * scale);
+            prop_assert!((closed.points[k] - core[0].patch.points()[k]).abs() <= 1e-13 * scale);
+        }
+        for k in 0..9 {
+            let cw = closed.u_weights[k / 3] * closed.v_weights[k % 3];
+            prop_assert!((cw - hw[k]).abs() <= 1e-14 * cw);
+            prop_assert!((cw - core[0].weights.as_ref().unwrap()[k]).abs() <= 1e-13 * cw);
+        }
+        let back = bezier_to_biquadratic_separable(&uk, &vk, &closed.u_weights, &closed.v_weights, &closed.points, 3).unwrap();
+        for k in 0..27 {
+            prop_assert!((back.points[k] - pts[k]).abs() <= 1e-12 * scale * back.extrapolation);
+        }
+    }
+}
