@@ -45,64 +45,48 @@ pub(crate) struct Merged {
 ///    lies the fewest of its own lengths outside it (the de Casteljau extrapolation grows
 ///    with `prod_k (|1 - t_k| + |t_k|)` over the local arguments, dominated by the
 ///    extreme ones).
-pub(crate) fn merge<L>(breaks: &[f64], p: usize, pdim: usize, tol: f64, mut load: L) -> Merged
+pub(crate) fn merge<L>(breaks: &[f64], p: usize, pdim: usize, tol: f64, load: L) -> Merged
 where
-    L: FnMut(usize, usize, &mut [f64]),
+    L: Fn(usize, usize, &mut [f64]),
 {
     let nseg = breaks.len() - 1;
     let m = (p + 1) * pdim;
+    // The working points of every piece, once (cheaper than loading a piece for each of
+    // the phases below, which read each piece about p + 3 times).
     let mut bez = vec![0.0; nseg * m];
-    for k in 0..nseg {
-        for i in 0..=p {
-            let at = k * m + i * pdim;
-            load(k, i, &mut bez[at..at + pdim]);
+    for (k, piece) in bez.chunks_exact_mut(m).enumerate() {
+        for (i, o) in piece.chunks_exact_mut(pdim).enumerate() {
+            load(k, i, o);
         }
     }
-    // 1. Multiplicities, joint by joint.
+    let piece = |k: usize| &bez[k * m..(k + 1) * m];
+    let load_piece = |k: usize, out: &mut [f64]| out.copy_from_slice(piece(k));
+    // 1. Multiplicities, joint by joint, on a two-piece spline of the original pieces.
     let mut mults = Vec::with_capacity(nseg.saturating_sub(1));
-    let mut local = Vec::with_capacity((2 * p + 1) * pdim);
-    let mut lknots = Vec::with_capacity(2 * p + 1);
-    let mut tmp = vec![0.0; (p + 2).max(p + 1) * pdim];
-    let mut alpha = vec![0.0; p + 1];
+    let mut local = vec![0.0; (2 * p + 2) * pdim];
+    let mut tmp = vec![0.0; (p + 2) * pdim];
+    let mut right = vec![0.0; m];
     for j in 1..nseg {
-        let left = &bez[(j - 1) * m..j * m];
-        let right = &bez[j * m..(j + 1) * m];
-        let gap = dist(&left[p * pdim..], &right[..pdim]);
+        load_piece(j - 1, &mut local[..m]);
+        load_piece(j, &mut right);
+        let gap = dist2(&local[p * pdim..m], &right[..pdim]).sqrt();
         if p == 0 || !(gap <= tol) {
             mults.push(p + 1);
             continue;
         }
-        local.clear();
-        local.extend_from_slice(left);
-        for (x, y) in local[p * pdim..].iter_mut().zip(&right[..pdim]) {
+        for (x, y) in local[p * pdim..m].iter_mut().zip(&right[..pdim]) {
             *x = 0.5 * (*x + y);
         }
-        local.extend_from_slice(&right[pdim..]);
-        lknots.clear();
-        lknots.extend(std::iter::repeat_n(breaks[j - 1], p + 1));
-        lknots.extend(std::iter::repeat_n(breaks[j], p));
-        let mut used = 0.5 * gap;
-        let mut s = p;
-        while s > 1 {
-            match remove_last_knot(
-                &lknots,
-                breaks[j + 1],
-                &mut local,
-                p,
-                pdim,
-                s,
-                tol - used,
-                &mut tmp,
-                &mut alpha,
-            ) {
-                Some(eps) => {
-                    used += eps;
-                    lknots.pop();
-                    s -= 1;
-                }
-                None => break,
-            }
-        }
+        local[m..m + p * pdim].copy_from_slice(&right[pdim..]);
+        let (hl, hr) = (breaks[j] - breaks[j - 1], breaks[j + 1] - breaks[j]);
+        let s = decide_joint(
+            &mut local,
+            p,
+            pdim,
+            hl / (hl + hr),
+            tol - 0.5 * gap,
+            &mut tmp,
+        );
         mults.push(s);
     }
     // 2. Knots, and the knot index of each piece's span.
@@ -119,6 +103,7 @@ where
     // 3. Control points by blossoming.
     let mut work = vec![0.0; n * pdim];
     let mut args = vec![0.0; p];
+    let scratch = &mut right;
     let mut first_piece = 0;
     for i in 0..n {
         while span_of[first_piece] < i {
@@ -146,21 +131,18 @@ where
         for (t, x) in args.iter_mut().zip(&knots[i + 1..=i + p]) {
             *t = (x - a) * inv;
         }
-        let scratch = &mut tmp[..m];
-        scratch.copy_from_slice(&bez[k * m..(k + 1) * m]);
+        load_piece(k, scratch);
         for (lvl, &t) in args.iter().enumerate() {
             let u = 1.0 - t;
-            for j in 0..p - lvl {
-                let (lo, hi) = scratch.split_at_mut((j + 1) * pdim);
-                for (x, y) in lo[j * pdim..].iter_mut().zip(&hi[..pdim]) {
-                    *x = u * *x + t * y;
-                }
+            let len = (p - lvl) * pdim;
+            for idx in 0..len {
+                scratch[idx] = u * scratch[idx] + t * scratch[idx + pdim];
             }
         }
         work[i * pdim..(i + 1) * pdim].copy_from_slice(&scratch[..pdim]);
     }
     // 4. The certificate: extract the merged spline again and compare.
-    let mut bound = 0.0f64;
+    let mut worst2 = 0.0f64;
     let mut k = 0;
     super::extract_kernel::extract(
         &knots,
@@ -170,19 +152,18 @@ where
         |i, o| o.copy_from_slice(&work[i * pdim..(i + 1) * pdim]),
         |_, _, win| {
             if k < nseg {
-                for (x, y) in win
-                    .chunks_exact(pdim)
-                    .zip(bez[k * m..(k + 1) * m].chunks_exact(pdim))
-                {
-                    bound = bound.max(dist(x, y));
+                for (x, y) in win.chunks_exact(pdim).zip(piece(k).chunks_exact(pdim)) {
+                    worst2 = worst2.max(dist2(x, y));
                 }
             }
             k += 1;
         },
     );
-    if k != nseg {
-        bound = f64::INFINITY;
-    }
+    let bound = if k == nseg {
+        worst2.sqrt()
+    } else {
+        f64::INFINITY
+    };
     Merged {
         knots,
         work,
@@ -191,84 +172,88 @@ where
     }
 }
 
-/// Euclidean distance of two working points.
-fn dist(a: &[f64], b: &[f64]) -> f64 {
-    a.iter()
-        .zip(b)
-        .map(|(x, y)| (x - y) * (x - y))
-        .sum::<f64>()
-        .sqrt()
+/// Squared Euclidean distance of two working points.
+fn dist2(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| (x - y) * (x - y)).sum::<f64>()
 }
 
-/// Removes one copy of the last knot of `knots` (index `r`, multiplicity `s`) if the
-/// re-insertion residual is `<= budget`; the knots after `r` (not stored yet) are all
-/// `next`. Returns the residual, or `None` (nothing changed). The caller pops the knot.
+/// Removes copies of the joint knot of a local two-piece spline (points `0..=2p` of
+/// `pdim` coordinates: the left piece, the averaged joint, the right piece; knots
+/// `b0^(p+1), b1^p, b2^(p+1)`) while the summed residual stays `<= budget`; returns the
+/// multiplicity kept (`>= 1`).
 ///
-/// Equations (knot insertion of `u` into the new curve `Q`): `P_i = a_i Q_i + (1-a_i) Q_{i-1}`,
-/// `a_i = (u - u_i)/(u_{i+p+1} - u_i)`, `i = r-p..=r-s`; `Q_{r-p-1} = P_{r-p-1}`,
-/// `Q_{r-s} = P_{r-s+1}`. Equations with `a_i >= 1/2` are solved from the left, the others
-/// from the right, and the first with `a_i < 1/2` (or the last) is left over and checked.
-#[allow(
-    clippy::too_many_arguments,
-    reason = "one in-place step over the caller's buffers"
-)]
-fn remove_last_knot(
-    knots: &[f64],
-    next: f64,
-    work: &mut Vec<f64>,
+/// Removal of one copy (multiplicity `s`, last index `r = p + s`): the knot-insertion
+/// equations `P_i = a Q_i + (1-a) Q_{i-1}`, `i = r-p..=r-s = s..=p`, with
+/// `a_i = (u - u_i)/(u_{i+p+1} - u_i)`, which on this knot vector is the same for every
+/// equation, `a = (b1 - b0)/(b2 - b0)`; `Q_{s-1} = P_{s-1}`, `Q_p = P_{p+1}`. With
+/// `a >= 1/2` the equations are solved from the left (dividing by `a`) and the last one is
+/// left over, else from the right (dividing by `1 - a`) and the first is left over, as
+/// Tiller's removal does where `a_i` crosses 1/2; the residual of the leftover equation
+/// certifies the removal. The points are not shifted: point `j >= p` (the index `r - s` is
+/// `p` for every copy) is stored at `j + (p - s)`.
+fn decide_joint(
+    local: &mut [f64],
     p: usize,
     pdim: usize,
-    s: usize,
-    budget: f64,
+    a: f64,
+    mut budget: f64,
     tmp: &mut [f64],
-    alpha: &mut [f64],
-) -> Option<f64> {
-    let r = knots.len() - 1;
-    let u = knots[r];
-    let kn = |i: usize| if i < knots.len() { knots[i] } else { next };
-    let (first, last) = (r - p, r - s);
-    for i in first..=last {
-        alpha[i - first] = (u - kn(i)) / (kn(i + p + 1) - kn(i));
-    }
-    let k = (first..=last)
-        .find(|&i| alpha[i - first] < 0.5)
-        .unwrap_or(last);
-    // tmp slot m holds Q_{first - 1 + m}, m = 0..=last - first + 1.
-    let m_end = last - first + 1;
-    tmp[..pdim].copy_from_slice(&work[(first - 1) * pdim..first * pdim]);
-    tmp[m_end * pdim..(m_end + 1) * pdim]
-        .copy_from_slice(&work[(last + 1) * pdim..(last + 2) * pdim]);
-    for i in first..k {
-        let a = alpha[i - first];
-        let (inv, b) = (1.0 / a, 1.0 - a);
-        let m = i - first + 1;
-        for c in 0..pdim {
-            tmp[m * pdim + c] = (work[i * pdim + c] - b * tmp[(m - 1) * pdim + c]) * inv;
+) -> usize {
+    let b = 1.0 - a;
+    let from_left = a >= 0.5;
+    let inv = if from_left { 1.0 / a } else { 1.0 / b };
+    let mut s = p;
+    while s > 1 {
+        let shift = p - s;
+        let (first, last) = (s, p);
+        let pt = |j: usize| {
+            let at = if j >= last { j + shift } else { j } * pdim;
+            at..at + pdim
+        };
+        // tmp slot m holds Q_{first - 1 + m}, m = 0..=last - first + 1.
+        let end = last - first + 1;
+        tmp[..pdim].copy_from_slice(&local[pt(first - 1)]);
+        tmp[end * pdim..(end + 1) * pdim].copy_from_slice(&local[pt(last + 1)]);
+        let (k, qk, qk1) = if from_left {
+            for i in first..last {
+                let m = i - first + 1;
+                let (lo, hi) = tmp.split_at_mut(m * pdim);
+                let prev = &lo[(m - 1) * pdim..];
+                for ((q, x), y) in hi[..pdim].iter_mut().zip(&local[pt(i)]).zip(prev) {
+                    *q = (x - b * y) * inv;
+                }
+            }
+            (last, end, end - 1)
+        } else {
+            for i in (first + 1..=last).rev() {
+                let m = i - first;
+                let (lo, hi) = tmp.split_at_mut((m + 1) * pdim);
+                for ((q, x), y) in lo[m * pdim..]
+                    .iter_mut()
+                    .zip(&local[pt(i)])
+                    .zip(&hi[..pdim])
+                {
+                    *q = (x - a * y) * inv;
+                }
+            }
+            (first, 1, 0)
+        };
+        let mut eps2 = 0.0;
+        for ((x, q), q1) in local[pt(k)]
+            .iter()
+            .zip(&tmp[qk * pdim..(qk + 1) * pdim])
+            .zip(&tmp[qk1 * pdim..(qk1 + 1) * pdim])
+        {
+            let d = x - a * q - b * q1;
+            eps2 += d * d;
         }
-    }
-    for i in (k + 1..=last).rev() {
-        let a = alpha[i - first];
-        let inv = 1.0 / (1.0 - a);
-        let m = i - first;
-        for c in 0..pdim {
-            tmp[m * pdim + c] = (work[i * pdim + c] - a * tmp[(m + 1) * pdim + c]) * inv;
+        let eps = eps2.sqrt();
+        if !(eps <= budget) {
+            break;
         }
+        budget -= eps;
+        local[first * pdim..last * pdim].copy_from_slice(&tmp[pdim..end * pdim]);
+        s -= 1;
     }
-    let a = alpha[k - first];
-    let m = k - first + 1;
-    let mut eps2 = 0.0;
-    for c in 0..pdim {
-        let d = work[k * pdim + c] - a * tmp[m * pdim + c] - (1.0 - a) * tmp[(m - 1) * pdim + c];
-        eps2 += d * d;
-    }
-    let eps = eps2.sqrt();
-    if !(eps <= budget) {
-        return None;
-    }
-    for i in first..last {
-        let m = i - first + 1;
-        work[i * pdim..(i + 1) * pdim].copy_from_slice(&tmp[m * pdim..(m + 1) * pdim]);
-    }
-    work.drain(last * pdim..(last + 1) * pdim);
-    Some(eps)
+    s
 }
