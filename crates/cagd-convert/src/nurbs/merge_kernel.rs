@@ -41,10 +41,8 @@ pub(crate) struct Merged {
 ///    residuals grow geometrically with the number of joints at high degree (measured:
 ///    x50 per joint at degree 9).
 /// 2. With the knots known, control point `i` is the blossom `b(u_{i+1}, ..., u_{i+p})`
-///    (Ramshaw) of the piece on one span of its support: the span whose farthest argument
-///    lies the fewest of its own lengths outside it (the de Casteljau extrapolation grows
-///    with `prod_k (|1 - t_k| + |t_k|)` over the local arguments, dominated by the
-///    extreme ones).
+///    (Ramshaw) of the piece on one span of its support: the span where the de Casteljau
+///    extrapolation, `prod_k (|1 - t_k| + |t_k|)` over the local arguments, is smallest.
 pub(crate) fn merge<L>(breaks: &[f64], p: usize, pdim: usize, tol: f64, load: L) -> Merged
 where
     L: Fn(usize, usize, &mut [f64]),
@@ -109,18 +107,21 @@ where
         while span_of[first_piece] < i {
             first_piece += 1;
         }
-        // The span of the support whose farthest argument lies the fewest span lengths
-        // outside it (the extreme arguments dominate the extrapolation); compared by cross
-        // multiplication, no division.
-        let (lo_arg, hi_arg) = (knots[i + 1], knots[i + p]);
-        let (mut best, mut best_d, mut best_l) = (first_piece, f64::INFINITY, 1.0);
+        // The span of the support where the de Casteljau extrapolation is smallest: the
+        // amplification of the local arguments t, prod (|1 - t| + |t|).
+        let (mut best, mut best_amp) = (first_piece, f64::INFINITY);
         let mut k = first_piece;
         while k < nseg && span_of[k] <= i + p {
             let s = span_of[k];
             let (a, b) = (knots[s], knots[s + 1]);
-            let d = (a - lo_arg).max(hi_arg - b).max(0.0);
-            if d * best_l < best_d * (b - a) {
-                (best, best_d, best_l) = (k, d, b - a);
+            let inv = 1.0 / (b - a);
+            let mut amp = 1.0;
+            for x in &knots[i + 1..=i + p] {
+                let t = (x - a) * inv;
+                amp *= (1.0 - t).abs() + t.abs();
+            }
+            if amp < best_amp {
+                (best, best_amp) = (k, amp);
             }
             k += 1;
         }
