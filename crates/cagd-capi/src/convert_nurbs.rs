@@ -228,15 +228,24 @@ pub unsafe extern "C" fn cagd_nurbs22_span_to_bezier(
 /// inverse, eq. 15.2.11–15.2.17 with the erratum of 15.2.15): the 3x3 Bézier weights must
 /// be separable (rank 1, `W_ij = G_i H_j`), then the inverse of 15.1 applies per direction.
 ///
-/// Parameters: as `cagd_nurbs22_span_to_bezier`, with the Bézier points and weights in and
-/// the NURBS points and weights (`g_i h_j`) out; `extrapolation_out` (may be NULL) receives
-/// the extrapolation factor.
+/// Parameters:
+/// - `u_knots`, `v_knots`, `dim` (in): as for `cagd_nurbs22_span_to_bezier`.
+/// - `points` (in): the 3x3 Bézier points, i-major, `9 * dim` doubles.
+/// - `weights` (in): the 9 Bézier weights (i-major), or NULL for weights 1.
+/// - `points_out` (out): `9 * dim` doubles, the NURBS points.
+/// - `weights_out` (out): 9 doubles, the NURBS weights `g_i h_j`.
+/// - `extrapolation_out` (out, may be NULL): the extrapolation factor.
 ///
 /// Returns:
 /// - `CAGD_OK`: the outputs are written.
 /// - `CAGD_ERR_CONVERSION_CONDITION`: the weights are not rank 1 (condition "15.2 separable
 ///   weights"), or an inverse weight is `<= 0` (15.2.11 along `u`, 15.2.12 along `v`).
-/// - The other statuses of `cagd_nurbs22_span_to_bezier`.
+/// - `CAGD_ERR_NULL_POINTER`: a knot, point or output pointer is NULL.
+/// - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a zero-length span, outputs that overlap, a
+///   misaligned pointer.
+/// - `CAGD_ERR_BAD_KNOTS`, `CAGD_ERR_NON_FINITE`, `CAGD_ERR_NON_POSITIVE_WEIGHT`: as for
+///   `cagd_nurbs22_span_to_bezier`.
+/// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
 /// As `cagd_nurbs22_span_to_bezier`; `extrapolation_out` NULL or writable.

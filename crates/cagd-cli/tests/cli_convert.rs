@@ -20,8 +20,10 @@ impl Rng {
         self.0 ^= self.0 << 17;
         (self.0 >> 11) as f64 / (1u64 << 53) as f64
     }
+    /// A number in `0..n` (the last of the `n` equal parts of `[0, 1)` at or below the draw).
     fn below(&mut self, n: usize) -> usize {
-        ((self.next() * n as f64) as usize).min(n - 1)
+        let r = self.next() * n as f64;
+        (1..n).take_while(|k| *k as f64 <= r).count()
     }
 }
 

@@ -159,10 +159,11 @@ pub fn span_to_bezier(
             value: knots[i],
         });
     }
-    if !(knots[p] - knots[p - 1] > 0.0) {
+    let len = knots[p] - knots[p - 1];
+    if len.is_nan() || len <= 0.0 {
         return Err(cagd_core::Error::BadParameter {
             name: "span",
-            value: knots[p] - knots[p - 1],
+            value: len,
             why: "the knot span [t_n, t_{n+1}] must have positive length",
         });
     }

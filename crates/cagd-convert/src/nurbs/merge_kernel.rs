@@ -68,7 +68,7 @@ where
         load_piece(j - 1, &mut local[..m]);
         load_piece(j, &mut right);
         let gap = dist2(&local[p * pdim..m], &right[..pdim]).sqrt();
-        if p == 0 || !(gap <= tol) {
+        if p == 0 || gap.is_nan() || gap > tol {
             mults.push(p + 1);
             continue;
         }
@@ -249,7 +249,7 @@ fn decide_joint(
             eps2 += d * d;
         }
         let eps = eps2.sqrt();
-        if !(eps <= budget) {
+        if eps.is_nan() || eps > budget {
             break;
         }
         budget -= eps;

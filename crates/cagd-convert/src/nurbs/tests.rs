@@ -356,8 +356,9 @@ proptest! {
             let mut t = 0.0;
             for _ in 1..spans {
                 t += 0.2 + rnd();
-                let m = 1 + (rnd() * deg as f64) as usize;
-                k.extend(std::iter::repeat_n(t, m.min(deg)));
+                // 1..=deg copies: the first of deg equal parts rnd() falls into.
+                let m = (1..=deg).find(|m| rnd_m(*m, deg, rnd())).unwrap_or(deg);
+                k.extend(std::iter::repeat_n(t, m));
             }
             t += 0.2 + rnd();
             k.extend(std::iter::repeat_n(t, deg + 1));
@@ -434,6 +435,11 @@ fn standard_form_keeps_the_shape() {
     }
 }
 
+/// Whether `r` in `[0, 1)` falls into the first `m` of `deg` equal parts.
+fn rnd_m(m: usize, deg: usize, r: f64) -> bool {
+    r * deg as f64 <= m as f64
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 
@@ -459,18 +465,18 @@ proptest! {
         let core = s.to_beziers().unwrap();
         prop_assert_eq!(core.len(), 1);
         let scale = pts.iter().fold(1.0f64, |m, x| m.max(x.abs()));
-        for k in 0..27 {
-            prop_assert!((closed.points[k] - hp[k]).abs() <= 1e-13 * scale);
-            prop_assert!((closed.points[k] - core[0].patch.points()[k]).abs() <= 1e-13 * scale);
+        for ((x, y), z) in closed.points.iter().zip(&hp).zip(core[0].patch.points()) {
+            prop_assert!((x - y).abs() <= 1e-13 * scale);
+            prop_assert!((x - z).abs() <= 1e-13 * scale);
         }
-        for k in 0..9 {
+        for (k, (y, z)) in hw.iter().zip(core[0].weights.as_ref().unwrap()).enumerate() {
             let cw = closed.u_weights[k / 3] * closed.v_weights[k % 3];
-            prop_assert!((cw - hw[k]).abs() <= 1e-14 * cw);
-            prop_assert!((cw - core[0].weights.as_ref().unwrap()[k]).abs() <= 1e-13 * cw);
+            prop_assert!((cw - y).abs() <= 1e-14 * cw);
+            prop_assert!((cw - z).abs() <= 1e-13 * cw);
         }
         let back = bezier_to_biquadratic_separable(&uk, &vk, &closed.u_weights, &closed.v_weights, &closed.points, 3).unwrap();
-        for k in 0..27 {
-            prop_assert!((back.points[k] - pts[k]).abs() <= 1e-12 * scale * back.extrapolation);
+        for (x, y) in back.points.iter().zip(&pts) {
+            prop_assert!((x - y).abs() <= 1e-12 * scale * back.extrapolation);
         }
     }
 }
