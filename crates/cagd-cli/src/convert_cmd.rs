@@ -156,13 +156,21 @@ fn dist(a: &[f64], b: &[f64]) -> f64 {
         .sqrt()
 }
 
-/// The largest difference between the pieces and `eval` at `SAMPLES + 1` parameters per piece.
+/// The largest difference between the pieces and `eval` at `SAMPLES` parameters per piece
+/// (`s = i / SAMPLES`, `i < SAMPLES`, and `s = 1` on the last piece: a spline takes the
+/// right piece's value at a break, which differs from the left piece's end where the
+/// pieces do not meet).
 fn measured(pieces: &BezierPieces, eval: &dyn Fn(f64) -> Option<Vec<f64>>) -> f64 {
     let b = pieces.breaks();
     let mut worst = 0.0f64;
     for k in 0..pieces.len() {
         let Ok(seg) = pieces.piece(k) else { continue };
-        for i in 0..=SAMPLES {
+        let top = if k + 1 == pieces.len() {
+            SAMPLES
+        } else {
+            SAMPLES - 1
+        };
+        for i in 0..=top {
             let s = i as f64 / SAMPLES as f64;
             let t = b[k] + s * (b[k + 1] - b[k]);
             match eval(t) {
