@@ -39,6 +39,13 @@
 //! - Operations: evaluation, derivatives, elevation, subdivision, knot insertion, Bézier
 //!   extraction, and its inverse, the exact merge of Bézier segments into one spline
 //!   (`cagd_bspline_from_beziers`, seed 001 §4.1).
+//! - Form conversions (SPEC-convert §15.1–15.3): one NURBS span ↔ one rational Bézier
+//!   segment in closed form (`cagd_nurbs_span_to_bezier`, `cagd_bezier_to_nurbs_span`,
+//!   degree 2 and 3), the biquadratic patch (`cagd_nurbs22_span_to_bezier`,
+//!   `cagd_bezier22_to_nurbs22_span`), whole curves by the general route
+//!   (`cagd_bspline_to_bezier_pieces`, `cagd_curvelist_to_bspline`) and the standard form
+//!   (`cagd_curve_standard_form`); a failed inverse condition is
+//!   `CAGD_ERR_CONVERSION_CONDITION`.
 //! - Every reduction of cagd-reduce: `cagd_curve_reduce` (twelve methods, with report),
 //!   `cagd_curve_reduce_batch`, `cagd_curve_reduce_to_tolerance` (C^k B-spline) and
 //!   `_stepwise` (seed 000 Algorithm 14.2.1), `cagd_curve_reduce_exact` /
@@ -63,6 +70,8 @@
 mod boundary;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod bspline;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod convert_nurbs;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod convert_patch;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
@@ -107,6 +116,11 @@ pub use bspline::{
     cagd_bspline_weights, cagd_bsplinesurface_array, cagd_bsplinesurface_eval,
     cagd_bsplinesurface_free, cagd_bsplinesurface_new, cagd_bsplinesurface_reduce,
     cagd_bsplinesurface_reduce_to_tolerance, cagd_bsplinesurface_shape,
+};
+pub use convert_nurbs::{
+    cagd_bezier_to_nurbs_span, cagd_bezier22_to_nurbs22_span, cagd_bspline_to_bezier_pieces,
+    cagd_curve_standard_form, cagd_curvelist_to_bspline, cagd_nurbs_span_to_bezier,
+    cagd_nurbs22_span_to_bezier,
 };
 pub use convert_patch::{
     CAGD_DOMAIN_BILINEAR, CAGD_DOMAIN_DEGENERATE_RECT, CAGD_DOMAIN_RULED, CAGD_DOMAIN_TRIANGLE,

@@ -67,6 +67,10 @@ pub enum CagdStatus {
     ERR_DEGENERATE_SPLIT = 51,
     /// A trimming layout the trimmed-patch tiling does not support (SPEC-convert §15.7.3).
     ERR_UNSUPPORTED_TRIM = 52,
+    /// A condition of a form conversion is not met (SPEC-convert §15.1.8, §15.3.13–16: an
+    /// inverse NURBS weight would be `<= 0`; §15.2: Bézier weights that are not separable
+    /// `G_i H_j`). The message names the condition, the failing weight and its value.
+    ERR_CONVERSION_CONDITION = 43,
     /// A bug inside cagd was caught at the boundary (a Rust panic); please report it with
     /// the message.
     ERR_PANIC = 99,
@@ -96,6 +100,7 @@ impl CagdStatus {
             CagdStatus::ERR_NOT_DEGENERATE => c"CAGD_ERR_NOT_DEGENERATE",
             CagdStatus::ERR_DEGENERATE_SPLIT => c"CAGD_ERR_DEGENERATE_SPLIT",
             CagdStatus::ERR_UNSUPPORTED_TRIM => c"CAGD_ERR_UNSUPPORTED_TRIM",
+            CagdStatus::ERR_CONVERSION_CONDITION => c"CAGD_ERR_CONVERSION_CONDITION",
             CagdStatus::ERR_PANIC => c"CAGD_ERR_PANIC",
         }
     }
@@ -107,7 +112,7 @@ impl CagdStatus {
 }
 
 /// Every status, in numeric order (used by tests and by `cagd_status_name`).
-pub(crate) const ALL_STATUSES: [CagdStatus; 21] = [
+pub(crate) const ALL_STATUSES: [CagdStatus; 22] = [
     CagdStatus::OK,
     CagdStatus::ERR_NULL_POINTER,
     CagdStatus::ERR_BUFFER_TOO_SMALL,
@@ -128,6 +133,7 @@ pub(crate) const ALL_STATUSES: [CagdStatus; 21] = [
     CagdStatus::ERR_NOT_DEGENERATE,
     CagdStatus::ERR_DEGENERATE_SPLIT,
     CagdStatus::ERR_UNSUPPORTED_TRIM,
+    CagdStatus::ERR_CONVERSION_CONDITION,
     CagdStatus::ERR_PANIC,
 ];
 
@@ -158,6 +164,7 @@ pub fn status_of_core(e: &Error) -> CagdStatus {
         Error::NotDegenerate { .. } => CagdStatus::ERR_NOT_DEGENERATE,
         Error::DegenerateSplit { .. } => CagdStatus::ERR_DEGENERATE_SPLIT,
         Error::UnsupportedTrim { .. } => CagdStatus::ERR_UNSUPPORTED_TRIM,
+        Error::ConversionCondition { .. } => CagdStatus::ERR_CONVERSION_CONDITION,
         _ => CagdStatus::ERR_INVALID_ARGUMENT,
     }
 }
@@ -187,7 +194,7 @@ mod tests {
 
     #[test]
     fn discriminants_are_pinned() {
-        let expected: [(CagdStatus, i32); 21] = [
+        let expected: [(CagdStatus, i32); 22] = [
             (CagdStatus::OK, 0),
             (CagdStatus::ERR_NULL_POINTER, 1),
             (CagdStatus::ERR_BUFFER_TOO_SMALL, 2),
@@ -208,6 +215,7 @@ mod tests {
             (CagdStatus::ERR_NOT_DEGENERATE, 50),
             (CagdStatus::ERR_DEGENERATE_SPLIT, 51),
             (CagdStatus::ERR_UNSUPPORTED_TRIM, 52),
+            (CagdStatus::ERR_CONVERSION_CONDITION, 43),
             (CagdStatus::ERR_PANIC, 99),
         ];
         for (i, (s, code)) in expected.into_iter().enumerate() {
@@ -231,7 +239,7 @@ mod tests {
         for s in ALL_STATUSES {
             assert_eq!(name_of(s as i32), format!("CAGD_{s:?}"));
         }
-        for code in [-1, 6, 19, 43, 98, 100, i32::MIN, i32::MAX] {
+        for code in [-1, 6, 19, 44, 98, 100, i32::MIN, i32::MAX] {
             assert_eq!(name_of(code), "CAGD_ERR_UNKNOWN", "{code}");
         }
     }
@@ -356,6 +364,13 @@ mod tests {
             (
                 Error::UnsupportedTrim { index: 0, why: "x" },
                 S::ERR_UNSUPPORTED_TRIM,
+                Error::ConversionCondition {
+                    condition: "15.1.8",
+                    what: "inverse weight",
+                    index: 0,
+                    value: -1.0,
+                },
+                S::ERR_CONVERSION_CONDITION,
             ),
         ];
         for (e, s) in cases {

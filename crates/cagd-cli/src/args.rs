@@ -10,6 +10,7 @@ usage:
               [--merge exact|lossy] [--strategy fit|segments|piegl-tiller-1995]
               [-i FILE] [-o FILE] [--svg FILE]
   cagd merge [--continuity K] [--tol T] [-i FILE] [-o FILE]
+  cagd convert --to bezier|nurbs [--standard-form] [--tol T] [-i FILE] [-o FILE] [--svg FILE]
   cagd convert (--to rectangle|rectangles3|triangles|triangle [--inner U,V] [--edges G,K,H]
                | --split-line F1,F0 | --split-curve A0,A1,... | --trim FILE)
                [--tol T] [-i FILE] [-o FILE] [--svg FILE]
@@ -42,6 +43,17 @@ degree-m segments (--continuity K, default 0, K < m). The joints are checked: C0
 T, C^K by a certified knot removal within T. --tol T defaults to
 1e-9 * max(1, largest |coordinate|) (the homogeneous coordinates (w x, w) of rational
 segments included); the report gives the T used.
+
+convert converts between NURBS and (rational) Bézier form (SPEC-convert §15.1-15.3).
+--to bezier: a \"bspline\" becomes its pieces as the \"beziers\" object merge reads
+(segments, weights or null, breaks = the distinct knot values), a \"bspline-surface\" its
+\"bezier-patches\" (degree, breaks_u, breaks_v, patches u outer / v inner, weights);
+--to nurbs: a \"beziers\" object, one \"bezier\", or \"bezier-patches\" become one
+\"bspline\" / \"bspline-surface\" with the highest continuity the pieces have at each
+joint (joint tolerance --tol T in homogeneous coordinates, default 1e-12 times the largest
+one); the two directions round-trip. A \"report\" gives pieces, continuity and the
+largest difference measured. --standard-form writes rational Bézier output with end weights
+1. --svg draws the curve with both control polygons.
 
 convert on a \"triangle\" / \"tensor\" (optional \"weights\") converts it exactly: --to
 rectangle (one degenerate tensor, 15.4), --to rectangles3 (three tensors through the inner
@@ -104,9 +116,10 @@ pub(crate) struct MergeArgs {
     pub(crate) output: Option<PathBuf>,
 }
 
-/// Options of `cagd convert` (the patch conversions read `to`, `inner`, `edges`,
-/// `split_line`, `split_curve`, `trim`, `tol`; `standard_form` belongs to the NURBS ones).
-#[derive(Debug, Clone, PartialEq)]
+/// Options of `cagd convert`: `to`, `standard_form` and `tol` for NURBS ↔ Bézier
+/// (SPEC-convert §15.1–15.3); `to`, `inner`, `edges`, `split_line`, `split_curve`, `trim`
+/// and `tol` for the patch conversions (§15.4–15.7).
+#[derive(Debug, Clone, PartialEq, Default)]
 pub(crate) struct ConvertArgs {
     pub(crate) to: Option<String>,
     pub(crate) inner: Option<(f64, f64)>,
@@ -145,19 +158,7 @@ fn parse_pair(s: &str, flag: &str) -> Result<(f64, f64), String> {
 
 /// The options of `cagd convert` (the arguments after `convert`).
 fn parse_convert<'a>(mut it: impl Iterator<Item = &'a String>) -> Result<ConvertArgs, String> {
-    let mut c = ConvertArgs {
-        to: None,
-        inner: None,
-        edges: None,
-        split_line: None,
-        split_curve: None,
-        trim: None,
-        standard_form: false,
-        tol: None,
-        input: None,
-        output: None,
-        svg: None,
-    };
+    let mut c = ConvertArgs::default();
     while let Some(a) = it.next() {
         match a.as_str() {
             "--to" => c.to = Some(value(&mut it, a)?.to_string()),
@@ -363,6 +364,40 @@ mod tests {
         assert_eq!(
             parse(&args("merge --to 3")).unwrap_err(),
             "merge: unknown argument \"--to\""
+        );
+    }
+
+    #[test]
+    fn convert_arguments() {
+        let Command::Convert(c) = parse(&args(
+            "convert --to nurbs --inner 0.25,0.5 --edges 1,2,3 --split-line 0.5,-1 \
+             --split-curve 0,1,2 --trim t.json --standard-form --tol 1e-9 -i a -o b --svg c",
+        ))
+        .unwrap() else {
+            panic!("not convert");
+        };
+        assert_eq!(c.to.as_deref(), Some("nurbs"));
+        assert_eq!(c.inner, Some((0.25, 0.5)));
+        assert_eq!(c.edges, Some(vec![1.0, 2.0, 3.0]));
+        assert_eq!(c.split_line, Some((0.5, -1.0)));
+        assert_eq!(c.split_curve, Some(vec![0.0, 1.0, 2.0]));
+        assert_eq!(c.trim, Some(PathBuf::from("t.json")));
+        assert!(c.standard_form);
+        assert_eq!(c.tol, Some(1e-9));
+        assert_eq!(c.input, Some(PathBuf::from("a")));
+        assert_eq!(c.output, Some(PathBuf::from("b")));
+        assert_eq!(c.svg, Some(PathBuf::from("c")));
+        assert_eq!(
+            parse(&args("convert --inner 1")).unwrap_err(),
+            "--inner: expected two numbers A,B, got \"1\""
+        );
+        assert_eq!(
+            parse(&args("convert --edges 1,x")).unwrap_err(),
+            "--edges: cannot read \"x\" as a number"
+        );
+        assert_eq!(
+            parse(&args("convert --frob")).unwrap_err(),
+            "convert: unknown argument \"--frob\""
         );
     }
 

@@ -10,10 +10,12 @@
 
 mod args;
 mod check;
+mod convert_cmd;
 mod convert_patch_cmd;
 mod convert_patch_svg;
 mod convert_patch_trim;
 mod demo;
+mod demo_convert;
 mod demo_convert_patch;
 mod demo_patches;
 mod demo_splines;
@@ -152,20 +154,25 @@ fn merge(args: &args::MergeArgs) -> ExitCode {
     write_json(args.output.as_deref(), &json)
 }
 
-/// `cagd convert` on one `triangle` / `tensor` object (the patch conversions).
+/// `cagd convert`: one object in, its other form out (and a picture with `--svg`).
 fn convert(args: &args::ConvertArgs) -> ExitCode {
-    let result = read_input(args.input.as_deref()).and_then(|text| {
-        let v: Value =
-            serde_json::from_str(&text).map_err(|e| format!("input: not valid JSON: {e}"))?;
-        convert_patch_cmd::run(&v, args)
-    });
-    match result {
-        Ok(json) => write_json(args.output.as_deref(), &json),
+    let result = read_input(args.input.as_deref())
+        .and_then(|text| convert_cmd::run(&text, args).map_err(|e| e.to_string()));
+    let out = match result {
+        Ok(v) => v,
         Err(e) => {
             eprintln!("cagd: {e}");
-            ExitCode::from(2)
+            return ExitCode::from(2);
+        }
+    };
+    // An empty picture: the conversion wrote its own (the patch conversions).
+    if let Some(svg_path) = args.svg.as_ref().filter(|_| !out.picture.is_empty()) {
+        if let Err(e) = write_output(Some(svg_path), &svg::render(&[out.picture])) {
+            eprintln!("cagd: {e}");
+            return ExitCode::from(1);
         }
     }
+    write_json(args.output.as_deref(), &out.json)
 }
 
 fn main() -> ExitCode {

@@ -133,6 +133,21 @@ pub enum Error {
         /// What failed.
         why: &'static str,
     },
+    /// A condition of a conversion formula is not met, with the quantity that fails it:
+    /// e.g. the inverse of a rational Bézier segment to a NURBS span (SPEC-convert
+    /// §15.1.8, §15.3.13–16) needs every inverse weight `> 0`, and §15.2's closed form needs
+    /// separable weights.
+    #[error("condition {condition} is not met: {what}, index {index}, = {value}")]
+    ConversionCondition {
+        /// The condition, e.g. "15.1.8" or "15.3.14".
+        condition: &'static str,
+        /// The quantity that fails it, e.g. "inverse NURBS weight w_{n-2+index} must be > 0".
+        what: &'static str,
+        /// The index of the failing quantity (local, as `what` says).
+        index: usize,
+        /// Its value.
+        value: f64,
+    },
     /// An iterative or adaptive algorithm could not reach the tolerance.
     #[error("no convergence: tolerance {tolerance} asked, {achieved} achieved")]
     NoConvergence {

@@ -81,6 +81,10 @@ c_tests![
     bspline_polynomial_closed_form,
     bspline_nurbs_circle,
     bspline_to_beziers,
+    // c/convert_nurbs.c
+    convert_span_closed_forms,
+    convert_biquadratic,
+    convert_curve_round_trip,
     // c/bspline_merge.c
     bspline_merge_001_exact,
     bspline_merge_c1_round_trip,

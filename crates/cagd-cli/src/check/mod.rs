@@ -10,6 +10,7 @@
 //! An algorithm no table knows is a failure, never a skip.
 
 mod compare;
+mod convert_nurbs;
 mod convert_patch;
 mod fields;
 mod reduce;
@@ -49,6 +50,7 @@ pub(crate) type Runner = fn(&Vector<'_>) -> Result<Outcome, String>;
 /// file the family's vectors belong to.
 const TABLES: &[(&[(&str, Runner)], Rule)] = &[
     (reduce::TABLE, Rule::PerArray),
+    (convert_nurbs::TABLE, Rule::Elementwise),
     (convert_patch::TABLE, Rule::Elementwise),
 ];
 

@@ -1,0 +1,45 @@
+//! Helpers of the benchmarks (the pattern of cagd-reduce's benches): reproducible input, a
+//! median timer and the time of a plain copy of the same bytes (the yardstick every
+//! benchmark reports a ratio to).
+
+use std::hint::black_box;
+use std::time::Instant;
+
+/// `len` pseudo-random numbers in `[-1, 1)` (xorshift64, reproducible per `seed`).
+pub(crate) fn random_input(len: usize, seed: u64) -> Vec<f64> {
+    let mut s: u64 = 0x9E37_79B9_7F4A_7C15 ^ seed;
+    (0..len)
+        .map(|_| {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            (s >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        })
+        .collect()
+}
+
+/// Median wall time of 31 runs of `f` (after one warm-up run), in nanoseconds.
+pub(crate) fn median_ns(mut f: impl FnMut()) -> f64 {
+    f();
+    let mut t: Vec<f64> = (0..31)
+        .map(|_| {
+            let s = Instant::now();
+            f();
+            s.elapsed().as_secs_f64() * 1e9
+        })
+        .collect();
+    t.sort_by(f64::total_cmp);
+    t[t.len() / 2]
+}
+
+/// Median wall time (ns) of copying `input` and `output` into buffers of their sizes with
+/// `copy_from_slice` (a `memcpy` of the bytes a conversion reads and writes).
+pub(crate) fn memcpy_ns(input: &[f64], output: &[f64]) -> f64 {
+    let (mut copy_in, mut copy_out) = (vec![0.0; input.len()], vec![0.0; output.len()]);
+    median_ns(|| {
+        copy_in.copy_from_slice(black_box(input));
+        copy_out.copy_from_slice(black_box(output));
+        black_box(&copy_in);
+        black_box(&copy_out);
+    })
+}
