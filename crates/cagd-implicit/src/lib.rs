@@ -30,8 +30,11 @@
 
 mod base_point;
 mod bezout;
+mod classify;
 mod exact;
+mod implicit_curve;
 mod implicitize;
+mod inversion;
 mod lu;
 mod planar;
 mod polynomial;
@@ -39,6 +42,8 @@ mod rational;
 mod subdivision;
 
 pub use bezout::BezoutMatrix;
+pub use classify::Classification;
+pub use implicit_curve::ImplicitCurve;
 pub use implicitize::{
     BasePointPolicy, ImplicitOptions, ImplicitReport, Implicitization, implicitize,
     implicitize_with,

@@ -7,7 +7,7 @@
 use cagd_core::binomial;
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{One, Signed, Zero};
+use num_traits::Zero;
 
 /// Exact rational number.
 pub(crate) type Q = BigRational;
@@ -151,19 +151,10 @@ impl UPoly {
     }
 }
 
-/// Whether a rational is an exact integer.
-pub(crate) fn is_integer(x: &Q) -> bool {
-    x.denom().is_one()
-}
-
-/// `|x|` as `f64` ordering helper (magnitude of a rational, for choosing pivots).
-pub(crate) fn abs_q(x: &Q) -> Q {
-    x.abs()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use num_traits::One;
 
     fn qi(n: i64) -> Q {
         Q::from_integer(BigInt::from(n))
@@ -173,9 +164,6 @@ mod tests {
     fn exact_conversion_of_binary_fractions() {
         assert_eq!(q(0.75), Q::new(BigInt::from(3), BigInt::from(4)));
         assert_eq!(q(-3.0), qi(-3));
-        assert!(is_integer(&q(1024.0)));
-        assert!(!is_integer(&q(0.1)));
-        assert_eq!(abs_q(&qi(-2)), qi(2));
     }
 
     #[test]

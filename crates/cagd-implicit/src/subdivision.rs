@@ -4,10 +4,15 @@
 //! triangular `A(α)`, `a_ij = C(n-j, i-j) β^(i-j) α^(j-1)` (1-based), and therefore
 //! `det F(q*) = α^(n^2) det F(q)`.
 
-use cagd_core::{Error, Result, binomial, binomial_f64};
+use cagd_core::{Error, Result, binomial_f64};
+#[cfg(test)]
+use cagd_core::binomial;
+#[cfg(test)]
 use num_bigint::BigInt;
+#[cfg(test)]
 use num_traits::{One, Zero};
 
+#[cfg(test)]
 use crate::rational::Q;
 
 fn check(n: usize) -> Result<()> {
@@ -53,7 +58,8 @@ fn pow(e: usize) -> i32 {
 }
 
 /// `A(α)` in exact arithmetic (see [`subdivision_matrix`]).
-pub(crate) fn subdivision_matrix_exact(n: usize, alpha: &Q) -> Vec<Q> {
+#[cfg(test)]
+fn subdivision_matrix_exact(n: usize, alpha: &Q) -> Vec<Q> {
     let beta = Q::one() - alpha;
     let mut a = vec![Q::zero(); n * n];
     for i in 0..n {
