@@ -58,7 +58,13 @@ pub(crate) fn divide_out(hom: &[[Q; 3]]) -> Option<Vec<[Q; 3]>> {
         .collect();
     Some(
         (0..=m)
-            .map(|i| [reduced[0][i].clone(), reduced[1][i].clone(), reduced[2][i].clone()])
+            .map(|i| {
+                [
+                    reduced[0][i].clone(),
+                    reduced[1][i].clone(),
+                    reduced[2][i].clone(),
+                ]
+            })
             .collect(),
     )
 }
@@ -118,7 +124,12 @@ mod tests {
     fn degree_elevated_curve_has_a_base_point_at_infinity() {
         // The parabola above elevated to degree 3.
         let h = hom(
-            &[(0.0, 0.0), (2.0 / 3.0, 4.0 / 3.0), (4.0 / 3.0, 4.0 / 3.0), (2.0, 0.0)],
+            &[
+                (0.0, 0.0),
+                (2.0 / 3.0, 4.0 / 3.0),
+                (4.0 / 3.0, 4.0 / 3.0),
+                (2.0, 0.0),
+            ],
             &[1.0; 4],
         );
         // 2/3 and 4/3 are not binary fractions; use exact values instead.

@@ -147,8 +147,9 @@ mod tests {
     #[test]
     fn spec_matrix_at_origin() {
         // impl-n2-conic-weighted: F(0,0) = [[2,2],[2,4]].
-        let c = BezierCurve::new_rational(vec![1.0, 0.0, 1.0, 1.0, 0.0, 1.0], vec![1.0, 1.0, 2.0], 2)
-            .unwrap();
+        let c =
+            BezierCurve::new_rational(vec![1.0, 0.0, 1.0, 1.0, 0.0, 1.0], vec![1.0, 1.0, 2.0], 2)
+                .unwrap();
         let f = BezoutMatrix::new(&c).unwrap();
         assert_eq!(f.at(0.0, 0.0), vec![2.0, 2.0, 2.0, 4.0]);
         // f = 4 - 4x^2 - 4y^2 vanishes on the unit circle.
@@ -161,8 +162,8 @@ mod tests {
 
     #[test]
     fn matrices_are_symmetric_and_vanish_at_the_end_points() {
-        let c = BezierCurve::new(vec![0.0, 0.0, 1.0, 3.0, 3.0, 3.0, 4.0, 0.0, 5.0, 2.0], 2)
-            .unwrap();
+        let c =
+            BezierCurve::new(vec![0.0, 0.0, 1.0, 3.0, 3.0, 3.0, 4.0, 0.0, 5.0, 2.0], 2).unwrap();
         let f = BezoutMatrix::new(&c).unwrap();
         let n = f.size();
         for h in 0..n {

@@ -127,7 +127,9 @@ fn forward_differences(values: &[BigInt], n: usize) -> Vec<BigInt> {
     // Along x for each row b: d[i][b] = Δx^i f(0, b), i <= n - b.
     let mut dx = vec![BigInt::zero(); tri_count(n)];
     for b in 0..=n {
-        let mut row: Vec<BigInt> = (0..=n - b).map(|a| values[tri_index(n, a, b)].clone()).collect();
+        let mut row: Vec<BigInt> = (0..=n - b)
+            .map(|a| values[tri_index(n, a, b)].clone())
+            .collect();
         for i in 0..=n - b {
             dx[tri_index(n, i, b)] = row[0].clone();
             for a in 0..row.len() - 1 - i {
@@ -138,7 +140,9 @@ fn forward_differences(values: &[BigInt], n: usize) -> Vec<BigInt> {
     // Along y for each i.
     let mut out = vec![BigInt::zero(); tri_count(n)];
     for i in 0..=n {
-        let mut col: Vec<BigInt> = (0..=n - i).map(|b| dx[tri_index(n, i, b)].clone()).collect();
+        let mut col: Vec<BigInt> = (0..=n - i)
+            .map(|b| dx[tri_index(n, i, b)].clone())
+            .collect();
         for j in 0..=n - i {
             out[tri_index(n, i, j)] = col[0].clone();
             for b in 0..col.len() - 1 - j {
@@ -156,7 +160,11 @@ fn stirling1(n: usize) -> Vec<Vec<BigInt>> {
     s[0][0] = BigInt::one();
     for i in 0..n {
         for k in 0..=i + 1 {
-            let mut v = if k > 0 { s[i][k - 1].clone() } else { BigInt::zero() };
+            let mut v = if k > 0 {
+                s[i][k - 1].clone()
+            } else {
+                BigInt::zero()
+            };
             if k <= i {
                 v -= BigInt::from(i) * &s[i][k];
             }

@@ -58,7 +58,12 @@ impl ImplicitCurve {
         let n = self.hom.len() - 1;
         if n == 1 {
             // x W(t) - X(t) = 0 (or y), t = e0 / (e0 - e1), the better-conditioned coordinate.
-            let e = |k: usize, c: f64| [c * self.hom[0][2] - self.hom[0][k], c * self.hom[1][2] - self.hom[1][k]];
+            let e = |k: usize, c: f64| {
+                [
+                    c * self.hom[0][2] - self.hom[0][k],
+                    c * self.hom[1][2] - self.hom[1][k],
+                ]
+            };
             let (ex, ey) = (e(0, x), e(1, y));
             let (a, b) = if (ex[0] - ex[1]).abs() >= (ey[0] - ey[1]).abs() {
                 (ex[0], ex[1])

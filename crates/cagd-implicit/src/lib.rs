@@ -29,11 +29,14 @@
 #![forbid(unsafe_code)]
 
 mod base_point;
+mod bernstein_roots;
 mod bezout;
 mod classify;
+mod compose;
 mod exact;
 mod implicit_curve;
 mod implicitize;
+mod intersect;
 mod inversion;
 mod lu;
 mod planar;
@@ -48,6 +51,7 @@ pub use implicitize::{
     BasePointPolicy, ImplicitOptions, ImplicitReport, Implicitization, implicitize,
     implicitize_with,
 };
+pub use intersect::{Intersection, intersect};
 pub use planar::{MAX_IMPLICIT_DEGREE, check_planar};
 pub use polynomial::ImplicitPolynomial;
 pub use subdivision::subdivision_matrix;

@@ -43,10 +43,7 @@ impl ImplicitPolynomial {
 
     /// The highest total degree with a non-zero coefficient (`None` for the zero polynomial).
     pub fn effective_degree(&self) -> Option<usize> {
-        self.monomials_exact()
-            .iter()
-            .map(|(i, j, _)| i + j)
-            .max()
+        self.monomials_exact().iter().map(|(i, j, _)| i + j).max()
     }
 
     /// The `f64` coefficient of `x^i y^j` (0 when `i + j > n`).
@@ -180,13 +177,13 @@ mod tests {
         let (f, fx, fy) = p.eval_grad(0.5, -0.25);
         assert_eq!((f, fx, fy), (4.0 - 1.0 - 0.25, -4.0, 2.0));
         assert_eq!(p.eval_abs(0.5, -0.25), 4.0 + 1.0 + 0.25);
-        assert_eq!(
-            p.monomials(),
-            vec![(2, 0, -4.0), (0, 2, -4.0), (0, 0, 4.0)]
-        );
+        assert_eq!(p.monomials(), vec![(2, 0, -4.0), (0, 2, -4.0), (0, 0, 4.0)]);
         assert_eq!(p.exact_strings()[0].2, "-4");
         assert_eq!(p.effective_degree(), Some(2));
-        assert_eq!(p.eval_exact(&q(0.6), &q(0.8)), q(4.0) - q(4.0) * q(0.6) * q(0.6) - q(4.0) * q(0.8) * q(0.8));
+        assert_eq!(
+            p.eval_exact(&q(0.6), &q(0.8)),
+            q(4.0) - q(4.0) * q(0.6) * q(0.6) - q(4.0) * q(0.8) * q(0.8)
+        );
         assert_eq!(p.coef(3, 0), 0.0);
         assert_eq!(p.max_abs_coef(), 4.0);
     }

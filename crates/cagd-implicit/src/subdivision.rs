@@ -4,9 +4,9 @@
 //! triangular `A(α)`, `a_ij = C(n-j, i-j) β^(i-j) α^(j-1)` (1-based), and therefore
 //! `det F(q*) = α^(n^2) det F(q)`.
 
-use cagd_core::{Error, Result, binomial_f64};
 #[cfg(test)]
 use cagd_core::binomial;
+use cagd_core::{Error, Result, binomial_f64};
 #[cfg(test)]
 use num_bigint::BigInt;
 #[cfg(test)]
@@ -45,9 +45,8 @@ pub fn subdivision_matrix(n: usize, alpha: f64) -> Result<Vec<f64>> {
     let mut a = vec![0.0; n * n];
     for i in 0..n {
         for j in 0..=i {
-            a[i * n + j] = binomial_f64(n - 1 - j, i - j)
-                * beta.powi(pow(i - j))
-                * alpha.powi(pow(j));
+            a[i * n + j] =
+                binomial_f64(n - 1 - j, i - j) * beta.powi(pow(i - j)) * alpha.powi(pow(j));
         }
     }
     Ok(a)
@@ -85,7 +84,11 @@ mod tests {
     /// Exact F-matrices (A, B, C0) of homogeneous points, eqs. 15.8.2–15.8.3.
     fn exact_f(hom: &[[Q; 3]]) -> [Vec<Q>; 3] {
         let n = hom.len() - 1;
-        let mut out = [vec![Q::zero(); n * n], vec![Q::zero(); n * n], vec![Q::zero(); n * n]];
+        let mut out = [
+            vec![Q::zero(); n * n],
+            vec![Q::zero(); n * n],
+            vec![Q::zero(); n * n],
+        ];
         for h in 0..n {
             for k in 0..n {
                 for m in (h + k + 1).saturating_sub(n)..=h.min(k) {
@@ -103,7 +106,13 @@ mod tests {
 
     #[test]
     fn theorem_15_9_1_holds_exactly() {
-        let raw = [(0.0, 0.0, 1.0), (1.0, 3.0, 2.0), (3.0, 2.5, 0.5), (4.0, -1.0, 1.5), (6.0, 1.0, 1.0)];
+        let raw = [
+            (0.0, 0.0, 1.0),
+            (1.0, 3.0, 2.0),
+            (3.0, 2.5, 0.5),
+            (4.0, -1.0, 1.5),
+            (6.0, 1.0, 1.0),
+        ];
         for n in 2..=4 {
             let hom: Vec<[Q; 3]> = raw[..=n]
                 .iter()

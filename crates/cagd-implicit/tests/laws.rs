@@ -227,7 +227,10 @@ fn base_point_is_refused_or_divided_out() {
     // segment of x + y = 1.
     let c = BezierCurve::new_rational(vec![0.0, 1.0, 0.5, 0.5, 1.0, 0.0], vec![4.0, 2.0, 1.0], 2)
         .unwrap();
-    assert_eq!(implicitize(&c).unwrap_err(), cagd_core::Error::BasePoint { count: 1 });
+    assert_eq!(
+        implicitize(&c).unwrap_err(),
+        cagd_core::Error::BasePoint { count: 1 }
+    );
     let imp = ImplicitCurve::new(&c).unwrap();
     assert_eq!(imp.report().degree, 1);
     assert_eq!(imp.report().base_points, 1);
@@ -244,7 +247,10 @@ fn degree_elevated_curve_implicitizes_at_its_true_degree() {
     // Elevating a cubic once divides by 4: exact in binary, one base point at t = ∞.
     let c = BezierCurve::new(vec![0.0, 0.0, 1.0, 3.0, 3.0, 3.0, 4.0, -1.0], 2).unwrap();
     let e = c.elevate(1).unwrap();
-    assert!(matches!(implicitize(&e), Err(cagd_core::Error::BasePoint { count: 1 })));
+    assert!(matches!(
+        implicitize(&e),
+        Err(cagd_core::Error::BasePoint { count: 1 })
+    ));
     let imp = ImplicitCurve::new(&e).unwrap();
     assert_eq!(imp.report().degree, 3);
     let direct = implicitize(&c).unwrap();
@@ -261,16 +267,37 @@ fn degree_elevated_curve_implicitizes_at_its_true_degree() {
 #[test]
 fn bad_input_is_a_named_error() {
     let c3 = BezierCurve::new(vec![0.0; 9], 3).unwrap();
-    assert_eq!(implicitize(&c3).unwrap_err(), cagd_core::Error::NotPlanar { dim: 3 });
+    assert_eq!(
+        implicitize(&c3).unwrap_err(),
+        cagd_core::Error::NotPlanar { dim: 3 }
+    );
     let c0 = BezierCurve::new(vec![1.0, 1.0], 2).unwrap();
-    assert!(matches!(implicitize(&c0), Err(cagd_core::Error::DegreeOutOfRange { .. })));
+    assert!(matches!(
+        implicitize(&c0),
+        Err(cagd_core::Error::DegreeOutOfRange { .. })
+    ));
     let point = BezierCurve::new(vec![1.0, 1.0, 1.0, 1.0, 1.0, 1.0], 2).unwrap();
-    assert!(matches!(implicitize(&point), Err(cagd_core::Error::BasePoint { count: 2 })));
-    assert!(matches!(ImplicitCurve::new(&point), Err(cagd_core::Error::BasePoint { .. })));
+    assert!(matches!(
+        implicitize(&point),
+        Err(cagd_core::Error::BasePoint { count: 2 })
+    ));
+    assert!(matches!(
+        ImplicitCurve::new(&point),
+        Err(cagd_core::Error::BasePoint { .. })
+    ));
     let big = BezierCurve::new(vec![0.5; 2 * 18], 2).unwrap();
-    assert!(matches!(implicitize(&big), Err(cagd_core::Error::DegreeOutOfRange { degree: 17, .. })));
+    assert!(matches!(
+        implicitize(&big),
+        Err(cagd_core::Error::DegreeOutOfRange { degree: 17, .. })
+    ));
     let c = BezierCurve::new(vec![0.0, 0.0, 1.0, 2.0, 2.0, 0.0], 2).unwrap();
     let imp = ImplicitCurve::new(&c).unwrap();
-    assert!(matches!(imp.invert(f64::NAN, 0.0), Err(cagd_core::Error::BadParameter { .. })));
-    assert!(matches!(imp.invert(5.0, 5.0), Err(cagd_core::Error::NotOnCurve { .. })));
+    assert!(matches!(
+        imp.invert(f64::NAN, 0.0),
+        Err(cagd_core::Error::BadParameter { .. })
+    ));
+    assert!(matches!(
+        imp.invert(5.0, 5.0),
+        Err(cagd_core::Error::NotOnCurve { .. })
+    ));
 }
