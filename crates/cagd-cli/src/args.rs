@@ -3,6 +3,8 @@
 
 use std::path::PathBuf;
 
+use crate::implicit_cmd::{ImplicitizeArgs, IntersectArgs};
+
 /// Usage text printed by `cagd --help` and after a usage error.
 pub(crate) const USAGE: &str = "\
 usage:
@@ -10,6 +12,8 @@ usage:
               [--merge exact|lossy] [--strategy fit|segments|piegl-tiller-1995]
               [-i FILE] [-o FILE] [--svg FILE]
   cagd merge [--continuity K] [--tol T] [-i FILE] [-o FILE]
+  cagd implicitize [--divide-base-points] [-i FILE] [-o FILE] [--svg FILE]
+  cagd intersect A.json B.json [-o FILE] [--svg FILE]
   cagd demo [--out DIR]
   cagd check FILE...
   cagd --help
@@ -39,6 +43,15 @@ degree-m segments (--continuity K, default 0, K < m). The joints are checked: C0
 T, C^K by a certified knot removal within T. --tol T defaults to
 1e-9 * max(1, largest |coordinate|) (the homogeneous coordinates (w x, w) of rational
 segments included); the report gives the T used.
+
+implicitize reads one planar {\"type\":\"bezier\",\"points\":[[x,y],...]} (optional
+\"weights\") and prints {\"degree\": n, \"monomials\": [[i, j, c], ...], \"monomials_exact\":
+[[i, j, \"p/q\"], ...], \"report\": {...}}: f(x, y) = sum c x^i y^j = det F (SPEC-convert
+15.8, exact coefficients, c rounded once). A curve with base points (X, Y, W sharing a
+factor) is refused unless --divide-base-points. --svg draws the curve over the sign of f and
+its zero set. intersect reads two such files and prints {\"intersections\": [{\"s\", \"t\",
+\"point\", \"tangential\"}, ...], \"report\": {...}} (s on A, t on B, sorted by s); curves
+overlapping along an arc give \"coincident\": true in the report.
 
 check runs every vector of spec-vector files (the format of ../shared/spec/vectors-*.json:
 a list of {id, algorithm, params, input, expected, tol}) through the library by its
@@ -94,6 +107,8 @@ pub(crate) struct MergeArgs {
 pub(crate) enum Command {
     Reduce(ReduceArgs),
     Merge(MergeArgs),
+    Implicitize(ImplicitizeArgs),
+    Intersect(IntersectArgs),
     Demo { out: PathBuf },
     Check { files: Vec<PathBuf> },
     Help,
@@ -140,6 +155,51 @@ fn parse_merge<'a>(mut it: impl Iterator<Item = &'a String>) -> Result<MergeArgs
     Ok(m)
 }
 
+/// The options of `cagd implicitize`.
+fn parse_implicitize<'a>(
+    mut it: impl Iterator<Item = &'a String>,
+) -> Result<ImplicitizeArgs, String> {
+    let mut a = ImplicitizeArgs {
+        input: None,
+        output: None,
+        svg: None,
+        divide_base_points: false,
+    };
+    while let Some(arg) = it.next() {
+        match arg.as_str() {
+            "-i" | "--input" => a.input = Some(PathBuf::from(value(&mut it, arg)?)),
+            "-o" | "--output" => a.output = Some(PathBuf::from(value(&mut it, arg)?)),
+            "--svg" => a.svg = Some(PathBuf::from(value(&mut it, arg)?)),
+            "--divide-base-points" => a.divide_base_points = true,
+            other => return Err(format!("implicitize: unknown argument {other:?}")),
+        }
+    }
+    Ok(a)
+}
+
+/// The options of `cagd intersect` (two files, then options).
+fn parse_intersect<'a>(mut it: impl Iterator<Item = &'a String>) -> Result<IntersectArgs, String> {
+    let mut files = Vec::new();
+    let (mut output, mut svg) = (None, None);
+    while let Some(arg) = it.next() {
+        match arg.as_str() {
+            "-o" | "--output" => output = Some(PathBuf::from(value(&mut it, arg)?)),
+            "--svg" => svg = Some(PathBuf::from(value(&mut it, arg)?)),
+            other if other.starts_with('-') => {
+                return Err(format!("intersect: unknown argument {other:?}"));
+            }
+            file => files.push(PathBuf::from(file)),
+        }
+    }
+    match <[PathBuf; 2]>::try_from(files) {
+        Ok([a, b]) => Ok(IntersectArgs { a, b, output, svg }),
+        Err(f) => Err(format!(
+            "intersect: name exactly two curve files, got {}",
+            f.len()
+        )),
+    }
+}
+
 /// Parses the arguments after the program name.
 pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
     let mut it = args.iter();
@@ -159,6 +219,8 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
             Ok(Command::Demo { out })
         }
         "merge" => parse_merge(it).map(Command::Merge),
+        "implicitize" => parse_implicitize(it).map(Command::Implicitize),
+        "intersect" => parse_intersect(it).map(Command::Intersect),
         "check" => {
             let files: Vec<PathBuf> = it.map(PathBuf::from).collect();
             if files.is_empty() {
@@ -273,6 +335,36 @@ mod tests {
         assert_eq!(
             parse(&args("merge --to 3")).unwrap_err(),
             "merge: unknown argument \"--to\""
+        );
+    }
+
+    #[test]
+    fn implicit_arguments() {
+        let Command::Implicitize(a) = parse(&args(
+            "implicitize --divide-base-points -i c.json --svg c.svg",
+        ))
+        .unwrap() else {
+            panic!("not implicitize");
+        };
+        assert!(a.divide_base_points);
+        assert_eq!(a.input, Some(PathBuf::from("c.json")));
+        assert_eq!(a.svg, Some(PathBuf::from("c.svg")));
+        let Command::Intersect(i) = parse(&args("intersect a.json b.json -o out.json")).unwrap()
+        else {
+            panic!("not intersect");
+        };
+        assert_eq!(
+            (i.a, i.b),
+            (PathBuf::from("a.json"), PathBuf::from("b.json"))
+        );
+        assert_eq!(i.output, Some(PathBuf::from("out.json")));
+        assert_eq!(
+            parse(&args("intersect a.json")).unwrap_err(),
+            "intersect: name exactly two curve files, got 1"
+        );
+        assert_eq!(
+            parse(&args("implicitize --to 3")).unwrap_err(),
+            "implicitize: unknown argument \"--to\""
         );
     }
 

@@ -156,7 +156,9 @@ pub enum Error {
     },
     /// The homogeneous coordinates X(t), Y(t), W(t) of a rational curve share a common factor
     /// of degree `count` (base points, SPEC-convert §15.8 end): `det F` vanishes identically.
-    #[error("the curve has {count} base point(s) (a common factor of X, Y, W): det F is identically 0")]
+    #[error(
+        "the curve has {count} base point(s) (a common factor of X, Y, W): det F is identically 0"
+    )]
     BasePoint {
         /// The number of base points (degree of the common factor, points at t = ∞ included).
         count: usize,

@@ -75,7 +75,8 @@ impl Implicitization {
 /// `det F = (-1)^(n(n+1)/2) Res_t(W x - X, W y - Y)`.
 ///
 /// # Errors
-/// [`Error::NotPlanar`], [`Error::DegreeOutOfRange`] (`n = 0` or `n > MAX_IMPLICIT_DEGREE`),
+/// [`Error::NotPlanar`], [`Error::NotEnoughPoints`] (`n = 0`), [`Error::DegreeOutOfRange`]
+/// (`n > MAX_IMPLICIT_DEGREE`),
 /// [`Error::BasePoint`].
 ///
 /// ```

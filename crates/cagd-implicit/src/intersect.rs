@@ -51,7 +51,8 @@ fn normalized(c: &BezierCurve, centre: [f64; 2], scale: f64) -> Result<BezierCur
 /// Degree up to [`crate::MAX_IMPLICIT_DEGREE`] each (tested up to 5, benchmarked at 3 and 5).
 ///
 /// # Errors
-/// [`Error::NotPlanar`], [`Error::DegreeOutOfRange`]; [`Error::BasePoint`] when a curve is a
+/// [`Error::NotPlanar`], [`Error::NotEnoughPoints`], [`Error::DegreeOutOfRange`];
+/// [`Error::BasePoint`] when a curve is a
 /// single point; [`Error::Coincident`] when the curves overlap along an arc.
 ///
 /// ```

@@ -15,13 +15,17 @@ pub const MAX_IMPLICIT_DEGREE: usize = 16;
 /// and weights positive by construction of [`BezierCurve`]).
 ///
 /// # Errors
-/// [`Error::NotPlanar`], [`Error::DegreeOutOfRange`] (degree 0 or above the range).
+/// [`Error::NotPlanar`], [`Error::NotEnoughPoints`] (degree 0),
+/// [`Error::DegreeOutOfRange`] (above the range).
 pub fn check_planar(curve: &BezierCurve) -> Result<()> {
     if curve.dim() != 2 {
         return Err(Error::NotPlanar { dim: curve.dim() });
     }
     let n = curve.degree();
-    if n == 0 || n > MAX_IMPLICIT_DEGREE {
+    if n == 0 {
+        return Err(Error::NotEnoughPoints { got: 1, need: 2 });
+    }
+    if n > MAX_IMPLICIT_DEGREE {
         return Err(Error::DegreeOutOfRange {
             degree: n,
             max: MAX_IMPLICIT_DEGREE,
@@ -114,10 +118,10 @@ mod tests {
         let c3 = BezierCurve::new(vec![0.0; 9], 3).unwrap();
         assert_eq!(check_planar(&c3), Err(Error::NotPlanar { dim: 3 }));
         let c0 = BezierCurve::new(vec![1.0, 2.0], 2).unwrap();
-        assert!(matches!(
+        assert_eq!(
             check_planar(&c0),
-            Err(Error::DegreeOutOfRange { degree: 0, .. })
-        ));
+            Err(Error::NotEnoughPoints { got: 1, need: 2 })
+        );
         let big = BezierCurve::new(vec![0.0; 2 * (MAX_IMPLICIT_DEGREE + 2)], 2).unwrap();
         assert!(matches!(
             check_planar(&big),

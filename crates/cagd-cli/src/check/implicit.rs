@@ -84,10 +84,7 @@ fn run_implicitize(v: &Vector<'_>) -> Result<Outcome, String> {
         Ok(c) => c,
         Err(e) => return Ok(Outcome::Refused(e)),
     };
-    let expected = v
-        .expected
-        .as_object()
-        .ok_or("expected: not an object")?;
+    let expected = v.expected.as_object().ok_or("expected: not an object")?;
     // Read the parameters of curve samples before calling the library (malformed = Err).
     let imp = match implicitize(&c) {
         Ok(i) => i,
@@ -118,7 +115,9 @@ fn run_implicitize(v: &Vector<'_>) -> Result<Outcome, String> {
                 rest.insert(key.clone(), ev.clone());
             }
             "curve_samples_t_x_y" => {
-                let rows = ev.as_array().ok_or("expected.curve_samples_t_x_y: not a list")?;
+                let rows = ev
+                    .as_array()
+                    .ok_or("expected.curve_samples_t_x_y: not a list")?;
                 let mut out = Vec::with_capacity(rows.len());
                 for (k, r) in rows.iter().enumerate() {
                     let r = numbers(r, &format!("expected.curve_samples_t_x_y[{k}]"))?;
