@@ -48,6 +48,10 @@
 //!   their `_to_tolerance` forms. All take one `CagdReduceOptions` (versioned by its
 //!   leading `struct_size`, filled by `cagd_reduce_options_init`).
 //!
+//! - Implicitization (cagd-implicit, SPEC-convert §15.8–15.9): `CagdImplicit` from
+//!   `cagd_curve_implicitize` (coefficients, Bézout matrices, classification, inversion),
+//!   `cagd_curve_intersect`, `cagd_implicit_subdivision_matrix`.
+//!
 //! ## Supported range and accuracy
 //!
 //! That of cagd-core (degrees `0..=64`, any `dim >= 1`); the C layer adds no numerics, it
@@ -74,6 +78,10 @@ mod curve;
 mod curve_list;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod curve_ops;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod implicit;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod implicit_intersect;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod invariants;
 #[allow(
@@ -143,6 +151,13 @@ pub use curve_list::{
 pub use curve_ops::{
     cagd_curve_elevate, cagd_curve_eval, cagd_curve_eval_many, cagd_curve_segment,
     cagd_curve_subdivide,
+};
+pub use implicit::{
+    CagdImplicit, cagd_curve_implicitize, cagd_implicit_bezout, cagd_implicit_classify,
+    cagd_implicit_coefficients, cagd_implicit_free, cagd_implicit_invert, cagd_implicit_report,
+};
+pub use implicit_intersect::{
+    CAGD_INTERSECTION_STRIDE, cagd_curve_intersect, cagd_implicit_subdivision_matrix,
 };
 pub use invariants::{
     cagd_curve_distance, cagd_curve_forward_difference, cagd_tensorpatch_degeneracy,

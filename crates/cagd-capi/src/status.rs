@@ -53,12 +53,24 @@ pub enum CagdStatus {
     /// A (source, target) degree pair the operation does not accept, e.g. a reduction
     /// whose target is not below the source degree.
     ERR_BAD_DEGREE_PAIR = 27,
+    /// An implicitization / intersection input is not a planar (dim = 2) curve.
+    ERR_NOT_PLANAR = 35,
     /// A condition of a seed formula is not met (the message gives the equation number).
     ERR_CONDITION_NOT_MET = 40,
     /// An iterative or adaptive algorithm could not reach the tolerance.
     ERR_NO_CONVERGENCE = 41,
     /// A linear system that must be solved is singular.
     ERR_SINGULAR = 42,
+    /// The curve has base points (X, Y, W share a factor; `det F` is identically 0) and
+    /// they were not to be divided out, or nothing is left after dividing them out.
+    ERR_BASE_POINT = 50,
+    /// The point is a singular point (double point, cusp) of the curve: its parameter is
+    /// not unique.
+    ERR_SINGULAR_POINT = 51,
+    /// The point given for inversion is not on the curve.
+    ERR_NOT_ON_CURVE = 52,
+    /// Two curves overlap along an arc: their intersection is not a finite set.
+    ERR_COINCIDENT = 53,
     /// A bug inside cagd was caught at the boundary (a Rust panic); please report it with
     /// the message.
     ERR_PANIC = 99,
@@ -82,9 +94,14 @@ impl CagdStatus {
             CagdStatus::ERR_DEGREE_OUT_OF_RANGE => c"CAGD_ERR_DEGREE_OUT_OF_RANGE",
             CagdStatus::ERR_TOO_MANY_CONSTRAINTS => c"CAGD_ERR_TOO_MANY_CONSTRAINTS",
             CagdStatus::ERR_BAD_DEGREE_PAIR => c"CAGD_ERR_BAD_DEGREE_PAIR",
+            CagdStatus::ERR_NOT_PLANAR => c"CAGD_ERR_NOT_PLANAR",
             CagdStatus::ERR_CONDITION_NOT_MET => c"CAGD_ERR_CONDITION_NOT_MET",
             CagdStatus::ERR_NO_CONVERGENCE => c"CAGD_ERR_NO_CONVERGENCE",
             CagdStatus::ERR_SINGULAR => c"CAGD_ERR_SINGULAR",
+            CagdStatus::ERR_BASE_POINT => c"CAGD_ERR_BASE_POINT",
+            CagdStatus::ERR_SINGULAR_POINT => c"CAGD_ERR_SINGULAR_POINT",
+            CagdStatus::ERR_NOT_ON_CURVE => c"CAGD_ERR_NOT_ON_CURVE",
+            CagdStatus::ERR_COINCIDENT => c"CAGD_ERR_COINCIDENT",
             CagdStatus::ERR_PANIC => c"CAGD_ERR_PANIC",
         }
     }
@@ -96,7 +113,7 @@ impl CagdStatus {
 }
 
 /// Every status, in numeric order (used by tests and by `cagd_status_name`).
-pub(crate) const ALL_STATUSES: [CagdStatus; 18] = [
+pub(crate) const ALL_STATUSES: [CagdStatus; 23] = [
     CagdStatus::OK,
     CagdStatus::ERR_NULL_POINTER,
     CagdStatus::ERR_BUFFER_TOO_SMALL,
@@ -111,9 +128,14 @@ pub(crate) const ALL_STATUSES: [CagdStatus; 18] = [
     CagdStatus::ERR_DEGREE_OUT_OF_RANGE,
     CagdStatus::ERR_TOO_MANY_CONSTRAINTS,
     CagdStatus::ERR_BAD_DEGREE_PAIR,
+    CagdStatus::ERR_NOT_PLANAR,
     CagdStatus::ERR_CONDITION_NOT_MET,
     CagdStatus::ERR_NO_CONVERGENCE,
     CagdStatus::ERR_SINGULAR,
+    CagdStatus::ERR_BASE_POINT,
+    CagdStatus::ERR_SINGULAR_POINT,
+    CagdStatus::ERR_NOT_ON_CURVE,
+    CagdStatus::ERR_COINCIDENT,
     CagdStatus::ERR_PANIC,
 ];
 
@@ -141,6 +163,11 @@ pub fn status_of_core(e: &Error) -> CagdStatus {
         Error::ConditionNotMet { .. } => CagdStatus::ERR_CONDITION_NOT_MET,
         Error::NoConvergence { .. } => CagdStatus::ERR_NO_CONVERGENCE,
         Error::Singular { .. } => CagdStatus::ERR_SINGULAR,
+        Error::NotPlanar { .. } => CagdStatus::ERR_NOT_PLANAR,
+        Error::BasePoint { .. } => CagdStatus::ERR_BASE_POINT,
+        Error::SingularPoint { .. } => CagdStatus::ERR_SINGULAR_POINT,
+        Error::NotOnCurve { .. } => CagdStatus::ERR_NOT_ON_CURVE,
+        Error::Coincident { .. } => CagdStatus::ERR_COINCIDENT,
         _ => CagdStatus::ERR_INVALID_ARGUMENT,
     }
 }
@@ -170,7 +197,7 @@ mod tests {
 
     #[test]
     fn discriminants_are_pinned() {
-        let expected: [(CagdStatus, i32); 18] = [
+        let expected: [(CagdStatus, i32); 23] = [
             (CagdStatus::OK, 0),
             (CagdStatus::ERR_NULL_POINTER, 1),
             (CagdStatus::ERR_BUFFER_TOO_SMALL, 2),
@@ -185,9 +212,14 @@ mod tests {
             (CagdStatus::ERR_DEGREE_OUT_OF_RANGE, 25),
             (CagdStatus::ERR_TOO_MANY_CONSTRAINTS, 26),
             (CagdStatus::ERR_BAD_DEGREE_PAIR, 27),
+            (CagdStatus::ERR_NOT_PLANAR, 35),
             (CagdStatus::ERR_CONDITION_NOT_MET, 40),
             (CagdStatus::ERR_NO_CONVERGENCE, 41),
             (CagdStatus::ERR_SINGULAR, 42),
+            (CagdStatus::ERR_BASE_POINT, 50),
+            (CagdStatus::ERR_SINGULAR_POINT, 51),
+            (CagdStatus::ERR_NOT_ON_CURVE, 52),
+            (CagdStatus::ERR_COINCIDENT, 53),
             (CagdStatus::ERR_PANIC, 99),
         ];
         for (i, (s, code)) in expected.into_iter().enumerate() {
@@ -319,6 +351,21 @@ mod tests {
                 S::ERR_NO_CONVERGENCE,
             ),
             (Error::Singular { what: "Gram" }, S::ERR_SINGULAR),
+            (Error::NotPlanar { dim: 3 }, S::ERR_NOT_PLANAR),
+            (Error::BasePoint { count: 1 }, S::ERR_BASE_POINT),
+            (
+                Error::SingularPoint { x: 0.0, y: 0.0 },
+                S::ERR_SINGULAR_POINT,
+            ),
+            (
+                Error::NotOnCurve {
+                    x: 1.0,
+                    y: 2.0,
+                    distance: 0.5,
+                },
+                S::ERR_NOT_ON_CURVE,
+            ),
+            (Error::Coincident { s0: 0.0, s1: 1.0 }, S::ERR_COINCIDENT),
         ];
         for (e, s) in cases {
             assert_eq!(status_of_core(&e), s, "{e:?}");
