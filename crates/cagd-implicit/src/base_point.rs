@@ -12,9 +12,10 @@
 //! (`f = -(x - y)^2` for a collinear quadratic). `k` is the number of parameters of a
 //! generic curve point: the degree of `gcd_t` of the 2 x 2 minors of `[P(t); P(s0)]`.
 
-use num_bigint::BigInt;
-use num_traits::Zero;
+use cagd_core::binomial;
 
+use crate::exact::IntHom;
+use crate::modular::{Digits, poly_degree, poly_gcd, primes};
 use crate::rational::{Q, UPoly};
 
 /// The power-basis polynomials X(t), Y(t), W(t) of homogeneous Bernstein points.
@@ -70,40 +71,78 @@ pub(crate) fn divide_out(hom: &[[Q; 3]]) -> Option<Vec<[Q; 3]>> {
 }
 
 /// The number `k` of parameters of a generic curve point (1 for a proper
-/// parametrization); the implicit polynomial is then `c g^k`. `hom` must be free of base
-/// points. The minimum over three rational parameters `s0` is taken (a point with more
-/// parameters than the generic count is a singular point, which a fixed small set of
-/// parameters avoids for all but contrived curves).
-pub(crate) fn parametrization_power(hom: &[[Q; 3]]) -> usize {
-    let n = hom.len() - 1;
-    let [x, y, w] = power_forms(hom);
+/// parametrization); the implicit polynomial is then `c g^k`. `h` must be free of base
+/// points. `k` is the degree of `gcd_t` of the 2 x 2 minors of `[P(t); P(s0)]` (plus the
+/// roots at `t = ∞`), computed modulo two 31-bit primes for `s0 = 2, 5, 11`; the minimum is
+/// taken (a special `s0` — a singular point — or an unlucky prime can only raise it).
+pub(crate) fn parametrization_power(h: &IntHom) -> usize {
+    let n = h.degree();
     let mut best = n;
-    for (a, b) in [(1, 3), (2, 7), (5, 11)] {
-        let s0 = Q::new(BigInt::from(a), BigInt::from(b));
-        let (xs, ys, ws) = (x.eval(&s0), y.eval(&s0), w.eval(&s0));
-        if xs.is_zero() && ys.is_zero() && ws.is_zero() {
-            continue;
+    for &p in &primes()[..2] {
+        let forms: Vec<Vec<u64>> = (0..3)
+            .map(|k| {
+                let c: Vec<u64> = h
+                    .pts
+                    .iter()
+                    .map(|pt| Digits::new(&pt[k]).residue(p))
+                    .collect();
+                bernstein_to_power_mod(&c, p)
+            })
+            .collect();
+        let eval = |f: &[u64], s: u64| f.iter().rev().fold(0u64, |acc, &c| (acc * s + c) % p);
+        for s0 in [2u64, 5, 11] {
+            let (xs, ys, ws) = (
+                eval(&forms[0], s0),
+                eval(&forms[1], s0),
+                eval(&forms[2], s0),
+            );
+            if xs == 0 && ys == 0 && ws == 0 {
+                continue;
+            }
+            let minor = |f: &[u64], fa: u64, g: &[u64], ga: u64| -> Vec<u64> {
+                f.iter()
+                    .zip(g)
+                    .map(|(&a, &b)| (a * fa % p + p - b * ga % p) % p)
+                    .collect()
+            };
+            let m1 = minor(&forms[0], ws, &forms[2], xs);
+            let m2 = minor(&forms[1], ws, &forms[2], ys);
+            let m3 = minor(&forms[0], ys, &forms[1], xs);
+            let Some(top) = [&m1, &m2, &m3].iter().filter_map(|m| poly_degree(m)).max() else {
+                continue;
+            };
+            let g = poly_gcd(&poly_gcd(&m1, &m2, p), &m3, p);
+            let k = poly_degree(&g).unwrap_or(0) + (n - top);
+            best = best.min(k.max(1));
         }
-        // Minors of [X(t) Y(t) W(t); xs ys ws].
-        let m1 = x.scale(&ws).sub(&w.scale(&xs));
-        let m2 = y.scale(&ws).sub(&w.scale(&ys));
-        let m3 = x.scale(&ys).sub(&y.scale(&xs));
-        let g = m1.gcd(&m2).gcd(&m3);
-        let top = [&m1, &m2, &m3]
-            .iter()
-            .filter_map(|p| p.degree())
-            .max()
-            .unwrap_or(0);
-        let k = g.degree().unwrap_or(n) + (n - top.min(n));
-        best = best.min(k.max(1));
     }
     best
+}
+
+/// Power-basis coefficients mod `p` of the Bernstein polynomial with coefficients `c`.
+fn bernstein_to_power_mod(c: &[u64], p: u64) -> Vec<u64> {
+    let n = c.len() - 1;
+    let b = |n: usize, k: usize| (binomial(n, k) % u128::from(p)) as u64;
+    let mut out = vec![0u64; n + 1];
+    for (i, &ci) in c.iter().enumerate() {
+        let base = ci * b(n, i) % p;
+        for k in i..=n {
+            let t = base * b(n - i, k - i) % p;
+            out[k] = if (k - i) % 2 == 0 {
+                (out[k] + t) % p
+            } else {
+                (out[k] + p - t) % p
+            };
+        }
+    }
+    out
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::rational::q;
+    use num_bigint::BigInt;
 
     fn hom(points: &[(f64, f64)], w: &[f64]) -> Vec<[Q; 3]> {
         points
@@ -117,7 +156,7 @@ mod tests {
     fn proper_curves_have_no_base_points() {
         let h = hom(&[(0.0, 0.0), (1.0, 2.0), (2.0, 0.0)], &[1.0; 3]);
         assert_eq!(base_point_count(&h), 0);
-        assert_eq!(parametrization_power(&h), 1);
+        assert_eq!(parametrization_power(&IntHom::from_rational(&h)), 1);
     }
 
     #[test]
@@ -146,7 +185,7 @@ mod tests {
     fn collinear_quadratic_is_traced_twice() {
         let h = hom(&[(0.0, 0.0), (2.0, 2.0), (1.0, 1.0)], &[1.0; 3]);
         assert_eq!(base_point_count(&h), 0);
-        assert_eq!(parametrization_power(&h), 2);
+        assert_eq!(parametrization_power(&IntHom::from_rational(&h)), 2);
     }
 
     #[test]

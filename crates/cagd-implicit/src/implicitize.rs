@@ -4,10 +4,9 @@
 use cagd_core::{BezierCurve, Error, Result};
 
 use crate::base_point::{base_point_count, divide_out, parametrization_power};
-use crate::exact::exact_coefficients;
-use crate::planar::{check_planar, exact_homogeneous};
+use crate::exact::{IntHom, exact_coefficients};
+use crate::planar::check_planar;
 use crate::polynomial::ImplicitPolynomial;
-use crate::rational::Q;
 
 /// What to do when `X, Y, W` share a factor (base points, `det F ≡ 0`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -56,7 +55,7 @@ pub struct Implicitization {
     pub polynomial: ImplicitPolynomial,
     /// What was found (degree, base points, properness).
     pub report: ImplicitReport,
-    pub(crate) hom: Vec<[Q; 3]>,
+    pub(crate) hom: IntHom,
 }
 
 impl Implicitization {
@@ -64,6 +63,7 @@ impl Implicitization {
     /// to `f64` (the input's `(w x, w y, w)` unless base points were divided out).
     pub fn homogeneous_points(&self) -> Vec<[f64; 3]> {
         self.hom
+            .to_rational()
             .iter()
             .map(|p| p.clone().map(|c| crate::polynomial::round(&c)))
             .collect()
@@ -101,22 +101,24 @@ pub fn implicitize(curve: &BezierCurve) -> Result<Implicitization> {
 pub fn implicitize_with(curve: &BezierCurve, options: &ImplicitOptions) -> Result<Implicitization> {
     check_planar(curve)?;
     let input_degree = curve.degree();
-    let mut hom = exact_homogeneous(curve);
+    let mut hom = IntHom::from_curve(curve);
     let mut coefs = exact_coefficients(&hom);
     let mut removed = 0;
     if coefs.iter().all(num_traits::Zero::is_zero) {
-        let count = base_point_count(&hom);
+        let rational = hom.to_rational();
+        let count = base_point_count(&rational);
         let count = if count == 0 { input_degree } else { count };
         match options.base_points {
             BasePointPolicy::Reject => return Err(Error::BasePoint { count }),
             BasePointPolicy::DivideOut => {
-                hom = divide_out(&hom).ok_or(Error::BasePoint { count })?;
-                removed = input_degree - (hom.len() - 1);
+                let reduced = divide_out(&rational).ok_or(Error::BasePoint { count })?;
+                hom = IntHom::from_rational(&reduced);
+                removed = input_degree - hom.degree();
                 coefs = exact_coefficients(&hom);
             }
         }
     }
-    let degree = hom.len() - 1;
+    let degree = hom.degree();
     let power = parametrization_power(&hom);
     Ok(Implicitization {
         polynomial: ImplicitPolynomial::from_exact(degree, coefs),

@@ -39,6 +39,7 @@ mod implicitize;
 mod intersect;
 mod inversion;
 mod lu;
+mod modular;
 mod planar;
 mod polynomial;
 mod rational;

@@ -4,6 +4,7 @@
 
 use cagd_core::{BezierCurve, Error, Result};
 
+#[cfg(test)]
 use crate::rational::{Q, q};
 
 /// The largest curve degree the implicitization accepts. The exact coefficients cost
@@ -39,7 +40,9 @@ pub(crate) fn weight(curve: &BezierCurve, i: usize) -> f64 {
     curve.weights().map_or(1.0, |w| w[i])
 }
 
-/// Exact homogeneous control points `(w_i x_i, w_i y_i, w_i)` of a planar curve.
+/// Exact homogeneous control points `(w_i x_i, w_i y_i, w_i)` of a planar curve (the
+/// test oracle of the integer route `IntHom::from_curve`).
+#[cfg(test)]
 pub(crate) fn exact_homogeneous(curve: &BezierCurve) -> Vec<[Q; 3]> {
     (0..=curve.degree())
         .map(|i| {

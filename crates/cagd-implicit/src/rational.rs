@@ -14,6 +14,7 @@ pub(crate) type Q = BigRational;
 
 /// The exact value of a finite `f64` (non-finite values, which validated inputs never
 /// hold, give 0).
+#[cfg(test)]
 pub(crate) fn q(x: f64) -> Q {
     BigRational::from_float(x).unwrap_or_else(Q::zero)
 }
@@ -85,6 +86,7 @@ impl UPoly {
     }
 
     /// Value at `t` (Horner).
+    #[cfg(test)]
     pub(crate) fn eval(&self, t: &Q) -> Q {
         let mut acc = Q::zero();
         for c in self.0.iter().rev() {
@@ -132,11 +134,13 @@ impl UPoly {
     }
 
     /// The polynomial times a scalar.
+    #[cfg(test)]
     pub(crate) fn scale(&self, s: &Q) -> UPoly {
         UPoly::new(self.0.iter().map(|c| c * s).collect())
     }
 
     /// `self - other`.
+    #[cfg(test)]
     pub(crate) fn sub(&self, other: &UPoly) -> UPoly {
         let n = self.0.len().max(other.0.len());
         UPoly::new(

@@ -210,6 +210,6 @@ fn bad_input_is_a_named_error() {
     let p = BezierCurve::new(vec![1.0, 1.0], 2).unwrap();
     assert!(matches!(
         intersect(&p, &a),
-        Err(cagd_core::Error::DegreeOutOfRange { .. })
+        Err(cagd_core::Error::NotEnoughPoints { .. })
     ));
 }

@@ -274,7 +274,7 @@ fn bad_input_is_a_named_error() {
     let c0 = BezierCurve::new(vec![1.0, 1.0], 2).unwrap();
     assert!(matches!(
         implicitize(&c0),
-        Err(cagd_core::Error::DegreeOutOfRange { .. })
+        Err(cagd_core::Error::NotEnoughPoints { .. })
     ));
     let point = BezierCurve::new(vec![1.0, 1.0, 1.0, 1.0, 1.0, 1.0], 2).unwrap();
     assert!(matches!(
