@@ -1,5 +1,5 @@
 //! Implicitization benchmarks (issue 12): exact implicit coefficients at degree 2, 3, 4, 5,
-//! 7, 10 (the `f64` coefficients are the exact ones rounded once, so "f64" here is the
+//! 7, 10 for random curves (full 53-bit mantissas) and for small binary fractions (the `f64` coefficients are the exact ones rounded once, so "f64" here is the
 //! whole [`ImplicitCurve`] — exact polynomial, `f64` Bézout matrices and report — and
 //! "bezout" the `f64` Bézout matrices alone), classifying one point at degree 5, inverting
 //! one point, and intersecting two cubics and two quintics.
@@ -29,6 +29,18 @@ fn curve(n: usize, seed: u64) -> BezierCurve {
     };
     let pts: Vec<f64> = (0..2 * (n + 1)).map(|_| 2.0 * next() - 1.0).collect();
     let w: Vec<f64> = (0..=n).map(|_| 0.5 + 1.5 * next()).collect();
+    BezierCurve::new_rational(pts, w, 2).expect("valid curve")
+}
+
+/// A curve of degree `n` with small binary-fraction coordinates (multiples of 1/8 in ±2)
+/// and weights (multiples of 1/4 in 0.5..2), like the spec vectors.
+fn small_curve(n: usize) -> BezierCurve {
+    let pts: Vec<f64> = (0..2 * (n + 1))
+        .map(|i| f64::from(((i * 37 + 11) % 33) as u32) / 8.0 - 2.0)
+        .collect();
+    let w: Vec<f64> = (0..=n)
+        .map(|i| 0.5 + f64::from(((i * 5 + 3) % 7) as u32) / 4.0)
+        .collect();
     BezierCurve::new_rational(pts, w, 2).expect("valid curve")
 }
 
@@ -81,6 +93,18 @@ fn bench(c: &mut Criterion) {
             median_us(|| {
                 black_box(BezoutMatrix::new(black_box(&cv)).expect("ok"));
             }),
+        ));
+    }
+    for n in [2usize, 3, 4, 5, 7, 10] {
+        let cv = small_curve(n);
+        c.bench_function(&format!("implicitize_small_n{n}"), |b| {
+            b.iter(|| implicitize(black_box(&cv)).expect("ok"))
+        });
+        summary.push(format!(
+            "implicitize degree {n:>2}, small binary fractions: exact {:>9.1} us",
+            median_us(|| {
+                black_box(implicitize(black_box(&cv)).expect("ok"));
+            })
         ));
     }
     let c5 = curve(5, 5);

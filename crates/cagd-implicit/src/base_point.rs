@@ -15,7 +15,7 @@
 use cagd_core::binomial;
 
 use crate::exact::IntHom;
-use crate::modular::{Digits, poly_degree, poly_gcd, primes};
+use crate::modular::{Digits, Modulus, poly_degree, poly_gcd, primes};
 use crate::rational::{Q, UPoly};
 
 /// The power-basis polynomials X(t), Y(t), W(t) of homogeneous Bernstein points.
@@ -84,7 +84,7 @@ pub(crate) fn parametrization_power(h: &IntHom) -> usize {
                 let c: Vec<u64> = h
                     .pts
                     .iter()
-                    .map(|pt| Digits::new(&pt[k]).residue(p))
+                    .map(|pt| Digits::new(&pt[k]).residue(Modulus::new(p)))
                     .collect();
                 bernstein_to_power_mod(&c, p)
             })

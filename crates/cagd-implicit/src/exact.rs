@@ -8,8 +8,9 @@
 //! the bivariate Newton forward-difference formula
 //! `f(x, y) = sum_{i+j<=n} Δx^i Δy^j f(0,0) C(x,i) C(y,j)`, converted to monomials with the
 //! Stirling numbers of the first kind. All of this is done modulo enough 31-bit primes to
-//! exceed twice the bound `prod_i sum_j (|A_ij| + |B_ij| + |C0_ij|)` on every coefficient
-//! (the permanent bound of the determinant's expansion), and the integer coefficients are
+//! exceed twice the bound `prod_i (sum_j (|A_ij| + |B_ij| + |C0_ij|)^2)^(1/2)` on every
+//! coefficient (a coefficient is a Fourier coefficient of `det F` on the torus
+//! `|x| = |y| = 1`, where Hadamard's inequality bounds `|det F|`), and the integer coefficients are
 //! recovered by Chinese remaindering: exact, with machine-word arithmetic inside.
 //! Beyond [`PRIME_COUNT`] primes (numbers of more than ~15 000 bits) the same lattice
 //! determinants are taken by fraction-free Bareiss elimination on `BigInt`s instead.
@@ -22,7 +23,9 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
-use crate::modular::{Digits, PRIME_COUNT, crt, det_mod, inv_mod, primes};
+use crate::modular::{
+    Crt, Digits, Modulus, PRIME_COUNT, batch_divide, det_mod_fraction, inv_mod, primes,
+};
 use crate::planar::weight;
 use crate::rational::Q;
 
@@ -129,14 +132,17 @@ impl IntHom {
 pub(crate) fn exact_coefficients(h: &IntHom) -> Vec<Q> {
     let n = h.degree();
     let (a, b, c) = integer_bezout(&h.pts);
+    // |c_pq| <= max over |x| = |y| = 1 of |det F| <= prod_i ||row_i||_2 (Hadamard), with
+    // |a x + b y + c| <= |a| + |b| + |c| on the torus.
     let bits: u64 = (0..n)
         .map(|i| {
             let mut s = BigInt::zero();
             for j in 0..n {
                 let k = i * n + j;
-                s += a[k].abs() + b[k].abs() + c[k].abs();
+                let e = a[k].abs() + b[k].abs() + c[k].abs();
+                s += &e * &e;
             }
-            s.bits()
+            s.bits().div_ceil(2)
         })
         .sum();
     let k = usize::try_from(bits / 30 + 2).unwrap_or(usize::MAX);
@@ -240,22 +246,24 @@ fn modular_coefficients(
     let count = tri_count(n);
     let mut residues = vec![vec![0u64; ps.len()]; count];
     let mut m = vec![0u64; n * n];
-    let mut vals = vec![0u64; count];
+    let mut fracs = vec![(0u64, 1u64); count];
     for (pi, &p) in ps.iter().enumerate() {
+        let md = Modulus::new(p);
         let (ra, rb, rc): (Vec<u64>, Vec<u64>, Vec<u64>) = (
-            da.iter().map(|d| d.residue(p)).collect(),
-            db.iter().map(|d| d.residue(p)).collect(),
-            dc.iter().map(|d| d.residue(p)).collect(),
+            da.iter().map(|d| d.residue(md)).collect(),
+            db.iter().map(|d| d.residue(md)).collect(),
+            dc.iter().map(|d| d.residue(md)).collect(),
         );
         for ia in 0..=n {
             for ib in 0..=n - ia {
                 let (xa, yb) = (ia as u64, ib as u64);
                 for k in 0..n * n {
-                    m[k] = (xa * ra[k] + yb * rb[k] + rc[k]) % p;
+                    m[k] = md.reduce(xa * ra[k] + yb * rb[k] + rc[k]);
                 }
-                vals[tri_index(n, ia, ib)] = det_mod(&mut m, n, p);
+                fracs[tri_index(n, ia, ib)] = det_mod_fraction(&mut m, n, md);
             }
         }
+        let vals = batch_divide(&fracs, md);
         let diffs = forward_differences_mod(&vals, n, p);
         // 1 / i! mod p
         let mut inv_fact = vec![1u64; n + 1];
@@ -266,26 +274,32 @@ fn modular_coefficients(
         }
         let s: Vec<Vec<u64>> = stir_d
             .iter()
-            .map(|r| r.iter().map(|d| d.residue(p)).collect())
+            .map(|r| r.iter().map(|d| d.residue(md)).collect())
             .collect();
         for pp in 0..=n {
             for qq in 0..=n - pp {
                 let mut acc = 0u64;
                 for i in pp..=n {
-                    let si = s[i][pp] * inv_fact[i] % p;
+                    let si = md.mul(s[i][pp], inv_fact[i]);
                     if si == 0 {
                         continue;
                     }
                     for j in qq..=n - i {
-                        let t = diffs[tri_index(n, i, j)] * (s[j][qq] * inv_fact[j] % p) % p;
-                        acc = (acc + si * t) % p;
+                        let t = md.mul(diffs[tri_index(n, i, j)], md.mul(s[j][qq], inv_fact[j]));
+                        acc = md.reduce(acc + md.mul(si, t));
                     }
                 }
                 residues[tri_index(n, pp, qq)][pi] = acc;
             }
         }
     }
-    residues.iter().map(|r| crt(r, ps)).collect()
+    let crt = Crt::new(ps);
+    residues.iter().map(|r| crt.reconstruct(r)).collect()
+}
+
+/// `a - b mod p` for residues.
+fn sub_mod(a: u64, b: u64, p: u64) -> u64 {
+    if a >= b { a - b } else { a + p - b }
 }
 
 /// `Δx^i Δy^j f(0, 0)` mod `p` for `i + j <= n` from the lattice values.
@@ -296,7 +310,7 @@ fn forward_differences_mod(values: &[u64], n: usize, p: u64) -> Vec<u64> {
         for i in 0..=n - b {
             dx[tri_index(n, i, b)] = row[0];
             for a in 0..row.len() - 1 - i {
-                row[a] = (row[a + 1] + p - row[a]) % p;
+                row[a] = sub_mod(row[a + 1], row[a], p);
             }
         }
     }
@@ -306,7 +320,7 @@ fn forward_differences_mod(values: &[u64], n: usize, p: u64) -> Vec<u64> {
         for j in 0..=n - i {
             out[tri_index(n, i, j)] = col[0];
             for b in 0..col.len() - 1 - j {
-                col[b] = (col[b + 1] + p - col[b]) % p;
+                col[b] = sub_mod(col[b + 1], col[b], p);
             }
         }
     }

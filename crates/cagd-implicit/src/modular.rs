@@ -71,9 +71,48 @@ pub(crate) fn pow_mod(mut a: u64, mut e: u64, p: u64) -> u64 {
     r
 }
 
-/// `a^-1 mod p` for `a != 0 mod p` (Fermat).
+/// `a^-1 mod p` for `a != 0 mod p` (extended Euclid).
 pub(crate) fn inv_mod(a: u64, p: u64) -> u64 {
-    pow_mod(a, p - 2, p)
+    let (mut r0, mut r1) = (p as i64, (a % p) as i64);
+    let (mut t0, mut t1) = (0i64, 1i64);
+    while r1 != 0 {
+        let q = r0 / r1;
+        (r0, r1) = (r1, r0 - q * r1);
+        (t0, t1) = (t1, t0 - q * t1);
+    }
+    t0.rem_euclid(p as i64) as u64
+}
+
+/// A prime `p < 2^31` with its Barrett constant: `reduce(a)` is `a mod p` for `a < 2^62`
+/// (every product of two residues; in fact any `u64`) without a hardware division.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Modulus {
+    pub(crate) p: u64,
+    m: u64,
+}
+
+impl Modulus {
+    pub(crate) fn new(p: u64) -> Self {
+        Modulus {
+            p,
+            m: (u128::from(u64::MAX) / u128::from(p)) as u64,
+        }
+    }
+
+    /// `a mod p` for any `a` (the quotient estimate is at most one short, since
+    /// `m = floor((2^64 - 1) / p)`).
+    #[inline]
+    pub(crate) fn reduce(self, a: u64) -> u64 {
+        let q = ((u128::from(a) * u128::from(self.m)) >> 64) as u64;
+        let r = a - q * self.p;
+        if r >= self.p { r - self.p } else { r }
+    }
+
+    /// `a b mod p` for residues `a, b`.
+    #[inline]
+    pub(crate) fn mul(self, a: u64, b: u64) -> u64 {
+        self.reduce(a * b)
+    }
 }
 
 /// A big integer prepared for repeated reduction: sign and base-2^32 digits.
@@ -93,44 +132,77 @@ impl Digits {
     }
 
     /// `x mod p` in `0..p`.
-    pub(crate) fn residue(&self, p: u64) -> u64 {
+    pub(crate) fn residue(&self, md: Modulus) -> u64 {
         let mut r = 0u64;
         for &d in self.digits.iter().rev() {
-            r = ((r << 32) | u64::from(d)) % p;
+            r = md.reduce((r << 32) | u64::from(d));
         }
-        if self.negative && r != 0 { p - r } else { r }
+        if self.negative && r != 0 { md.p - r } else { r }
     }
 }
 
-/// The determinant mod `p` of the row-major `n x n` matrix `m` (destroyed), by Gaussian
-/// elimination with one modular inverse per pivot.
-pub(crate) fn det_mod(m: &mut [u64], n: usize, p: u64) -> u64 {
-    let mut det = 1u64;
+/// The determinant mod `p` of the row-major `n x n` matrix `m` (destroyed) as a fraction
+/// `(num, den)`, by division-free elimination: row `i` becomes `piv row_i - m_ik row_k`,
+/// which multiplies the determinant by `piv` (collected in `den`); each entry costs two
+/// word products and one reduction, and no inverse is taken (see [`batch_divide`]).
+pub(crate) fn det_mod_fraction(m: &mut [u64], n: usize, md: Modulus) -> (u64, u64) {
+    let p = md.p;
+    let (mut num, mut den) = (1u64, 1u64);
     for k in 0..n {
         let Some(r) = (k..n).find(|&r| m[r * n + k] != 0) else {
-            return 0;
+            return (0, 1);
         };
         if r != k {
             for j in k..n {
                 m.swap(k * n + j, r * n + j);
             }
-            det = (p - det) % p;
+            num = (p - num) % p;
         }
         let piv = m[k * n + k];
-        det = det * piv % p;
-        let inv = inv_mod(piv, p);
-        for i in k + 1..n {
-            let f = m[i * n + k] * inv % p;
+        num = md.mul(num, piv);
+        let (top, rest) = m.split_at_mut((k + 1) * n);
+        let row_k = &top[k * n + k + 1..(k + 1) * n];
+        for row_i in rest.chunks_exact_mut(n) {
+            let f = row_i[k];
             if f == 0 {
                 continue;
             }
-            for j in k + 1..n {
-                let sub = f * m[k * n + j] % p;
-                m[i * n + j] = (m[i * n + j] + p - sub) % p;
+            den = md.mul(den, piv);
+            let nf = p - f;
+            for (x, &y) in row_i[k + 1..].iter_mut().zip(row_k) {
+                // piv * x + (p - f) * y < 2^63
+                *x = md.reduce(piv * *x + nf * y);
             }
         }
     }
-    det
+    (num, den)
+}
+
+/// The determinant mod `p` of `m` (destroyed).
+#[cfg(test)]
+pub(crate) fn det_mod(m: &mut [u64], n: usize, md: Modulus) -> u64 {
+    let (num, den) = det_mod_fraction(m, n, md);
+    md.mul(num, inv_mod(den, md.p))
+}
+
+/// `num_i / den_i mod p` for all `i` with one modular inverse (Montgomery's trick); every
+/// `den_i` must be non-zero mod `p`.
+pub(crate) fn batch_divide(fracs: &[(u64, u64)], md: Modulus) -> Vec<u64> {
+    let mut prefix = Vec::with_capacity(fracs.len());
+    let mut acc = 1u64;
+    for &(_, d) in fracs {
+        prefix.push(acc);
+        acc = md.mul(acc, d);
+    }
+    let mut inv = inv_mod(acc, md.p);
+    let mut out = vec![0u64; fracs.len()];
+    for i in (0..fracs.len()).rev() {
+        // inv = (d_0 ... d_i)^-1
+        let inv_i = md.mul(inv, prefix[i]);
+        out[i] = md.mul(fracs[i].0, inv_i);
+        inv = md.mul(inv, fracs[i].1);
+    }
+    out
 }
 
 /// Degree of a polynomial mod `p` (coefficients low to high), `None` for zero.
@@ -165,36 +237,71 @@ pub(crate) fn poly_degree(a: &[u64]) -> Option<usize> {
     degree(a)
 }
 
-/// Garner's mixed-radix reconstruction of the integer `x` with `|x| < (prod p) / 2` from its
-/// residues.
-pub(crate) fn crt(residues: &[u64], primes: &[u64]) -> BigInt {
-    let k = residues.len();
-    // Mixed-radix digits v_i: x = v_0 + v_1 p_0 + v_2 p_0 p_1 + ...
-    let mut v = vec![0u64; k];
-    for i in 0..k {
-        let p = primes[i];
-        let mut t = residues[i] % p;
-        // t = (r_i - (v_0 + v_1 p_0 + ... )) / (p_0 ... p_{i-1}) mod p_i
-        let mut acc = 0u64;
-        let mut prod = 1u64;
-        for j in 0..i {
-            acc = (acc + v[j] * prod) % p;
-            prod = prod * (primes[j] % p) % p;
+/// Garner's mixed-radix reconstruction for a fixed list of primes: the constants are
+/// computed once and shared by every coefficient.
+pub(crate) struct Crt<'a> {
+    primes: &'a [u64],
+    moduli: Vec<Modulus>,
+    /// `(p_0 ... p_{i-1})^-1 mod p_i`.
+    inverses: Vec<u64>,
+    /// `p_0 ... p_{k-1}`.
+    product: BigInt,
+}
+
+impl<'a> Crt<'a> {
+    pub(crate) fn new(primes: &'a [u64]) -> Self {
+        let moduli: Vec<Modulus> = primes.iter().map(|&p| Modulus::new(p)).collect();
+        let inverses = (0..primes.len())
+            .map(|i| {
+                let md = moduli[i];
+                let prod = primes[..i]
+                    .iter()
+                    .fold(1u64, |acc, &q| md.mul(acc, md.reduce(q)));
+                inv_mod(prod, md.p)
+            })
+            .collect();
+        let product = primes
+            .iter()
+            .fold(BigInt::from(1u8), |acc, &p| acc * BigInt::from(p));
+        Crt {
+            primes,
+            moduli,
+            inverses,
+            product,
         }
-        t = (t + p - acc) % p;
-        v[i] = t * inv_mod(prod, p) % p;
     }
-    // Horner from the top digit.
-    let mut x = BigInt::zero();
-    for i in (0..k).rev() {
-        x = x * BigInt::from(primes[i]) + BigInt::from(v[i]);
+
+    /// The integer `x` with `|x| < (prod p) / 2` and the given residues.
+    pub(crate) fn reconstruct(&self, residues: &[u64]) -> BigInt {
+        let k = self.primes.len();
+        let mut v = vec![0u64; k];
+        for i in 0..k {
+            let md = self.moduli[i];
+            // acc = v_0 + v_1 p_0 + ... + v_{i-1} p_0 ... p_{i-2}  (mod p_i), Horner.
+            let mut acc = 0u64;
+            for j in (0..i).rev() {
+                acc = md.reduce(md.mul(acc, md.reduce(self.primes[j])) + v[j]);
+            }
+            let r = md.reduce(residues[i]);
+            let t = if r >= acc { r - acc } else { r + md.p - acc };
+            v[i] = md.mul(t, self.inverses[i]);
+        }
+        let mut x = BigInt::zero();
+        for i in (0..k).rev() {
+            x = x * BigInt::from(self.primes[i]) + BigInt::from(v[i]);
+        }
+        if &x + &x > self.product {
+            x - &self.product
+        } else {
+            x
+        }
     }
-    // Symmetric range.
-    let mut modulus = BigInt::from(1u8);
-    for &p in primes.iter().take(k) {
-        modulus *= BigInt::from(p);
-    }
-    if &x + &x > modulus { x - modulus } else { x }
+}
+
+/// Garner's reconstruction of one integer (see [`Crt`]).
+#[cfg(test)]
+pub(crate) fn crt(residues: &[u64], primes: &[u64]) -> BigInt {
+    Crt::new(primes).reconstruct(residues)
 }
 
 #[cfg(test)]
@@ -222,7 +329,7 @@ mod tests {
             BigInt::parse_bytes(b"98765432109876543210987654321", 10).unwrap(),
         ] {
             let d = Digits::new(&x);
-            let r: Vec<u64> = ps.iter().map(|&p| d.residue(p)).collect();
+            let r: Vec<u64> = ps.iter().map(|&p| d.residue(Modulus::new(p))).collect();
             assert_eq!(crt(&r, ps), x);
         }
     }
@@ -236,7 +343,17 @@ mod tests {
             .iter()
             .map(|&v| v.rem_euclid(p as i64) as u64)
             .collect();
-        assert_eq!(det_mod(&mut m, 3, p), 51);
+        assert_eq!(det_mod(&mut m, 3, Modulus::new(p)), 51);
+        let md = Modulus::new(p);
+        let fr = [(6, 3), (p - 10, 5), (7, 7)];
+        assert_eq!(batch_divide(&fr, md), vec![2, p - 2, 1]);
+        for a in [1u64, 2, 12345, p - 1] {
+            assert_eq!(a * inv_mod(a, p) % p, 1);
+        }
+        let md = Modulus::new(p);
+        for a in [0u64, 1, p - 1, p, 2 * p + 5, (1 << 62) - 1] {
+            assert_eq!(md.reduce(a), a % p);
+        }
         // (t - 2)(t + 1) = t^2 - t - 2, (t - 2)(t - 3) = t^2 - 5t + 6
         let a = [p - 2, p - 1, 1];
         let b = [6, p - 5, 1];
