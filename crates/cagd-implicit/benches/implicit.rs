@@ -36,10 +36,10 @@ fn curve(n: usize, seed: u64) -> BezierCurve {
 /// and weights (multiples of 1/4 in 0.5..2), like the spec vectors.
 fn small_curve(n: usize) -> BezierCurve {
     let pts: Vec<f64> = (0..2 * (n + 1))
-        .map(|i| f64::from(((i * 37 + 11) % 33) as u32) / 8.0 - 2.0)
+        .map(|i| ((i * 37 + 11) % 33) as f64 / 8.0 - 2.0)
         .collect();
     let w: Vec<f64> = (0..=n)
-        .map(|i| 0.5 + f64::from(((i * 5 + 3) % 7) as u32) / 4.0)
+        .map(|i| 0.5 + ((i * 5 + 3) % 7) as f64 / 4.0)
         .collect();
     BezierCurve::new_rational(pts, w, 2).expect("valid curve")
 }
@@ -50,8 +50,8 @@ fn median_us(mut f: impl FnMut()) -> f64 {
     let t = Instant::now();
     f();
     let once = t.elapsed().as_secs_f64();
-    if once < 1e-4 {
-        inner = (1e-4 / once.max(1e-9)) as usize + 1;
+    while once * (inner as f64) < 1e-4 {
+        inner *= 2;
     }
     let mut times: Vec<f64> = (0..reps)
         .map(|_| {

@@ -122,16 +122,16 @@ pub(crate) fn parametrization_power(h: &IntHom) -> usize {
 /// Power-basis coefficients mod `p` of the Bernstein polynomial with coefficients `c`.
 fn bernstein_to_power_mod(c: &[u64], p: u64) -> Vec<u64> {
     let n = c.len() - 1;
-    let b = |n: usize, k: usize| (binomial(n, k) % u128::from(p)) as u64;
+    let b = |n: usize, k: usize| u64::try_from(binomial(n, k) % u128::from(p)).unwrap_or(0);
     let mut out = vec![0u64; n + 1];
     for (i, &ci) in c.iter().enumerate() {
         let base = ci * b(n, i) % p;
-        for k in i..=n {
+        for (k, slot) in out.iter_mut().enumerate().skip(i) {
             let t = base * b(n - i, k - i) % p;
-            out[k] = if (k - i) % 2 == 0 {
-                (out[k] + t) % p
+            *slot = if (k - i) % 2 == 0 {
+                (*slot + t) % p
             } else {
-                (out[k] + p - t) % p
+                (*slot + p - t) % p
             };
         }
     }

@@ -268,9 +268,9 @@ fn modular_coefficients(
         // 1 / i! mod p
         let mut inv_fact = vec![1u64; n + 1];
         let mut f = 1u64;
-        for i in 1..=n {
+        for (i, slot) in inv_fact.iter_mut().enumerate().skip(1) {
             f = f * i as u64 % p;
-            inv_fact[i] = inv_mod(f, p);
+            *slot = inv_mod(f, p);
         }
         let s: Vec<Vec<u64>> = stir_d
             .iter()

@@ -169,7 +169,7 @@ fn polish(a: &ImplicitCurve, b: &ImplicitCurve, s0: f64, t0: f64) -> (f64, f64) 
         // [dp, -dq] [ds, dt]^T = -r
         let det = -dp[0] * dq[1] + dq[0] * dp[1];
         let size = dp[0].hypot(dp[1]) * dq[0].hypot(dq[1]);
-        if !(det.abs() > 1e-12 * size) {
+        if !det.is_finite() || det.abs() <= 1e-12 * size {
             break;
         }
         let ds = (-r[0] * -dq[1] + dq[0] * -r[1]) / det;
@@ -210,7 +210,7 @@ fn finish(
         let (_, d2) = point_and_tangent(&par.hom, tp);
         let cross = (d1[0] * d2[1] - d1[1] * d2[0]).abs();
         let size = d1[0].hypot(d1[1]) * d2[0].hypot(d2[1]);
-        let tangential = !(cross > TANGENT_SIN * size);
+        let tangential = cross.is_nan() || cross <= TANGENT_SIN * size;
         let (s, t) = if swap { (tp, si) } else { (si, tp) };
         let e = a.eval(s);
         let hit = Intersection {

@@ -47,7 +47,7 @@ impl ImplicitCurve {
         }
         let t0 = self.kernel_parameter(x, y)?;
         let (t, distance) = self.polish(x, y, t0);
-        if !(distance <= ON_CURVE_TOL * self.scale) {
+        if distance.is_nan() || distance > ON_CURVE_TOL * self.scale {
             return Err(Error::NotOnCurve { x, y, distance });
         }
         Ok(t)
@@ -97,7 +97,7 @@ impl ImplicitCurve {
         for _ in 0..8 {
             let (p, d) = point_and_tangent(&self.hom, t);
             let dd = d[0] * d[0] + d[1] * d[1];
-            if !(dd > 0.0) {
+            if dd.is_nan() || dd <= 0.0 {
                 break;
             }
             let step = (d[0] * (p[0] - x) + d[1] * (p[1] - y)) / dd;

@@ -95,7 +95,7 @@ impl Modulus {
     pub(crate) fn new(p: u64) -> Self {
         Modulus {
             p,
-            m: (u128::from(u64::MAX) / u128::from(p)) as u64,
+            m: u64::try_from(u128::from(u64::MAX) / u128::from(p)).unwrap_or(u64::MAX),
         }
     }
 

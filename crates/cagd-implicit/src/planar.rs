@@ -75,8 +75,9 @@ pub(crate) fn hom_eval(hom: &[[f64; 3]], t: f64) -> ([f64; 3], [f64; 3]) {
     }
     for level in 1..n {
         for i in 0..=n - level {
-            for k in 0..3 {
-                b[i][k] = s * b[i][k] + t * b[i + 1][k];
+            let next = b[i + 1];
+            for (x, y) in b[i].iter_mut().zip(next) {
+                *x = s * *x + t * y;
             }
         }
     }

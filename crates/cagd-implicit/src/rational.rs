@@ -58,12 +58,12 @@ impl UPoly {
                 continue;
             }
             let base = ci * q_binomial(n, i);
-            for k in i..=n {
+            for (k, slot) in out.iter_mut().enumerate().skip(i) {
                 let term = &base * q_binomial(n - i, k - i);
                 if (k - i) % 2 == 0 {
-                    out[k] += term;
+                    *slot += term;
                 } else {
-                    out[k] -= term;
+                    *slot -= term;
                 }
             }
         }

@@ -124,7 +124,7 @@ mod tests {
                 let star: Vec<[Q; 3]> = (0..=n)
                     .map(|k| {
                         let mut p = [Q::zero(), Q::zero(), Q::zero()];
-                        for l in 0..=k {
+                        for (l, hl) in hom.iter().enumerate().take(k + 1) {
                             let mut c = Q::from_integer(BigInt::from(binomial(k, l)));
                             for _ in 0..k - l {
                                 c *= &beta;
@@ -132,8 +132,8 @@ mod tests {
                             for _ in 0..l {
                                 c *= &alpha;
                             }
-                            for r in 0..3 {
-                                p[r] += &c * &hom[l][r];
+                            for (pr, hr) in p.iter_mut().zip(hl) {
+                                *pr += &c * hr;
                             }
                         }
                         p

@@ -54,13 +54,13 @@ fn power(c: &[Q]) -> Vec<Q> {
     let n = c.len() - 1;
     let mut out = vec![Q::zero(); n + 1];
     for (i, ci) in c.iter().enumerate() {
-        for k in i..=n {
+        for (k, slot) in out.iter_mut().enumerate().skip(i) {
             let m = BigInt::from(cagd_core::binomial(n, i) * cagd_core::binomial(n - i, k - i));
             let term = ci * Q::from_integer(m);
             if (k - i) % 2 == 0 {
-                out[k] += term;
+                *slot += term;
             } else {
-                out[k] -= term;
+                *slot -= term;
             }
         }
     }
