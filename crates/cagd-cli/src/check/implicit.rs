@@ -14,7 +14,7 @@ use cagd_implicit::{BezoutMatrix, implicitize, subdivision_matrix};
 use serde_json::{Map, Value};
 
 use super::fields::{matrix_json, numbers, points};
-use super::{Outcome, Runner, Vector, compare};
+use super::{Outcome, Rule, Runner, Vector, compare};
 
 /// The implicitization family.
 pub(crate) const TABLE: &[(&str, Runner)] = &[
@@ -131,7 +131,12 @@ fn run_implicitize(v: &Vector<'_>) -> Result<Outcome, String> {
             other => return Err(format!("expected.{other}: unknown key for this algorithm")),
         }
     }
-    match compare(&Value::Object(got), &Value::Object(rest), v.tol) {
+    match compare(
+        &Value::Object(got),
+        &Value::Object(rest),
+        v.tol,
+        Rule::Elementwise,
+    ) {
         Ok(d) => max_diff = max_diff.max(d),
         Err((d, why)) => {
             max_diff = max_diff.max(d);
