@@ -8,7 +8,19 @@ use std::path::Path;
 use cagd_core::BezierCurve;
 use cagd_implicit::{ImplicitCurve, implicitize, intersect};
 
-use crate::demo::time_us;
+/// Median time of `reps` runs of `f`, in microseconds (own copy: the demo table module
+/// calls this one, so it must not be imported from there).
+fn time_us(reps: usize, mut f: impl FnMut()) -> f64 {
+    let mut times: Vec<f64> = (0..reps)
+        .map(|_| {
+            let t = std::time::Instant::now();
+            f();
+            t.elapsed().as_secs_f64() * 1e6
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    times[times.len() / 2]
+}
 
 fn curve(points: &[f64], weights: &[f64]) -> Result<BezierCurve, String> {
     BezierCurve::new_rational(points.to_vec(), weights.to_vec(), 2).map_err(|e| e.to_string())
