@@ -5,7 +5,8 @@
 //! polynomial `f(x, y) = det F` exact and rounded once to `f64` ([`implicitize`],
 //! [`ImplicitPolynomial`]), base points and improper parametrizations, the subdivision
 //! matrix of theorem 15.9.1 ([`subdivision_matrix`]), and what it is used for — point
-//! classification, inversion and curve–curve intersection.
+//! classification and inversion ([`ImplicitCurve`]) and curve–curve intersection
+//! ([`intersect`]).
 //!
 //! ```
 //! use cagd_core::BezierCurve;
@@ -20,12 +21,26 @@
 //!
 //! ## Supported range and accuracy
 //!
-//! Curve degree `1..=`[`MAX_IMPLICIT_DEGREE`] (16). The coefficients are exact (`BigInt`
-//! fraction-free Bareiss determinants on a lattice plus exact Newton interpolation): the
-//! inputs are binary fractions, so nothing is rounded until the single rounding to `f64`.
-//! Cost `O(n^5)` big-integer operations: see the benchmark `benches/implicit.rs`.
-//! With the rounded coefficients, `|f(p)| / sum |c_ij x^i y^j|` on curve points is at the
-//! level of a few ulp times `n` (tested ≤ 1e-12 for degrees 2–10).
+//! Curve degree `1..=`[`MAX_IMPLICIT_DEGREE`] (16); dimension 2; weights `> 0`.
+//!
+//! - **Exact coefficients**: the inputs are binary fractions, so the homogeneous points
+//!   are scaled to integers and `det(x A + y B + C0)` is interpolated exactly from lattice
+//!   determinants taken modulo 31-bit primes (as many as a Hadamard bound on the
+//!   coefficients requires) and recombined by Chinese remaindering; nothing is rounded until
+//!   the single rounding of each coefficient to `f64`. Measured (release, `benches/implicit.rs`,
+//!   shared 2-core machine): random curves with full 53-bit mantissas 33 / 83 / 189 / 416 µs
+//!   at degree 2 / 3 / 4 / 5, 1.5 ms at 7, ~25 ms at 10; small binary fractions (like the
+//!   spec vectors) 7 / 13 / 25 / 50 µs, 0.16 ms at 7, 0.76 ms at 10.
+//! - **Residual**: with the rounded coefficients, `|f(p)| / sum |c_ij x^i y^j|` on curve
+//!   points is a few ulp times `n` (tested ≤ 1e-12 for degrees 2–10, coordinates in ±1).
+//! - **Classification** ([`ImplicitCurve::classify`]): `det F` by LU with partial pivoting
+//!   (backward stable) and `f / |∇f|`; ~0.15 µs at degree 5.
+//! - **Inversion** ([`ImplicitCurve::invert`]): kernel of `F(x, y)` plus Gauss–Newton;
+//!   tested to 1e-12 in `t` on random curves of degree 1–8.
+//! - **Intersection** ([`intersect`]): roots of a degree-`n m` Bernstein polynomial isolated
+//!   by subdivision with a rounding-error bound, then Newton on `A(s) = B(t)`; tested against
+//!   an independent subdivision intersector to 1e-10 in both parameters (degrees ≤ 5);
+//!   tangential intersections are located to about `1e-8` (they are ill-conditioned).
 #![forbid(unsafe_code)]
 
 mod base_point;

@@ -3,7 +3,7 @@
 //! `implicitize_rational_bezier_curve`: every key of `expected` is computed by the library —
 //! `monomials` (compared by the runner: scaled by the expected `max |c|`, order-independent,
 //! a missing or extra non-zero monomial fails), `matrix_F_at_origin` (the Bézout matrix at
-//! (0, 0)), `curve_samples_t_x_y` (the curve evaluated at the vector's `t`s). Base points
+//! (0, 0)), `curve_samples_t_x_y` (the curve evaluated at the vector's `t`s), `degree`. Base points
 //! are refused (the exact definition `f = det F` is identically 0).
 //! `implicit_subdivision_matrix_A`: `A(α)` of eq. 15.9.6.
 
@@ -108,6 +108,10 @@ fn run_implicitize(v: &Vector<'_>) -> Result<Outcome, String> {
                 let (d, why) = compare_monomials(&g, &e, v.tol);
                 max_diff = max_diff.max(d);
                 failures.extend(why);
+            }
+            "degree" => {
+                got.insert(key.clone(), serde_json::json!(imp.polynomial.degree()));
+                rest.insert(key.clone(), ev.clone());
             }
             "matrix_F_at_origin" => {
                 let n = bezout.size();
