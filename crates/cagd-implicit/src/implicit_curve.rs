@@ -5,7 +5,7 @@
 use cagd_core::{BezierCurve, Result};
 
 use crate::implicitize::{BasePointPolicy, ImplicitOptions, ImplicitReport, implicitize_with};
-use crate::planar::{coordinate_scale, homogeneous_f64};
+use crate::planar::{HomCurve, coordinate_scale, homogeneous_f64};
 use crate::{BezoutMatrix, ImplicitPolynomial};
 
 /// A planar curve with its implicit form: the `f64` Bézout matrices (for `det F` at a point
@@ -13,7 +13,7 @@ use crate::{BezoutMatrix, ImplicitPolynomial};
 /// homogeneous control points (after base points were divided out).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ImplicitCurve {
-    pub(crate) hom: Vec<[f64; 3]>,
+    pub(crate) curve: HomCurve,
     pub(crate) bezout: BezoutMatrix,
     pub(crate) polynomial: ImplicitPolynomial,
     pub(crate) report: ImplicitReport,
@@ -51,7 +51,7 @@ impl ImplicitCurve {
         };
         let scale = coordinate_scale(&hom);
         Ok(ImplicitCurve {
-            hom,
+            curve: HomCurve { hom },
             bezout,
             polynomial: imp.polynomial,
             report: imp.report,
@@ -76,6 +76,6 @@ impl ImplicitCurve {
 
     /// The curve point at `t` (homogeneous de Casteljau).
     pub fn point(&self, t: f64) -> [f64; 2] {
-        crate::planar::point_and_tangent(&self.hom, t).0
+        self.curve.point(t)
     }
 }

@@ -14,7 +14,7 @@ use cagd_core::{BezierCurve, Error, Result};
 use crate::ImplicitCurve;
 use crate::bernstein_roots::bernstein_roots;
 use crate::compose::compose;
-use crate::planar::{check_planar, point_and_tangent, weight};
+use crate::planar::{HomCurve, check_planar, weight};
 
 /// One intersection point of two curves.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -91,7 +91,7 @@ pub fn intersect(a: &BezierCurve, b: &BezierCurve) -> Result<Vec<Intersection>> 
     let swap = b.degree() < a.degree();
     let (imp_src, par_src) = if swap { (&nb, &na) } else { (&na, &nb) };
     let imp = ImplicitCurve::new(imp_src)?;
-    let par = ImplicitCurve::new(par_src)?;
+    let par = HomCurve::new(par_src);
     let (g, err) = compose(&imp.polynomial, &par.hom);
     let roots = match bernstein_roots(&g, &err) {
         Ok(r) => r,
@@ -102,10 +102,10 @@ pub fn intersect(a: &BezierCurve, b: &BezierCurve) -> Result<Vec<Intersection>> 
     for r in roots {
         let q = par.point(r.t);
         for s in parameters_on(&imp, q) {
-            found.push(polish(&imp, &par, s, r.t));
+            found.push(polish(&imp.curve, &par, s, r.t));
         }
     }
-    Ok(finish(found, &imp, &par, swap, a))
+    Ok(finish(found, &imp.curve, &par, swap, a))
 }
 
 /// The parameters on `imp` of the point `q` (kernel inversion, or a nearest-point search
@@ -114,12 +114,12 @@ fn parameters_on(imp: &ImplicitCurve, q: [f64; 2]) -> Vec<f64> {
     if let Ok(s) = imp.invert(q[0], q[1]) {
         return vec![s];
     }
-    nearest_parameters(imp, q, 1e-6)
+    nearest_parameters(&imp.curve, q, 1e-6)
 }
 
 /// Local minima of `|P(s) - q|` on `[0, 1]` within `tol` (relative to the unit box).
-fn nearest_parameters(imp: &ImplicitCurve, q: [f64; 2], tol: f64) -> Vec<f64> {
-    let n = imp.hom.len() - 1;
+fn nearest_parameters(imp: &HomCurve, q: [f64; 2], tol: f64) -> Vec<f64> {
+    let n = imp.degree();
     let samples = 32 * (n + 1);
     let d = |s: f64| {
         let p = imp.point(s);
@@ -155,7 +155,7 @@ fn nearest_parameters(imp: &ImplicitCurve, q: [f64; 2], tol: f64) -> Vec<f64> {
 
 /// Newton on `A(s) - B(t) = 0` from `(s, t)`; keeps the start when Newton does not improve
 /// it or wanders off (tangential intersections have a singular Jacobian).
-fn polish(a: &ImplicitCurve, b: &ImplicitCurve, s0: f64, t0: f64) -> (f64, f64) {
+fn polish(a: &HomCurve, b: &HomCurve, s0: f64, t0: f64) -> (f64, f64) {
     let resid = |s: f64, t: f64| {
         let (p, q) = (a.point(s), b.point(t));
         (p[0] - q[0]).hypot(p[1] - q[1])
@@ -163,8 +163,8 @@ fn polish(a: &ImplicitCurve, b: &ImplicitCurve, s0: f64, t0: f64) -> (f64, f64) 
     let (mut s, mut t) = (s0, t0);
     let mut best = (s0, t0, resid(s0, t0));
     for _ in 0..12 {
-        let (p, dp) = point_and_tangent(&a.hom, s);
-        let (q, dq) = point_and_tangent(&b.hom, t);
+        let (p, dp) = a.point_and_tangent(s);
+        let (q, dq) = b.point_and_tangent(t);
         let r = [p[0] - q[0], p[1] - q[1]];
         // [dp, -dq] [ds, dt]^T = -r
         let det = -dp[0] * dq[1] + dq[0] * dp[1];
@@ -194,8 +194,8 @@ fn polish(a: &ImplicitCurve, b: &ImplicitCurve, s0: f64, t0: f64) -> (f64, f64) 
 /// and sorts by `s`.
 fn finish(
     found: Vec<(f64, f64)>,
-    imp: &ImplicitCurve,
-    par: &ImplicitCurve,
+    imp: &HomCurve,
+    par: &HomCurve,
     swap: bool,
     a: &BezierCurve,
 ) -> Vec<Intersection> {
@@ -206,8 +206,8 @@ fn finish(
             continue;
         }
         let (si, tp) = (si.clamp(0.0, 1.0), tp.clamp(0.0, 1.0));
-        let (_, d1) = point_and_tangent(&imp.hom, si);
-        let (_, d2) = point_and_tangent(&par.hom, tp);
+        let (_, d1) = imp.point_and_tangent(si);
+        let (_, d2) = par.point_and_tangent(tp);
         let cross = (d1[0] * d2[1] - d1[1] * d2[0]).abs();
         let size = d1[0].hypot(d1[1]) * d2[0].hypot(d2[1]);
         let tangential = cross.is_nan() || cross <= TANGENT_SIN * size;
@@ -235,16 +235,17 @@ fn finish(
 /// otherwise only end points can be shared, and those are returned.
 fn overlap(
     imp: &ImplicitCurve,
-    par: &ImplicitCurve,
+    par: &HomCurve,
     swap: bool,
     a: &BezierCurve,
 ) -> Result<Vec<Intersection>> {
+    let curve = &imp.curve;
     const SAMPLES: usize = 64;
     let inside: Vec<Option<f64>> = (0..=SAMPLES)
         .map(|k| {
             let t = k as f64 / SAMPLES as f64;
             let q = par.point(t);
-            nearest_parameters(imp, q, 1e-9).into_iter().next()
+            nearest_parameters(curve, q, 1e-9).into_iter().next()
         })
         .collect();
     let on: Vec<f64> = inside.iter().flatten().copied().collect();
@@ -267,14 +268,14 @@ fn overlap(
     // End points of either curve lying on the other.
     let mut found = Vec::new();
     for t in [0.0, 1.0] {
-        for s in nearest_parameters(imp, par.point(t), 1e-9) {
+        for s in nearest_parameters(curve, par.point(t), 1e-9) {
             found.push((s, t));
         }
     }
     for s in [0.0, 1.0] {
-        for t in nearest_parameters(par, imp.point(s), 1e-9) {
+        for t in nearest_parameters(par, curve.point(s), 1e-9) {
             found.push((s, t));
         }
     }
-    Ok(finish(found, imp, par, swap, a))
+    Ok(finish(found, curve, par, swap, a))
 }

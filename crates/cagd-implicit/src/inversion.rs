@@ -10,7 +10,6 @@ use cagd_core::{Error, Result, check_finite_param};
 
 use crate::ImplicitCurve;
 use crate::lu::null_vector;
-use crate::planar::point_and_tangent;
 
 /// Relative size `pivot[n-2] / pivot[0]` under which `F(p)` is taken to have rank `<= n-2`.
 const RANK_TOL: f64 = 1e-10;
@@ -46,7 +45,7 @@ impl ImplicitCurve {
             });
         }
         let t0 = self.kernel_parameter(x, y)?;
-        let (t, distance) = self.polish(x, y, t0);
+        let (t, distance) = self.curve.polish(x, y, t0);
         if distance.is_nan() || distance > ON_CURVE_TOL * self.scale {
             return Err(Error::NotOnCurve { x, y, distance });
         }
@@ -55,13 +54,13 @@ impl ImplicitCurve {
 
     /// The parameter estimate from the kernel of `F(x, y)` (degree 1: the linear equation).
     fn kernel_parameter(&self, x: f64, y: f64) -> Result<f64> {
-        let n = self.hom.len() - 1;
+        let n = self.curve.hom.len() - 1;
         if n == 1 {
             // x W(t) - X(t) = 0 (or y), t = e0 / (e0 - e1), the better-conditioned coordinate.
             let e = |k: usize, c: f64| {
                 [
-                    c * self.hom[0][2] - self.hom[0][k],
-                    c * self.hom[1][2] - self.hom[1][k],
+                    c * self.curve.hom[0][2] - self.curve.hom[0][k],
+                    c * self.curve.hom[1][2] - self.curve.hom[1][k],
                 ]
             };
             let (ex, ey) = (e(0, x), e(1, y));
@@ -85,31 +84,5 @@ impl ImplicitCurve {
             den += s * s;
         }
         Ok(if den > 0.0 { num / den } else { 0.5 })
-    }
-
-    /// Gauss–Newton on `|P(t) - p|^2` from `t`; returns the best `t` and its distance.
-    pub(crate) fn polish(&self, x: f64, y: f64, mut t: f64) -> (f64, f64) {
-        let dist = |t: f64| {
-            let p = point_and_tangent(&self.hom, t).0;
-            (p[0] - x).hypot(p[1] - y)
-        };
-        let mut best = (t, dist(t));
-        for _ in 0..8 {
-            let (p, d) = point_and_tangent(&self.hom, t);
-            let dd = d[0] * d[0] + d[1] * d[1];
-            if dd.is_nan() || dd <= 0.0 {
-                break;
-            }
-            let step = (d[0] * (p[0] - x) + d[1] * (p[1] - y)) / dd;
-            t -= step;
-            let e = dist(t);
-            if e < best.1 {
-                best = (t, e);
-            }
-            if step.abs() <= 1e-16 * t.abs().max(1.0) {
-                break;
-            }
-        }
-        best
     }
 }

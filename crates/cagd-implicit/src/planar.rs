@@ -105,6 +105,63 @@ pub(crate) fn point_and_tangent(hom: &[[f64; 3]], t: f64) -> ([f64; 2], [f64; 2]
     (p, dp)
 }
 
+/// A curve as `f64` homogeneous control points `(X_i, Y_i, W_i)`: evaluation and the
+/// Gauss–Newton foot point (used by inversion and intersection).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct HomCurve {
+    pub(crate) hom: Vec<[f64; 3]>,
+}
+
+impl HomCurve {
+    /// The homogeneous points of a planar curve.
+    pub(crate) fn new(curve: &BezierCurve) -> Self {
+        HomCurve {
+            hom: homogeneous_f64(curve),
+        }
+    }
+
+    /// The degree.
+    pub(crate) fn degree(&self) -> usize {
+        self.hom.len() - 1
+    }
+
+    /// The point at `t`.
+    pub(crate) fn point(&self, t: f64) -> [f64; 2] {
+        point_and_tangent(&self.hom, t).0
+    }
+
+    /// Point and first derivative at `t`.
+    pub(crate) fn point_and_tangent(&self, t: f64) -> ([f64; 2], [f64; 2]) {
+        point_and_tangent(&self.hom, t)
+    }
+
+    /// Gauss–Newton on `|P(t) - p|^2` from `t`; returns the best `t` and its distance.
+    pub(crate) fn polish(&self, x: f64, y: f64, mut t: f64) -> (f64, f64) {
+        let dist = |t: f64| {
+            let p = self.point(t);
+            (p[0] - x).hypot(p[1] - y)
+        };
+        let mut best = (t, dist(t));
+        for _ in 0..8 {
+            let (p, d) = self.point_and_tangent(t);
+            let dd = d[0] * d[0] + d[1] * d[1];
+            if dd.is_nan() || dd <= 0.0 {
+                break;
+            }
+            let step = (d[0] * (p[0] - x) + d[1] * (p[1] - y)) / dd;
+            t -= step;
+            let e = dist(t);
+            if e < best.1 {
+                best = (t, e);
+            }
+            if step.abs() <= 1e-16 * t.abs().max(1.0) {
+                break;
+            }
+        }
+        best
+    }
+}
+
 /// The largest absolute control-point coordinate, at least 1 (the scale of relative
 /// geometric tolerances).
 pub(crate) fn coordinate_scale(hom: &[[f64; 3]]) -> f64 {
