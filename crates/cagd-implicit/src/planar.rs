@@ -8,7 +8,7 @@ use cagd_core::{BezierCurve, Error, Result};
 use crate::rational::{Q, q};
 
 /// The largest curve degree the implicitization accepts. The exact coefficients cost
-/// `O(n^5)` word operations per prime, `O(n)` primes (about 25 ms at degree 10 for random
+/// `O(n^5)` word operations per prime, `O(n)` primes (about 7 ms at degree 10 for random
 /// doubles, see the crate docs); the curve–curve intersection solves a polynomial of degree
 /// `n * m` in the Bernstein basis.
 pub const MAX_IMPLICIT_DEGREE: usize = 16;
