@@ -1982,6 +1982,8 @@ CagdStatus cagd_curve_segment(const struct CagdCurve *curve,
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: degree above 16.
  * - `CAGD_ERR_BASE_POINT`: the curve has base points and `divide_base_points == 0`, or it
  *   is a single point.
+ * - `CAGD_ERR_CONDITION_NOT_MET`: a coefficient of `f` is beyond the double range
+ *   (coordinates or weights too large).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2164,6 +2166,7 @@ CagdStatus cagd_implicit_invert(const struct CagdImplicit *implicit,
  * - `CAGD_ERR_NOT_PLANAR`, `CAGD_ERR_NOT_ENOUGH_POINTS` (degree 0),
  *   `CAGD_ERR_DEGREE_OUT_OF_RANGE` (above 16): bad curves.
  * - `CAGD_ERR_BASE_POINT`: a curve is a single point.
+ * - `CAGD_ERR_CONDITION_NOT_MET`: an implicit coefficient is beyond the double range.
  * - `CAGD_ERR_COINCIDENT`: the curves overlap along an arc (the message gives the
  *   overlap on `a`).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.

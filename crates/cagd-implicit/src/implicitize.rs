@@ -77,7 +77,7 @@ impl Implicitization {
 /// # Errors
 /// [`Error::NotPlanar`], [`Error::NotEnoughPoints`] (`n = 0`), [`Error::DegreeOutOfRange`]
 /// (`n > MAX_IMPLICIT_DEGREE`),
-/// [`Error::BasePoint`].
+/// [`Error::BasePoint`], [`Error::ConditionNotMet`] when a coefficient overflows `f64`.
 ///
 /// ```
 /// use cagd_core::BezierCurve;
@@ -119,9 +119,16 @@ pub fn implicitize_with(curve: &BezierCurve, options: &ImplicitOptions) -> Resul
         }
     }
     let degree = hom.degree();
+    let polynomial = ImplicitPolynomial::from_exact(degree, coefs);
+    if polynomial.coefficients().iter().any(|c| !c.is_finite()) {
+        return Err(Error::ConditionNotMet {
+            eq: "15.8.5",
+            why: "a coefficient of f = det F is beyond the f64 range (coordinates or weights too large)",
+        });
+    }
     let power = parametrization_power(&hom);
     Ok(Implicitization {
-        polynomial: ImplicitPolynomial::from_exact(degree, coefs),
+        polynomial,
         report: ImplicitReport {
             input_degree,
             degree,

@@ -53,7 +53,8 @@ fn normalized(c: &BezierCurve, centre: [f64; 2], scale: f64) -> Result<BezierCur
 /// # Errors
 /// [`Error::NotPlanar`], [`Error::NotEnoughPoints`], [`Error::DegreeOutOfRange`];
 /// [`Error::BasePoint`] when a curve is a
-/// single point; [`Error::Coincident`] when the curves overlap along an arc.
+/// single point; [`Error::Coincident`] when the curves overlap along an arc;
+/// [`Error::ConditionNotMet`] when an implicit coefficient overflows `f64`.
 ///
 /// ```
 /// use cagd_core::BezierCurve;

@@ -285,6 +285,16 @@ fn bad_input_is_a_named_error() {
         ImplicitCurve::new(&point),
         Err(cagd_core::Error::BasePoint { .. })
     ));
+    let huge = BezierCurve::new_rational(
+        vec![1e-300, 1e300, 1.0, 2.0, 3.0, -1e-200],
+        vec![1e-10, 1.0, 3e10],
+        2,
+    )
+    .unwrap();
+    assert!(matches!(
+        implicitize(&huge),
+        Err(cagd_core::Error::ConditionNotMet { eq: "15.8.5", .. })
+    ));
     let big = BezierCurve::new(vec![0.5; 2 * 18], 2).unwrap();
     assert!(matches!(
         implicitize(&big),

@@ -31,6 +31,7 @@ pub const CAGD_INTERSECTION_STRIDE: usize = 5;
 /// - `CAGD_ERR_NOT_PLANAR`, `CAGD_ERR_NOT_ENOUGH_POINTS` (degree 0),
 ///   `CAGD_ERR_DEGREE_OUT_OF_RANGE` (above 16): bad curves.
 /// - `CAGD_ERR_BASE_POINT`: a curve is a single point.
+/// - `CAGD_ERR_CONDITION_NOT_MET`: an implicit coefficient is beyond the double range.
 /// - `CAGD_ERR_COINCIDENT`: the curves overlap along an arc (the message gives the
 ///   overlap on `a`).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.

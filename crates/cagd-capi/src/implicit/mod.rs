@@ -46,6 +46,8 @@ pub struct CagdImplicit(pub(crate) ImplicitCurve);
 /// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: degree above 16.
 /// - `CAGD_ERR_BASE_POINT`: the curve has base points and `divide_base_points == 0`, or it
 ///   is a single point.
+/// - `CAGD_ERR_CONDITION_NOT_MET`: a coefficient of `f` is beyond the double range
+///   (coordinates or weights too large).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
