@@ -213,3 +213,34 @@ fn bad_input_is_a_named_error() {
         Err(cagd_core::Error::NotEnoughPoints { .. })
     ));
 }
+
+#[test]
+fn improper_and_degree_elevated_curves_intersect() {
+    // A collinear quadratic (traced twice by its implicit polynomial (x - y)^2) against the
+    // line x + y = 1: one transversal intersection at (1/2, 1/2).
+    let a = BezierCurve::new(vec![0.0, 0.0, 2.0, 2.0, 1.0, 1.0], 2).unwrap();
+    let b = BezierCurve::new(vec![0.0, 1.0, 1.0, 0.0], 2).unwrap();
+    let hits = intersect(&a, &b).unwrap();
+    assert_eq!(hits.len(), 1, "{hits:?}");
+    let s = (4.0 - 10f64.sqrt()) / 6.0; // 4s - 3s^2 = 1/2
+    assert!(
+        (hits[0].s - s).abs() < 1e-12 && (hits[0].t - 0.5).abs() < 1e-12,
+        "{hits:?}"
+    );
+    assert!(!hits[0].tangential);
+    // The same with the line given degree-elevated (a base point at t = ∞) on either side.
+    let b3 = b.elevate(2).unwrap();
+    for (x, y, swap) in [(&a, &b3, false), (&b3, &a, true)] {
+        let hits = intersect(x, y).unwrap();
+        assert_eq!(hits.len(), 1, "{hits:?}");
+        let (hs, ht) = if swap {
+            (hits[0].t, hits[0].s)
+        } else {
+            (hits[0].s, hits[0].t)
+        };
+        assert!(
+            (hs - s).abs() < 1e-12 && (ht - 0.5).abs() < 1e-12,
+            "{hits:?}"
+        );
+    }
+}
