@@ -59,6 +59,9 @@
 //!   out (each piece a tensor or triangular patch, polynomial or rational, with the part of
 //!   the input's domain it covers): `cagd_tripatch_to_rect`, `_to_quad`, `_to_three_rects`,
 //!   `cagd_tensorpatch_to_triangle`, `_to_triangles`, `_split_line`, `_split_curve`, `_trim`.
+//! - Implicitization (cagd-implicit, SPEC-convert §15.8–15.9): `CagdImplicit` from
+//!   `cagd_curve_implicitize` (coefficients, Bézout matrices, classification, inversion),
+//!   `cagd_curve_intersect`, `cagd_implicit_subdivision_matrix`.
 //!
 //! ## Supported range and accuracy
 //!
@@ -76,6 +79,8 @@ mod convert_nurbs;
 mod convert_patch;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod curve;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod implicit;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod invariants;
 #[allow(
@@ -138,6 +143,11 @@ pub use curve::{
     cagd_curve_new_rational, cagd_curve_points, cagd_curve_segment, cagd_curve_subdivide,
     cagd_curve_weights, cagd_curvelist_bound, cagd_curvelist_count, cagd_curvelist_free,
     cagd_curvelist_get, cagd_curvelist_interval,
+};
+pub use implicit::{
+    CAGD_INTERSECTION_STRIDE, CagdImplicit, cagd_curve_implicitize, cagd_curve_intersect,
+    cagd_implicit_bezout, cagd_implicit_classify, cagd_implicit_coefficients, cagd_implicit_free,
+    cagd_implicit_invert, cagd_implicit_report, cagd_implicit_subdivision_matrix,
 };
 pub use invariants::{
     cagd_curve_distance, cagd_curve_forward_difference, cagd_tensorpatch_degeneracy,

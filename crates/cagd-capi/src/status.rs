@@ -53,6 +53,8 @@ pub enum CagdStatus {
     /// A (source, target) degree pair the operation does not accept, e.g. a reduction
     /// whose target is not below the source degree.
     ERR_BAD_DEGREE_PAIR = 27,
+    /// An implicitization / intersection input is not a planar (dim = 2) curve.
+    ERR_NOT_PLANAR = 35,
     /// A condition of a seed formula is not met (the message gives the equation number).
     ERR_CONDITION_NOT_MET = 40,
     /// An iterative or adaptive algorithm could not reach the tolerance.
@@ -71,6 +73,16 @@ pub enum CagdStatus {
     /// inverse NURBS weight would be `<= 0`; §15.2: Bézier weights that are not separable
     /// `G_i H_j`). The message names the condition, the failing weight and its value.
     ERR_CONVERSION_CONDITION = 43,
+    /// The curve has base points (X, Y, W share a factor; `det F` is identically 0) and
+    /// they were not to be divided out, or nothing is left after dividing them out.
+    ERR_BASE_POINT = 53,
+    /// The point is a singular point (double point, cusp) of the curve: its parameter is
+    /// not unique.
+    ERR_SINGULAR_POINT = 54,
+    /// The point given for inversion is not on the curve.
+    ERR_NOT_ON_CURVE = 55,
+    /// Two curves overlap along an arc: their intersection is not a finite set.
+    ERR_COINCIDENT = 56,
     /// A bug inside cagd was caught at the boundary (a Rust panic); please report it with
     /// the message.
     ERR_PANIC = 99,
@@ -94,6 +106,7 @@ impl CagdStatus {
             CagdStatus::ERR_DEGREE_OUT_OF_RANGE => c"CAGD_ERR_DEGREE_OUT_OF_RANGE",
             CagdStatus::ERR_TOO_MANY_CONSTRAINTS => c"CAGD_ERR_TOO_MANY_CONSTRAINTS",
             CagdStatus::ERR_BAD_DEGREE_PAIR => c"CAGD_ERR_BAD_DEGREE_PAIR",
+            CagdStatus::ERR_NOT_PLANAR => c"CAGD_ERR_NOT_PLANAR",
             CagdStatus::ERR_CONDITION_NOT_MET => c"CAGD_ERR_CONDITION_NOT_MET",
             CagdStatus::ERR_NO_CONVERGENCE => c"CAGD_ERR_NO_CONVERGENCE",
             CagdStatus::ERR_SINGULAR => c"CAGD_ERR_SINGULAR",
@@ -101,6 +114,10 @@ impl CagdStatus {
             CagdStatus::ERR_DEGENERATE_SPLIT => c"CAGD_ERR_DEGENERATE_SPLIT",
             CagdStatus::ERR_UNSUPPORTED_TRIM => c"CAGD_ERR_UNSUPPORTED_TRIM",
             CagdStatus::ERR_CONVERSION_CONDITION => c"CAGD_ERR_CONVERSION_CONDITION",
+            CagdStatus::ERR_BASE_POINT => c"CAGD_ERR_BASE_POINT",
+            CagdStatus::ERR_SINGULAR_POINT => c"CAGD_ERR_SINGULAR_POINT",
+            CagdStatus::ERR_NOT_ON_CURVE => c"CAGD_ERR_NOT_ON_CURVE",
+            CagdStatus::ERR_COINCIDENT => c"CAGD_ERR_COINCIDENT",
             CagdStatus::ERR_PANIC => c"CAGD_ERR_PANIC",
         }
     }
@@ -112,7 +129,7 @@ impl CagdStatus {
 }
 
 /// Every status, in numeric order (used by tests and by `cagd_status_name`).
-pub(crate) const ALL_STATUSES: [CagdStatus; 22] = [
+pub(crate) const ALL_STATUSES: [CagdStatus; 27] = [
     CagdStatus::OK,
     CagdStatus::ERR_NULL_POINTER,
     CagdStatus::ERR_BUFFER_TOO_SMALL,
@@ -127,6 +144,7 @@ pub(crate) const ALL_STATUSES: [CagdStatus; 22] = [
     CagdStatus::ERR_DEGREE_OUT_OF_RANGE,
     CagdStatus::ERR_TOO_MANY_CONSTRAINTS,
     CagdStatus::ERR_BAD_DEGREE_PAIR,
+    CagdStatus::ERR_NOT_PLANAR,
     CagdStatus::ERR_CONDITION_NOT_MET,
     CagdStatus::ERR_NO_CONVERGENCE,
     CagdStatus::ERR_SINGULAR,
@@ -134,6 +152,10 @@ pub(crate) const ALL_STATUSES: [CagdStatus; 22] = [
     CagdStatus::ERR_DEGENERATE_SPLIT,
     CagdStatus::ERR_UNSUPPORTED_TRIM,
     CagdStatus::ERR_CONVERSION_CONDITION,
+    CagdStatus::ERR_BASE_POINT,
+    CagdStatus::ERR_SINGULAR_POINT,
+    CagdStatus::ERR_NOT_ON_CURVE,
+    CagdStatus::ERR_COINCIDENT,
     CagdStatus::ERR_PANIC,
 ];
 
@@ -165,6 +187,11 @@ pub fn status_of_core(e: &Error) -> CagdStatus {
         Error::DegenerateSplit { .. } => CagdStatus::ERR_DEGENERATE_SPLIT,
         Error::UnsupportedTrim { .. } => CagdStatus::ERR_UNSUPPORTED_TRIM,
         Error::ConversionCondition { .. } => CagdStatus::ERR_CONVERSION_CONDITION,
+        Error::NotPlanar { .. } => CagdStatus::ERR_NOT_PLANAR,
+        Error::BasePoint { .. } => CagdStatus::ERR_BASE_POINT,
+        Error::SingularPoint { .. } => CagdStatus::ERR_SINGULAR_POINT,
+        Error::NotOnCurve { .. } => CagdStatus::ERR_NOT_ON_CURVE,
+        Error::Coincident { .. } => CagdStatus::ERR_COINCIDENT,
         _ => CagdStatus::ERR_INVALID_ARGUMENT,
     }
 }
@@ -194,7 +221,7 @@ mod tests {
 
     #[test]
     fn discriminants_are_pinned() {
-        let expected: [(CagdStatus, i32); 22] = [
+        let expected: [(CagdStatus, i32); 27] = [
             (CagdStatus::OK, 0),
             (CagdStatus::ERR_NULL_POINTER, 1),
             (CagdStatus::ERR_BUFFER_TOO_SMALL, 2),
@@ -209,6 +236,7 @@ mod tests {
             (CagdStatus::ERR_DEGREE_OUT_OF_RANGE, 25),
             (CagdStatus::ERR_TOO_MANY_CONSTRAINTS, 26),
             (CagdStatus::ERR_BAD_DEGREE_PAIR, 27),
+            (CagdStatus::ERR_NOT_PLANAR, 35),
             (CagdStatus::ERR_CONDITION_NOT_MET, 40),
             (CagdStatus::ERR_NO_CONVERGENCE, 41),
             (CagdStatus::ERR_SINGULAR, 42),
@@ -216,6 +244,10 @@ mod tests {
             (CagdStatus::ERR_DEGENERATE_SPLIT, 51),
             (CagdStatus::ERR_UNSUPPORTED_TRIM, 52),
             (CagdStatus::ERR_CONVERSION_CONDITION, 43),
+            (CagdStatus::ERR_BASE_POINT, 53),
+            (CagdStatus::ERR_SINGULAR_POINT, 54),
+            (CagdStatus::ERR_NOT_ON_CURVE, 55),
+            (CagdStatus::ERR_COINCIDENT, 56),
             (CagdStatus::ERR_PANIC, 99),
         ];
         for (i, (s, code)) in expected.into_iter().enumerate() {
@@ -364,6 +396,8 @@ mod tests {
             (
                 Error::UnsupportedTrim { index: 0, why: "x" },
                 S::ERR_UNSUPPORTED_TRIM,
+            ),
+            (
                 Error::ConversionCondition {
                     condition: "15.1.8",
                     what: "inverse weight",
@@ -372,6 +406,21 @@ mod tests {
                 },
                 S::ERR_CONVERSION_CONDITION,
             ),
+            (Error::NotPlanar { dim: 3 }, S::ERR_NOT_PLANAR),
+            (Error::BasePoint { count: 1 }, S::ERR_BASE_POINT),
+            (
+                Error::SingularPoint { x: 0.0, y: 0.0 },
+                S::ERR_SINGULAR_POINT,
+            ),
+            (
+                Error::NotOnCurve {
+                    x: 1.0,
+                    y: 2.0,
+                    distance: 0.5,
+                },
+                S::ERR_NOT_ON_CURVE,
+            ),
+            (Error::Coincident { s0: 0.0, s1: 1.0 }, S::ERR_COINCIDENT),
         ];
         for (e, s) in cases {
             assert_eq!(status_of_core(&e), s, "{e:?}");

@@ -3,6 +3,8 @@
 
 use std::path::PathBuf;
 
+use crate::implicit_cmd::{ImplicitizeArgs, IntersectArgs};
+
 /// Usage text printed by `cagd --help` and after a usage error.
 pub(crate) const USAGE: &str = "\
 usage:
@@ -14,6 +16,8 @@ usage:
   cagd convert (--to rectangle|rectangles3|triangles|triangle [--inner U,V] [--edges G,K,H]
                | --split-line F1,F0 | --split-curve A0,A1,... | --trim FILE)
                [--tol T] [-i FILE] [-o FILE] [--svg FILE]
+  cagd implicitize [--divide-base-points] [-i FILE] [-o FILE] [--svg FILE]
+  cagd intersect A.json B.json [-o FILE] [--svg FILE]
   cagd demo [--out DIR]
   cagd check FILE...
   cagd --help
@@ -66,6 +70,15 @@ pieces of the kept region, 15.7.3; FILE {\"direction\":\"u_of_v\"|\"v_of_u\",
 \"keep\":\"below\"|\"above\",\"segments\":[{\"interval\":[c0,c1],\"bezier\":[...]},...]}).
 Each piece carries its \"domain\" in the input's (u, v) and a \"report\" with the largest
 difference measured.
+
+implicitize reads one planar {\"type\":\"bezier\",\"points\":[[x,y],...]} (optional
+\"weights\") and prints {\"degree\": n, \"monomials\": [[i, j, c], ...], \"monomials_exact\":
+[[i, j, \"p/q\"], ...], \"report\": {...}}: f(x, y) = sum c x^i y^j = det F (SPEC-convert
+15.8, exact coefficients, c rounded once). A curve with base points (X, Y, W sharing a
+factor) is refused unless --divide-base-points. --svg draws the curve over the sign of f and
+its zero set. intersect reads two such files and prints {\"intersections\": [{\"s\", \"t\",
+\"point\", \"tangential\"}, ...], \"report\": {...}} (s on A, t on B, sorted by s); curves
+overlapping along an arc give \"coincident\": true in the report.
 
 check runs every vector of spec-vector files (the format of ../shared/spec/vectors-*.json:
 a list of {id, algorithm, params, input, expected, tol}) through the library by its
@@ -184,6 +197,8 @@ pub(crate) enum Command {
     Reduce(ReduceArgs),
     Merge(MergeArgs),
     Convert(ConvertArgs),
+    Implicitize(ImplicitizeArgs),
+    Intersect(IntersectArgs),
     Demo { out: PathBuf },
     Check { files: Vec<PathBuf> },
     Help,
@@ -230,6 +245,51 @@ fn parse_merge<'a>(mut it: impl Iterator<Item = &'a String>) -> Result<MergeArgs
     Ok(m)
 }
 
+/// The options of `cagd implicitize`.
+fn parse_implicitize<'a>(
+    mut it: impl Iterator<Item = &'a String>,
+) -> Result<ImplicitizeArgs, String> {
+    let mut a = ImplicitizeArgs {
+        input: None,
+        output: None,
+        svg: None,
+        divide_base_points: false,
+    };
+    while let Some(arg) = it.next() {
+        match arg.as_str() {
+            "-i" | "--input" => a.input = Some(PathBuf::from(value(&mut it, arg)?)),
+            "-o" | "--output" => a.output = Some(PathBuf::from(value(&mut it, arg)?)),
+            "--svg" => a.svg = Some(PathBuf::from(value(&mut it, arg)?)),
+            "--divide-base-points" => a.divide_base_points = true,
+            other => return Err(format!("implicitize: unknown argument {other:?}")),
+        }
+    }
+    Ok(a)
+}
+
+/// The options of `cagd intersect` (two files, then options).
+fn parse_intersect<'a>(mut it: impl Iterator<Item = &'a String>) -> Result<IntersectArgs, String> {
+    let mut files = Vec::new();
+    let (mut output, mut svg) = (None, None);
+    while let Some(arg) = it.next() {
+        match arg.as_str() {
+            "-o" | "--output" => output = Some(PathBuf::from(value(&mut it, arg)?)),
+            "--svg" => svg = Some(PathBuf::from(value(&mut it, arg)?)),
+            other if other.starts_with('-') => {
+                return Err(format!("intersect: unknown argument {other:?}"));
+            }
+            file => files.push(PathBuf::from(file)),
+        }
+    }
+    match <[PathBuf; 2]>::try_from(files) {
+        Ok([a, b]) => Ok(IntersectArgs { a, b, output, svg }),
+        Err(f) => Err(format!(
+            "intersect: name exactly two curve files, got {}",
+            f.len()
+        )),
+    }
+}
+
 /// Parses the arguments after the program name.
 pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
     let mut it = args.iter();
@@ -250,6 +310,8 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
         }
         "merge" => parse_merge(it).map(Command::Merge),
         "convert" => parse_convert(it).map(Command::Convert),
+        "implicitize" => parse_implicitize(it).map(Command::Implicitize),
+        "intersect" => parse_intersect(it).map(Command::Intersect),
         "check" => {
             let files: Vec<PathBuf> = it.map(PathBuf::from).collect();
             if files.is_empty() {
@@ -398,6 +460,36 @@ mod tests {
         assert_eq!(
             parse(&args("convert --frob")).unwrap_err(),
             "convert: unknown argument \"--frob\""
+        );
+    }
+
+    #[test]
+    fn implicit_arguments() {
+        let Command::Implicitize(a) = parse(&args(
+            "implicitize --divide-base-points -i c.json --svg c.svg",
+        ))
+        .unwrap() else {
+            panic!("not implicitize");
+        };
+        assert!(a.divide_base_points);
+        assert_eq!(a.input, Some(PathBuf::from("c.json")));
+        assert_eq!(a.svg, Some(PathBuf::from("c.svg")));
+        let Command::Intersect(i) = parse(&args("intersect a.json b.json -o out.json")).unwrap()
+        else {
+            panic!("not intersect");
+        };
+        assert_eq!(
+            (i.a, i.b),
+            (PathBuf::from("a.json"), PathBuf::from("b.json"))
+        );
+        assert_eq!(i.output, Some(PathBuf::from("out.json")));
+        assert_eq!(
+            parse(&args("intersect a.json")).unwrap_err(),
+            "intersect: name exactly two curve files, got 1"
+        );
+        assert_eq!(
+            parse(&args("implicitize --to 3")).unwrap_err(),
+            "implicitize: unknown argument \"--to\""
         );
     }
 

@@ -3,6 +3,9 @@
 //! Bézier segments into one B-spline (seed 001 §4.1); and `cagd demo`, the seeds' worked
 //! examples on built-in data.
 //!
+//! `cagd implicitize` and `cagd intersect` implicitize planar rational Bézier curves and
+//! intersect two of them (cagd-implicit).
+//!
 //! `cagd check FILE…` runs spec-vector files through the library (see [`check`]).
 //!
 //! Exit codes: 0 success; 2 bad input, bad usage or a reduction that cannot be done as asked
@@ -17,11 +20,15 @@ mod convert_patch_trim;
 mod demo;
 mod demo_convert;
 mod demo_convert_patch;
+mod demo_implicit;
 mod demo_patches;
 mod demo_splines;
+mod implicit_cmd;
+mod implicit_svg;
 mod input;
 mod input_beziers;
 mod input_surface;
+mod intersect_cmd;
 mod json_path;
 mod merge_cmd;
 mod methods;
@@ -185,6 +192,8 @@ fn main() -> ExitCode {
         Ok(args::Command::Reduce(r)) => reduce(&r),
         Ok(args::Command::Merge(m)) => merge(&m),
         Ok(args::Command::Convert(c)) => convert(&c),
+        Ok(args::Command::Implicitize(a)) => intersect_cmd::implicitize(&a),
+        Ok(args::Command::Intersect(a)) => intersect_cmd::intersect(&a),
         Ok(args::Command::Check { files }) => match check::run_files(&files) {
             Ok(true) => ExitCode::SUCCESS,
             Ok(false) => ExitCode::from(1),

@@ -191,6 +191,50 @@ pub enum Error {
         /// What is not supported.
         why: &'static str,
     },
+    /// An algorithm for planar curves (implicitization, SPEC-convert §15.8) got points of
+    /// another dimension.
+    #[error("the curve must be planar (dimension 2), got dimension {dim}")]
+    NotPlanar {
+        /// The dimension that was given.
+        dim: usize,
+    },
+    /// The homogeneous coordinates X(t), Y(t), W(t) of a rational curve share a common factor
+    /// of degree `count` (base points, SPEC-convert §15.8 end): `det F` vanishes identically.
+    #[error(
+        "the curve has {count} base point(s) (a common factor of X, Y, W): det F is identically 0"
+    )]
+    BasePoint {
+        /// The number of base points (degree of the common factor, points at t = ∞ included).
+        count: usize,
+    },
+    /// A point is a singular point (double point, cusp) of the curve, where the parameter
+    /// is not unique or not defined by the kernel of the Bézout matrix.
+    #[error("({x}, {y}) is a singular point of the curve: its parameter is not unique")]
+    SingularPoint {
+        /// Abscissa of the point.
+        x: f64,
+        /// Ordinate of the point.
+        y: f64,
+    },
+    /// A point given for inversion is not on the curve.
+    #[error("({x}, {y}) is not on the curve (distance {distance})")]
+    NotOnCurve {
+        /// Abscissa of the point.
+        x: f64,
+        /// Ordinate of the point.
+        y: f64,
+        /// Its distance to the nearest curve point found.
+        distance: f64,
+    },
+    /// Two curves overlap along an arc (they lie on the same algebraic curve): their
+    /// intersection is not a finite set of points.
+    #[error("the curves overlap along an arc (s in [{s0}, {s1}] on the first curve)")]
+    Coincident {
+        /// Start of the overlap on the first curve (parameter).
+        s0: f64,
+        /// End of the overlap on the first curve (parameter).
+        s1: f64,
+    },
 }
 
 /// `Result` with [`Error`].

@@ -132,6 +132,11 @@ c_tests![
     tensorpatch_ops,
     tripatch_ops,
     patch_ops_bad_input,
+    // c/implicit.c
+    implicit_conic_spec,
+    implicit_subdivision_matrix,
+    curve_intersect,
+    implicit_bad_input,
     // cpp/header_compiles.cpp
     cpp_header,
 ];

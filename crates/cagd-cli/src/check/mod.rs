@@ -13,6 +13,7 @@ mod compare;
 mod convert_nurbs;
 mod convert_patch;
 mod fields;
+mod implicit;
 mod reduce;
 
 use std::path::Path;
@@ -52,6 +53,7 @@ const TABLES: &[(&[(&str, Runner)], Rule)] = &[
     (reduce::TABLE, Rule::PerArray),
     (convert_nurbs::TABLE, Rule::Elementwise),
     (convert_patch::TABLE, Rule::Elementwise),
+    (implicit::TABLE, Rule::Elementwise),
 ];
 
 /// The runner of `algorithm` and its comparison rule, if any table knows it.
