@@ -89,6 +89,8 @@
  * Keep `u >= f(v)` (resp. `v >= g(u)`).
  */
 #define CAGD_TRIM_KEEP_ABOVE 1
+
+/**
  * Doubles per intersection in the output of `cagd_curve_intersect`.
  */
 #define CAGD_INTERSECTION_STRIDE 5
@@ -217,28 +219,30 @@ enum CagdStatus
    * A trimming layout the trimmed-patch tiling does not support (SPEC-convert §15.7.3).
    */
   CAGD_ERR_UNSUPPORTED_TRIM = 52,
+  /**
    * A condition of a form conversion is not met (SPEC-convert §15.1.8, §15.3.13–16: an
    * inverse NURBS weight would be `<= 0`; §15.2: Bézier weights that are not separable
    * `G_i H_j`). The message names the condition, the failing weight and its value.
    */
   CAGD_ERR_CONVERSION_CONDITION = 43,
+  /**
    * The curve has base points (X, Y, W share a factor; `det F` is identically 0) and
    * they were not to be divided out, or nothing is left after dividing them out.
    */
-  CAGD_ERR_BASE_POINT = 50,
+  CAGD_ERR_BASE_POINT = 53,
   /**
    * The point is a singular point (double point, cusp) of the curve: its parameter is
    * not unique.
    */
-  CAGD_ERR_SINGULAR_POINT = 51,
+  CAGD_ERR_SINGULAR_POINT = 54,
   /**
    * The point given for inversion is not on the curve.
    */
-  CAGD_ERR_NOT_ON_CURVE = 52,
+  CAGD_ERR_NOT_ON_CURVE = 55,
   /**
    * Two curves overlap along an arc: their intersection is not a finite set.
    */
-  CAGD_ERR_COINCIDENT = 53,
+  CAGD_ERR_COINCIDENT = 56,
   /**
    * A bug inside cagd was caught at the boundary (a Rust panic); please report it with
    * the message.
@@ -576,17 +580,19 @@ typedef struct CagdCurve CagdCurve;
 typedef struct CagdCurveList CagdCurveList;
 
 /**
- * Opaque handle to the pieces of a patch conversion, in the order the conversion defines
- * (see each `cagd_tripatch_to_*` / `cagd_tensorpatch_*` function). Immutable; release
- * with `cagd_patchpiecelist_free`.
- */
-typedef struct CagdPatchPieceList CagdPatchPieceList;
  * Opaque handle to the implicit form of a planar curve of degree `n` (after base points
  * were divided out, if asked): the Bézout matrix `F = x A + y B + C0` (`n x n`) and the
  * polynomial `f(x, y) = det F = sum_{i+j<=n} c_ij x^i y^j` with exact coefficients rounded
  * once to double. Immutable; release with `cagd_implicit_free`.
  */
 typedef struct CagdImplicit CagdImplicit;
+
+/**
+ * Opaque handle to the pieces of a patch conversion, in the order the conversion defines
+ * (see each `cagd_tripatch_to_*` / `cagd_tensorpatch_*` function). Immutable; release
+ * with `cagd_patchpiecelist_free`.
+ */
+typedef struct CagdPatchPieceList CagdPatchPieceList;
 
 /**
  * Opaque handle to the report of a reduction: the method, the degrees, the certified
@@ -1592,6 +1598,238 @@ CagdStatus cagd_bsplinesurface_reduce_to_tolerance(const struct CagdBSplineSurfa
                                                    struct CagdReport **report_out);
 
 /**
+ * One quadratic or cubic NURBS span → its rational Bézier segment, by the closed form of
+ * SPEC-convert §15.1 (degree 2, eq. 15.1.3–15.1.7) or §15.3 (degree 3, eq. 15.3.3–15.3.10),
+ * in homogeneous form (double and triple knots need no special case). The segment is
+ * parametrised by `T = (t - t_n) / (t_{n+1} - t_n)`.
+ *
+ * Parameters:
+ * - `degree` (in): 2 or 3.
+ * - `knots` (in): the `2 * degree` local knots of the span `[t_n, t_{n+1}]`:
+ *   `t_{n-1}, t_n, t_{n+1}, t_{n+2}` (degree 2) or `t_{n-2} .. t_{n+3}` (degree 3),
+ *   non-decreasing, `t_n < t_{n+1}`. Borrowed.
+ * - `points` (in): the `degree + 1` control points `r_{n-degree} .. r_n`, row-major,
+ *   `(degree + 1) * dim` doubles. Borrowed.
+ * - `weights` (in): their `degree + 1` weights, finite and `> 0`, or NULL for weights 1.
+ * - `dim` (in): coordinates per point, `>= 1`.
+ * - `curve_out` (out): on `CAGD_OK`, a new rational curve handle of degree `degree`, owned
+ *   by the caller (release with `cagd_curve_free`). Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`.
+ * - `CAGD_ERR_NULL_POINTER`: `knots`, `points` or `curve_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`; a zero-length span (`t_n == t_{n+1}`); a
+ *   misaligned pointer.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `degree` is not 2 or 3.
+ * - `CAGD_ERR_BAD_KNOTS`: the knots decrease (the message gives the index).
+ * - `CAGD_ERR_NON_FINITE`: a coordinate or a knot is NaN or infinite.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `knots` must be NULL or `2 * degree` readable doubles; `points` NULL or
+ * `(degree + 1) * dim`; `weights` NULL or `degree + 1`; `curve_out` NULL or writable.
+ */
+CagdStatus cagd_nurbs_span_to_bezier(size_t degree,
+                                     const double *knots,
+                                     const double *points,
+                                     const double *weights,
+                                     size_t dim,
+                                     struct CagdCurve **curve_out);
+
+/**
+ * A rational quadratic or cubic Bézier segment plus the local knots of a span → the NURBS
+ * control points and weights of that span (SPEC-convert §15.1 inverse, eq. 15.1.8–15.1.11;
+ * §15.3 inverse, eq. 15.3.11–15.3.21, in the division-safe homogeneous form). The
+ * conditions 15.1.8 / 15.3.13–16 are checked as "every inverse weight `> 0`" (equivalent
+ * for 15.1.8; for the cubic the weight test decides, see the cagd-convert docs).
+ *
+ * The span is returned as a B-spline handle of `degree + 1` points whose knot vector is
+ * the local knots with the first and last repeated once more (`2 * degree + 2` knots): its
+ * domain is exactly `[t_n, t_{n+1}]` and it evaluates to the segment there.
+ *
+ * Parameters:
+ * - `curve` (in): a curve of degree 2 or 3 (a polynomial one is read with weights 1).
+ * - `knots` (in): `2 * degree` local knots, as for `cagd_nurbs_span_to_bezier`.
+ * - `span_out` (out): on `CAGD_OK`, a new NURBS handle (release with `cagd_bspline_free`).
+ * - `extrapolation_out` (out, may be NULL): on `CAGD_OK`, the extrapolation factor: the
+ *   largest absolute coefficient of the affine maps `r_i = sum_j lambda_ij R_j` (§15.1:
+ *   `1 + max(k1, k2)`); errors of the Bézier points grow by up to this factor.
+ *
+ * Returns:
+ * - `CAGD_OK`.
+ * - `CAGD_ERR_NULL_POINTER`: `curve`, `knots` or `span_out` is NULL.
+ * - `CAGD_ERR_CONVERSION_CONDITION`: an inverse weight is `<= 0` (condition 15.1.8 or the
+ *   case 15.3.13 / 14 / 15 / 16 that applies; the message gives the weight's index
+ *   `w_{n-degree+index}` and its value).
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: the curve's degree is not 2 or 3.
+ * - `CAGD_ERR_BAD_KNOTS`, `CAGD_ERR_NON_FINITE`, `CAGD_ERR_INVALID_ARGUMENT`: as for
+ *   `cagd_nurbs_span_to_bezier`.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live curve handle; `knots` NULL or `2 * degree` readable
+ * doubles; `span_out` NULL or writable; `extrapolation_out` NULL or writable.
+ */
+CagdStatus cagd_bezier_to_nurbs_span(const struct CagdCurve *curve,
+                                     const double *knots,
+                                     struct CagdBSpline **span_out,
+                                     double *extrapolation_out);
+
+/**
+ * A biquadratic NURBS patch → its rational biquadratic Bézier patch (SPEC-convert §15.2):
+ * the homogeneous net is mapped with the 15.1 maps along `v` and along `u` (for separable
+ * weights `w_ij = g_i h_j` this is the closed form 15.2.3–15.2.10, with Bézier weights
+ * `G_i H_j`).
+ *
+ * Parameters:
+ * - `u_knots`, `v_knots` (in): the 4 local knots of each direction (`u_{m-1} .. u_{m+2}`,
+ *   the span is the middle interval, of positive length).
+ * - `points` (in): the 3x3 net, i-major (`i` along `u`), `9 * dim` doubles.
+ * - `weights` (in): 9 weights (i-major), finite and `> 0`, or NULL for weights 1.
+ * - `dim` (in): coordinates per point, `>= 1`.
+ * - `points_out` (out): `9 * dim` doubles, the Bézier points (i-major).
+ * - `weights_out` (out): 9 doubles, the Bézier weights (i-major).
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: a knot, point or output pointer is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a zero-length span, outputs that overlap, a
+ *   misaligned pointer.
+ * - `CAGD_ERR_BAD_KNOTS`, `CAGD_ERR_NON_FINITE`, `CAGD_ERR_NON_POSITIVE_WEIGHT`.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * Every pointer must be NULL or point to the documented number of doubles (readable for
+ * inputs, writable for outputs).
+ */
+CagdStatus cagd_nurbs22_span_to_bezier(const double *u_knots,
+                                       const double *v_knots,
+                                       const double *points,
+                                       const double *weights,
+                                       size_t dim,
+                                       double *points_out,
+                                       double *weights_out);
+
+/**
+ * A rational biquadratic Bézier patch → the biquadratic NURBS span (SPEC-convert §15.2
+ * inverse, eq. 15.2.11–15.2.17 with the erratum of 15.2.15): the 3x3 Bézier weights must
+ * be separable (rank 1, `W_ij = G_i H_j`), then the inverse of 15.1 applies per direction.
+ *
+ * Parameters:
+ * - `u_knots`, `v_knots`, `dim` (in): as for `cagd_nurbs22_span_to_bezier`.
+ * - `points` (in): the 3x3 Bézier points, i-major, `9 * dim` doubles.
+ * - `weights` (in): the 9 Bézier weights (i-major), or NULL for weights 1.
+ * - `points_out` (out): `9 * dim` doubles, the NURBS points.
+ * - `weights_out` (out): 9 doubles, the NURBS weights `g_i h_j`.
+ * - `extrapolation_out` (out, may be NULL): the extrapolation factor.
+ *
+ * Returns:
+ * - `CAGD_OK`: the outputs are written.
+ * - `CAGD_ERR_CONVERSION_CONDITION`: the weights are not rank 1 (condition "15.2 separable
+ *   weights"), or an inverse weight is `<= 0` (15.2.11 along `u`, 15.2.12 along `v`).
+ * - `CAGD_ERR_NULL_POINTER`: a knot, point or output pointer is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a zero-length span, outputs that overlap, a
+ *   misaligned pointer.
+ * - `CAGD_ERR_BAD_KNOTS`, `CAGD_ERR_NON_FINITE`, `CAGD_ERR_NON_POSITIVE_WEIGHT`: as for
+ *   `cagd_nurbs22_span_to_bezier`.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * As `cagd_nurbs22_span_to_bezier`; `extrapolation_out` NULL or writable.
+ */
+CagdStatus cagd_bezier22_to_nurbs22_span(const double *u_knots,
+                                         const double *v_knots,
+                                         const double *points,
+                                         const double *weights,
+                                         size_t dim,
+                                         double *points_out,
+                                         double *weights_out,
+                                         double *extrapolation_out);
+
+/**
+ * Every non-empty span of a B-spline / NURBS curve as a (rational) Bézier piece, by the
+ * general route of cagd-convert (Böhm knot insertion in homogeneous space, in place; any
+ * degree, clamped or unclamped knots). Same pieces as `cagd_bspline_to_beziers` (which
+ * blossoms each span), faster.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `list_out` (out): on `CAGD_OK`, the pieces with their knot intervals (release with
+ *   `cagd_curvelist_free`). Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `list_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a misaligned pointer.
+ * - `CAGD_ERR_NON_FINITE`: a piece overflows.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `list_out` NULL or writable.
+ */
+CagdStatus cagd_bspline_to_bezier_pieces(const struct CagdBSpline *spline,
+                                         struct CagdCurveList **list_out);
+
+/**
+ * Merges the pieces of a curve list (consecutive intervals, one degree and dimension)
+ * into one B-spline / NURBS curve with the highest continuity the pieces have at each
+ * joint (cagd-convert `pieces_to_nurbs`: each joint's knot copies removed while the
+ * certified residual stays within `tol`, control points by blossoms, certified by
+ * re-extraction). The reverse of `cagd_bspline_to_bezier_pieces`: a clamped spline comes
+ * back with its knot vector.
+ *
+ * Parameters:
+ * - `list` (in): the pieces, e.g. from `cagd_bspline_to_bezier_pieces`; piece `i + 1`
+ *   must start where piece `i` ends.
+ * - `tol` (in): the joint tolerance in working coordinates (homogeneous `(w x, w)` for
+ *   rational pieces), finite and `> 0`, or exactly 0 for the default rounding level
+ *   (`1e-12` times the largest working coordinate).
+ * - `spline_out` (out): on `CAGD_OK`, the spline (release with `cagd_bspline_free`).
+ *
+ * Returns:
+ * - `CAGD_OK`.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `spline_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `tol` negative, NaN or infinite; intervals that are not
+ *   consecutive; a misaligned pointer.
+ * - `CAGD_ERR_DIMENSION_MISMATCH`: pieces of differing degree or dimension.
+ * - `CAGD_ERR_NON_FINITE`, `CAGD_ERR_NON_POSITIVE_WEIGHT`: the result overflows.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; `spline_out` NULL or writable.
+ */
+CagdStatus cagd_curvelist_to_bspline(const struct CagdCurveList *list,
+                                     double tol,
+                                     struct CagdBSpline **spline_out);
+
+/**
+ * The standard form of a rational Bézier curve: the Möbius reparametrisation with end
+ * weights 1, the same shape (`original(t(s)) = standard(s)`, `t = rho s / ((1 - s) +
+ * rho s)`). A polynomial curve is copied (`rho = 1`).
+ *
+ * Parameters:
+ * - `curve` (in): the curve (degree `>= 1` when rational).
+ * - `curve_out` (out): on `CAGD_OK`, the curve in standard form (release with
+ *   `cagd_curve_free`).
+ * - `rho_out` (out, may be NULL): on `CAGD_OK`, `rho = (w_0 / w_n)^(1/n)`.
+ *
+ * Returns:
+ * - `CAGD_OK`.
+ * - `CAGD_ERR_NULL_POINTER`: `curve` or `curve_out` is NULL.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: a rational curve of degree 0.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a scaled weight under- or overflows.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a misaligned pointer.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live curve handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_curve_standard_form(const struct CagdCurve *curve,
+                                    struct CagdCurve **curve_out,
+                                    double *rho_out);
+
+/**
  * Releases a piece list. NULL is accepted and ignored; a non-NULL handle must be released
  * exactly once and not used afterwards.
  *
@@ -1994,236 +2232,6 @@ CagdStatus cagd_tensorpatch_to_triangle(const struct CagdTensorPatch *patch,
                                         const double *weights,
                                         double tol,
                                         struct CagdPatchPieceList **list_out);
- * One quadratic or cubic NURBS span → its rational Bézier segment, by the closed form of
- * SPEC-convert §15.1 (degree 2, eq. 15.1.3–15.1.7) or §15.3 (degree 3, eq. 15.3.3–15.3.10),
- * in homogeneous form (double and triple knots need no special case). The segment is
- * parametrised by `T = (t - t_n) / (t_{n+1} - t_n)`.
- *
- * Parameters:
- * - `degree` (in): 2 or 3.
- * - `knots` (in): the `2 * degree` local knots of the span `[t_n, t_{n+1}]`:
- *   `t_{n-1}, t_n, t_{n+1}, t_{n+2}` (degree 2) or `t_{n-2} .. t_{n+3}` (degree 3),
- *   non-decreasing, `t_n < t_{n+1}`. Borrowed.
- * - `points` (in): the `degree + 1` control points `r_{n-degree} .. r_n`, row-major,
- *   `(degree + 1) * dim` doubles. Borrowed.
- * - `weights` (in): their `degree + 1` weights, finite and `> 0`, or NULL for weights 1.
- * - `dim` (in): coordinates per point, `>= 1`.
- * - `curve_out` (out): on `CAGD_OK`, a new rational curve handle of degree `degree`, owned
- *   by the caller (release with `cagd_curve_free`). Not written on failure.
- *
- * Returns:
- * - `CAGD_OK`.
- * - `CAGD_ERR_NULL_POINTER`: `knots`, `points` or `curve_out` is NULL.
- * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`; a zero-length span (`t_n == t_{n+1}`); a
- *   misaligned pointer.
- * - `CAGD_ERR_BAD_DEGREE_PAIR`: `degree` is not 2 or 3.
- * - `CAGD_ERR_BAD_KNOTS`: the knots decrease (the message gives the index).
- * - `CAGD_ERR_NON_FINITE`: a coordinate or a knot is NaN or infinite.
- * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
- * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
- *
- * # Safety
- * `knots` must be NULL or `2 * degree` readable doubles; `points` NULL or
- * `(degree + 1) * dim`; `weights` NULL or `degree + 1`; `curve_out` NULL or writable.
- */
-CagdStatus cagd_nurbs_span_to_bezier(size_t degree,
-                                     const double *knots,
-                                     const double *points,
-                                     const double *weights,
-                                     size_t dim,
-                                     struct CagdCurve **curve_out);
-
-/**
- * A rational quadratic or cubic Bézier segment plus the local knots of a span → the NURBS
- * control points and weights of that span (SPEC-convert §15.1 inverse, eq. 15.1.8–15.1.11;
- * §15.3 inverse, eq. 15.3.11–15.3.21, in the division-safe homogeneous form). The
- * conditions 15.1.8 / 15.3.13–16 are checked as "every inverse weight `> 0`" (equivalent
- * for 15.1.8; for the cubic the weight test decides, see the cagd-convert docs).
- *
- * The span is returned as a B-spline handle of `degree + 1` points whose knot vector is
- * the local knots with the first and last repeated once more (`2 * degree + 2` knots): its
- * domain is exactly `[t_n, t_{n+1}]` and it evaluates to the segment there.
- *
- * Parameters:
- * - `curve` (in): a curve of degree 2 or 3 (a polynomial one is read with weights 1).
- * - `knots` (in): `2 * degree` local knots, as for `cagd_nurbs_span_to_bezier`.
- * - `span_out` (out): on `CAGD_OK`, a new NURBS handle (release with `cagd_bspline_free`).
- * - `extrapolation_out` (out, may be NULL): on `CAGD_OK`, the extrapolation factor: the
- *   largest absolute coefficient of the affine maps `r_i = sum_j lambda_ij R_j` (§15.1:
- *   `1 + max(k1, k2)`); errors of the Bézier points grow by up to this factor.
- *
- * Returns:
- * - `CAGD_OK`.
- * - `CAGD_ERR_NULL_POINTER`: `curve`, `knots` or `span_out` is NULL.
- * - `CAGD_ERR_CONVERSION_CONDITION`: an inverse weight is `<= 0` (condition 15.1.8 or the
- *   case 15.3.13 / 14 / 15 / 16 that applies; the message gives the weight's index
- *   `w_{n-degree+index}` and its value).
- * - `CAGD_ERR_BAD_DEGREE_PAIR`: the curve's degree is not 2 or 3.
- * - `CAGD_ERR_BAD_KNOTS`, `CAGD_ERR_NON_FINITE`, `CAGD_ERR_INVALID_ARGUMENT`: as for
- *   `cagd_nurbs_span_to_bezier`.
- * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
- *
- * # Safety
- * `curve` must be NULL or a live curve handle; `knots` NULL or `2 * degree` readable
- * doubles; `span_out` NULL or writable; `extrapolation_out` NULL or writable.
- */
-CagdStatus cagd_bezier_to_nurbs_span(const struct CagdCurve *curve,
-                                     const double *knots,
-                                     struct CagdBSpline **span_out,
-                                     double *extrapolation_out);
-
-/**
- * A biquadratic NURBS patch → its rational biquadratic Bézier patch (SPEC-convert §15.2):
- * the homogeneous net is mapped with the 15.1 maps along `v` and along `u` (for separable
- * weights `w_ij = g_i h_j` this is the closed form 15.2.3–15.2.10, with Bézier weights
- * `G_i H_j`).
- *
- * Parameters:
- * - `u_knots`, `v_knots` (in): the 4 local knots of each direction (`u_{m-1} .. u_{m+2}`,
- *   the span is the middle interval, of positive length).
- * - `points` (in): the 3x3 net, i-major (`i` along `u`), `9 * dim` doubles.
- * - `weights` (in): 9 weights (i-major), finite and `> 0`, or NULL for weights 1.
- * - `dim` (in): coordinates per point, `>= 1`.
- * - `points_out` (out): `9 * dim` doubles, the Bézier points (i-major).
- * - `weights_out` (out): 9 doubles, the Bézier weights (i-major).
- *
- * Returns:
- * - `CAGD_OK`: both outputs are written.
- * - `CAGD_ERR_NULL_POINTER`: a knot, point or output pointer is NULL.
- * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a zero-length span, outputs that overlap, a
- *   misaligned pointer.
- * - `CAGD_ERR_BAD_KNOTS`, `CAGD_ERR_NON_FINITE`, `CAGD_ERR_NON_POSITIVE_WEIGHT`.
- * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
- *
- * # Safety
- * Every pointer must be NULL or point to the documented number of doubles (readable for
- * inputs, writable for outputs).
- */
-CagdStatus cagd_nurbs22_span_to_bezier(const double *u_knots,
-                                       const double *v_knots,
-                                       const double *points,
-                                       const double *weights,
-                                       size_t dim,
-                                       double *points_out,
-                                       double *weights_out);
-
-/**
- * A rational biquadratic Bézier patch → the biquadratic NURBS span (SPEC-convert §15.2
- * inverse, eq. 15.2.11–15.2.17 with the erratum of 15.2.15): the 3x3 Bézier weights must
- * be separable (rank 1, `W_ij = G_i H_j`), then the inverse of 15.1 applies per direction.
- *
- * Parameters:
- * - `u_knots`, `v_knots`, `dim` (in): as for `cagd_nurbs22_span_to_bezier`.
- * - `points` (in): the 3x3 Bézier points, i-major, `9 * dim` doubles.
- * - `weights` (in): the 9 Bézier weights (i-major), or NULL for weights 1.
- * - `points_out` (out): `9 * dim` doubles, the NURBS points.
- * - `weights_out` (out): 9 doubles, the NURBS weights `g_i h_j`.
- * - `extrapolation_out` (out, may be NULL): the extrapolation factor.
- *
- * Returns:
- * - `CAGD_OK`: the outputs are written.
- * - `CAGD_ERR_CONVERSION_CONDITION`: the weights are not rank 1 (condition "15.2 separable
- *   weights"), or an inverse weight is `<= 0` (15.2.11 along `u`, 15.2.12 along `v`).
- * - `CAGD_ERR_NULL_POINTER`: a knot, point or output pointer is NULL.
- * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a zero-length span, outputs that overlap, a
- *   misaligned pointer.
- * - `CAGD_ERR_BAD_KNOTS`, `CAGD_ERR_NON_FINITE`, `CAGD_ERR_NON_POSITIVE_WEIGHT`: as for
- *   `cagd_nurbs22_span_to_bezier`.
- * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
- *
- * # Safety
- * As `cagd_nurbs22_span_to_bezier`; `extrapolation_out` NULL or writable.
- */
-CagdStatus cagd_bezier22_to_nurbs22_span(const double *u_knots,
-                                         const double *v_knots,
-                                         const double *points,
-                                         const double *weights,
-                                         size_t dim,
-                                         double *points_out,
-                                         double *weights_out,
-                                         double *extrapolation_out);
-
-/**
- * Every non-empty span of a B-spline / NURBS curve as a (rational) Bézier piece, by the
- * general route of cagd-convert (Böhm knot insertion in homogeneous space, in place; any
- * degree, clamped or unclamped knots). Same pieces as `cagd_bspline_to_beziers` (which
- * blossoms each span), faster.
- *
- * Parameters:
- * - `spline` (in): the spline.
- * - `list_out` (out): on `CAGD_OK`, the pieces with their knot intervals (release with
- *   `cagd_curvelist_free`). Not written on failure.
- *
- * Returns:
- * - `CAGD_OK`.
- * - `CAGD_ERR_NULL_POINTER`: `spline` or `list_out` is NULL.
- * - `CAGD_ERR_INVALID_ARGUMENT`: a misaligned pointer.
- * - `CAGD_ERR_NON_FINITE`: a piece overflows.
- * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
- *
- * # Safety
- * `spline` must be NULL or a live spline handle; `list_out` NULL or writable.
- */
-CagdStatus cagd_bspline_to_bezier_pieces(const struct CagdBSpline *spline,
-                                         struct CagdCurveList **list_out);
-
-/**
- * Merges the pieces of a curve list (consecutive intervals, one degree and dimension)
- * into one B-spline / NURBS curve with the highest continuity the pieces have at each
- * joint (cagd-convert `pieces_to_nurbs`: each joint's knot copies removed while the
- * certified residual stays within `tol`, control points by blossoms, certified by
- * re-extraction). The reverse of `cagd_bspline_to_bezier_pieces`: a clamped spline comes
- * back with its knot vector.
- *
- * Parameters:
- * - `list` (in): the pieces, e.g. from `cagd_bspline_to_bezier_pieces`; piece `i + 1`
- *   must start where piece `i` ends.
- * - `tol` (in): the joint tolerance in working coordinates (homogeneous `(w x, w)` for
- *   rational pieces), finite and `> 0`, or exactly 0 for the default rounding level
- *   (`1e-12` times the largest working coordinate).
- * - `spline_out` (out): on `CAGD_OK`, the spline (release with `cagd_bspline_free`).
- *
- * Returns:
- * - `CAGD_OK`.
- * - `CAGD_ERR_NULL_POINTER`: `list` or `spline_out` is NULL.
- * - `CAGD_ERR_INVALID_ARGUMENT`: `tol` negative, NaN or infinite; intervals that are not
- *   consecutive; a misaligned pointer.
- * - `CAGD_ERR_DIMENSION_MISMATCH`: pieces of differing degree or dimension.
- * - `CAGD_ERR_NON_FINITE`, `CAGD_ERR_NON_POSITIVE_WEIGHT`: the result overflows.
- * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
- *
- * # Safety
- * `list` must be NULL or a live list handle; `spline_out` NULL or writable.
- */
-CagdStatus cagd_curvelist_to_bspline(const struct CagdCurveList *list,
-                                     double tol,
-                                     struct CagdBSpline **spline_out);
-
-/**
- * The standard form of a rational Bézier curve: the Möbius reparametrisation with end
- * weights 1, the same shape (`original(t(s)) = standard(s)`, `t = rho s / ((1 - s) +
- * rho s)`). A polynomial curve is copied (`rho = 1`).
- *
- * Parameters:
- * - `curve` (in): the curve (degree `>= 1` when rational).
- * - `curve_out` (out): on `CAGD_OK`, the curve in standard form (release with
- *   `cagd_curve_free`).
- * - `rho_out` (out, may be NULL): on `CAGD_OK`, `rho = (w_0 / w_n)^(1/n)`.
- *
- * Returns:
- * - `CAGD_OK`.
- * - `CAGD_ERR_NULL_POINTER`: `curve` or `curve_out` is NULL.
- * - `CAGD_ERR_BAD_DEGREE_PAIR`: a rational curve of degree 0.
- * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a scaled weight under- or overflows.
- * - `CAGD_ERR_INVALID_ARGUMENT`: a misaligned pointer.
- * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
- *
- * # Safety
- * `curve` must be NULL or a live curve handle; the outputs NULL or writable.
- */
-CagdStatus cagd_curve_standard_form(const struct CagdCurve *curve,
-                                    struct CagdCurve **curve_out,
-                                    double *rho_out);
 
 /**
  * Creates a polynomial Bézier curve of degree `n_points - 1`.

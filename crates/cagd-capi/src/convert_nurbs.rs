@@ -20,8 +20,7 @@ use crate::boundary::{
     slice_in,
 };
 use crate::bspline::CagdBSpline;
-use crate::curve::CagdCurve;
-use crate::curve_list::{CagdCurveList, Piece};
+use crate::curve::{CagdCurve, CagdCurveList, Piece};
 use crate::status::CagdStatus;
 
 /// The closed forms exist for degree 2 (§15.1) and 3 (§15.3) only.
