@@ -53,12 +53,24 @@ pub enum CagdStatus {
     /// A (source, target) degree pair the operation does not accept, e.g. a reduction
     /// whose target is not below the source degree.
     ERR_BAD_DEGREE_PAIR = 27,
+    /// An interval whose lower bound exceeds its upper bound (an empty box side).
+    ERR_EMPTY_INTERVAL = 30,
     /// A condition of a seed formula is not met (the message gives the equation number).
     ERR_CONDITION_NOT_MET = 40,
     /// An iterative or adaptive algorithm could not reach the tolerance.
     ERR_NO_CONVERGENCE = 41,
     /// A linear system that must be solved is singular.
     ERR_SINGULAR = 42,
+    /// The LP solver answered "infeasible" (cannot happen for the interval reduction LP by
+    /// SPEC-convert I.2; reported, never hidden).
+    ERR_LP_INFEASIBLE = 50,
+    /// The LP solver answered "unbounded" (cannot happen for the interval reduction LP by
+    /// SPEC-convert I.2; reported, never hidden).
+    ERR_LP_UNBOUNDED = 51,
+    /// The LP solver failed (internal error, caught panic, non-finite answer).
+    ERR_LP_FAILED = 52,
+    /// A containment that must be certified could not be certified after outward repair.
+    ERR_NOT_CERTIFIED = 53,
     /// A bug inside cagd was caught at the boundary (a Rust panic); please report it with
     /// the message.
     ERR_PANIC = 99,
@@ -82,9 +94,14 @@ impl CagdStatus {
             CagdStatus::ERR_DEGREE_OUT_OF_RANGE => c"CAGD_ERR_DEGREE_OUT_OF_RANGE",
             CagdStatus::ERR_TOO_MANY_CONSTRAINTS => c"CAGD_ERR_TOO_MANY_CONSTRAINTS",
             CagdStatus::ERR_BAD_DEGREE_PAIR => c"CAGD_ERR_BAD_DEGREE_PAIR",
+            CagdStatus::ERR_EMPTY_INTERVAL => c"CAGD_ERR_EMPTY_INTERVAL",
             CagdStatus::ERR_CONDITION_NOT_MET => c"CAGD_ERR_CONDITION_NOT_MET",
             CagdStatus::ERR_NO_CONVERGENCE => c"CAGD_ERR_NO_CONVERGENCE",
             CagdStatus::ERR_SINGULAR => c"CAGD_ERR_SINGULAR",
+            CagdStatus::ERR_LP_INFEASIBLE => c"CAGD_ERR_LP_INFEASIBLE",
+            CagdStatus::ERR_LP_UNBOUNDED => c"CAGD_ERR_LP_UNBOUNDED",
+            CagdStatus::ERR_LP_FAILED => c"CAGD_ERR_LP_FAILED",
+            CagdStatus::ERR_NOT_CERTIFIED => c"CAGD_ERR_NOT_CERTIFIED",
             CagdStatus::ERR_PANIC => c"CAGD_ERR_PANIC",
         }
     }
@@ -96,7 +113,7 @@ impl CagdStatus {
 }
 
 /// Every status, in numeric order (used by tests and by `cagd_status_name`).
-pub(crate) const ALL_STATUSES: [CagdStatus; 18] = [
+pub(crate) const ALL_STATUSES: [CagdStatus; 23] = [
     CagdStatus::OK,
     CagdStatus::ERR_NULL_POINTER,
     CagdStatus::ERR_BUFFER_TOO_SMALL,
@@ -111,9 +128,14 @@ pub(crate) const ALL_STATUSES: [CagdStatus; 18] = [
     CagdStatus::ERR_DEGREE_OUT_OF_RANGE,
     CagdStatus::ERR_TOO_MANY_CONSTRAINTS,
     CagdStatus::ERR_BAD_DEGREE_PAIR,
+    CagdStatus::ERR_EMPTY_INTERVAL,
     CagdStatus::ERR_CONDITION_NOT_MET,
     CagdStatus::ERR_NO_CONVERGENCE,
     CagdStatus::ERR_SINGULAR,
+    CagdStatus::ERR_LP_INFEASIBLE,
+    CagdStatus::ERR_LP_UNBOUNDED,
+    CagdStatus::ERR_LP_FAILED,
+    CagdStatus::ERR_NOT_CERTIFIED,
     CagdStatus::ERR_PANIC,
 ];
 
@@ -141,6 +163,11 @@ pub fn status_of_core(e: &Error) -> CagdStatus {
         Error::ConditionNotMet { .. } => CagdStatus::ERR_CONDITION_NOT_MET,
         Error::NoConvergence { .. } => CagdStatus::ERR_NO_CONVERGENCE,
         Error::Singular { .. } => CagdStatus::ERR_SINGULAR,
+        Error::EmptyInterval { .. } => CagdStatus::ERR_EMPTY_INTERVAL,
+        Error::LpInfeasible { .. } => CagdStatus::ERR_LP_INFEASIBLE,
+        Error::LpUnbounded { .. } => CagdStatus::ERR_LP_UNBOUNDED,
+        Error::LpSolverFailed { .. } => CagdStatus::ERR_LP_FAILED,
+        Error::NotCertified { .. } => CagdStatus::ERR_NOT_CERTIFIED,
         _ => CagdStatus::ERR_INVALID_ARGUMENT,
     }
 }
@@ -170,7 +197,7 @@ mod tests {
 
     #[test]
     fn discriminants_are_pinned() {
-        let expected: [(CagdStatus, i32); 18] = [
+        let expected: [(CagdStatus, i32); 23] = [
             (CagdStatus::OK, 0),
             (CagdStatus::ERR_NULL_POINTER, 1),
             (CagdStatus::ERR_BUFFER_TOO_SMALL, 2),
@@ -185,9 +212,14 @@ mod tests {
             (CagdStatus::ERR_DEGREE_OUT_OF_RANGE, 25),
             (CagdStatus::ERR_TOO_MANY_CONSTRAINTS, 26),
             (CagdStatus::ERR_BAD_DEGREE_PAIR, 27),
+            (CagdStatus::ERR_EMPTY_INTERVAL, 30),
             (CagdStatus::ERR_CONDITION_NOT_MET, 40),
             (CagdStatus::ERR_NO_CONVERGENCE, 41),
             (CagdStatus::ERR_SINGULAR, 42),
+            (CagdStatus::ERR_LP_INFEASIBLE, 50),
+            (CagdStatus::ERR_LP_UNBOUNDED, 51),
+            (CagdStatus::ERR_LP_FAILED, 52),
+            (CagdStatus::ERR_NOT_CERTIFIED, 53),
             (CagdStatus::ERR_PANIC, 99),
         ];
         for (i, (s, code)) in expected.into_iter().enumerate() {
@@ -319,6 +351,31 @@ mod tests {
                 S::ERR_NO_CONVERGENCE,
             ),
             (Error::Singular { what: "Gram" }, S::ERR_SINGULAR),
+            (
+                Error::EmptyInterval {
+                    index: 2,
+                    coord: 1,
+                    lo: 1.0,
+                    hi: 0.0,
+                },
+                S::ERR_EMPTY_INTERVAL,
+            ),
+            (Error::LpInfeasible { what: "x" }, S::ERR_LP_INFEASIBLE),
+            (Error::LpUnbounded { what: "x" }, S::ERR_LP_UNBOUNDED),
+            (
+                Error::LpSolverFailed {
+                    what: "x",
+                    why: "panic".to_string(),
+                },
+                S::ERR_LP_FAILED,
+            ),
+            (
+                Error::NotCertified {
+                    what: "x",
+                    residual: 1.0,
+                },
+                S::ERR_NOT_CERTIFIED,
+            ),
         ];
         for (e, s) in cases {
             assert_eq!(status_of_core(&e), s, "{e:?}");

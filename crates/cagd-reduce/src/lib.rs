@@ -167,6 +167,7 @@ mod exact;
 mod exact_degree;
 mod g1;
 mod hull;
+mod interval;
 mod least_squares;
 mod measure;
 mod method;
@@ -200,6 +201,11 @@ pub use bspline_uniform::{Merge, UniformReduction, reduce_uniform_bspline};
 pub use cagd_core::{Error, Result};
 pub use exact_degree::{DEFAULT_REL_TOL, exact_degree, reduce_exact};
 pub use g1::reduce_g1_optimal;
+pub use interval::{
+    AnalyticOptimum, DEFAULT_SAMPLE_GRID, IntervalOptions, IntervalReduction, IntervalReport,
+    IntervalTriPatch, MAX_ANALYTIC_BASES, MAX_INTERVAL_DEGREE, reduce_interval_triangle,
+    reduce_interval_triangle_analytic, triangle_elevation_matrix, triangle_elevation_matrix_exact,
+};
 pub use measure::max_deviation;
 pub use method::Method;
 pub use operator::{Operator, operator};
