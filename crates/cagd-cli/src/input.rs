@@ -71,6 +71,12 @@ pub(crate) enum RawShape {
         degree: usize,
         points: PointList,
     },
+    /// An interval triangle (seed 004): degree and the lower / upper nets.
+    IntervalTriangle {
+        degree: usize,
+        lo: PointList,
+        hi: PointList,
+    },
     /// A B-spline / NURBS surface: points flat and i-major over `counts = (n_u, n_v)`.
     BSplineSurface {
         degree: (usize, usize),
@@ -196,6 +202,9 @@ fn parse_shape(obj: &Value, path: &str) -> Result<RawShape, InputError> {
         .ok_or_else(|| InputError::new(format!("{path}.type"), "expected a string"))?;
     if ty == "bspline-surface" {
         return crate::input_surface::parse(obj, path);
+    }
+    if ty == "interval-triangle" {
+        return crate::interval_cmd::parse(obj, path);
     }
     let points = point_list(field(obj, path, "points")?, &format!("{path}.points"))?;
     match ty {

@@ -210,6 +210,7 @@ pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<O
                     pair: result.map(|r| (shape.clone(), r)),
                 });
             }
+            Shape::IntervalTriangle(t) => out.push(crate::interval_cmd::reduce(t, args, path)?),
             Shape::BSplineSurface(s) => {
                 let (json, result) = crate::surface_cmd::reduce(s, args, path)?;
                 out.push(Output {

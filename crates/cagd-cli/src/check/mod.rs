@@ -10,6 +10,7 @@
 
 mod compare;
 mod fields;
+mod interval;
 
 use std::path::Path;
 
@@ -43,7 +44,7 @@ pub(crate) enum Outcome {
 pub(crate) type Runner = fn(&Vector<'_>) -> Result<Outcome, String>;
 
 /// The dispatch tables, one per spec family.
-const TABLES: &[&[(&str, Runner)]] = &[];
+const TABLES: &[&[(&str, Runner)]] = &[interval::TABLE];
 
 /// The runner of `algorithm`, if any table knows it.
 pub(crate) fn lookup(algorithm: &str) -> Option<Runner> {

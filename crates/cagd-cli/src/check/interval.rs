@@ -1,0 +1,231 @@
+//! Runners of the interval-triangle family (SPEC-convert part I, seed 004):
+//! `interval_triangle_degree_reduction_lp` and `triangle_elevation_matrix`.
+//!
+//! Comparison rule of the reduction. A vector whose `params.unique` is `true` is compared
+//! value by value (boxes and every other key of `expected`). Any other vector — marked
+//! non-unique (`params.unique == false`, or an id saying "nonunique" / "non-unique"),
+//! or of unknown uniqueness — passes when every non-box key of `expected` matches by the
+//! tolerance rule AND either the boxes match within the tolerance, or (the optimum is not
+//! unique, so another optimal vertex is as good) the thickness equals the expected
+//! thickness within the tolerance, every box is proper (`lo <= hi`) and the result contains
+//! the input in exact arithmetic on the returned doubles (at the vector's containment
+//! degree). SPEC-convert I.2: "For non-unique cases, tests compare thickness, `L <= U` and
+//! containment."
+
+use cagd_core::tri_count;
+use cagd_reduce::{IntervalOptions, IntervalTriPatch, reduce_interval_triangle, triangle_elevation_matrix};
+use serde_json::{Map, Value, json};
+
+use super::fields::matrix_json;
+use super::{Outcome, Runner, Vector, compare};
+
+/// The family's dispatch table.
+pub(crate) const TABLE: &[(&str, Runner)] = &[
+    ("interval_triangle_degree_reduction_lp", run_reduction),
+    ("triangle_elevation_matrix", run_elevation),
+];
+
+/// A bound: a JSON number, or a string naming a non-finite value (so that a vector can ask
+/// for the refusal of NaN / infinite bounds).
+fn bound(v: &Value, what: &str) -> Result<f64, String> {
+    if let Some(x) = v.as_f64() {
+        return Ok(x);
+    }
+    match v.as_str().map(str::to_ascii_lowercase).as_deref() {
+        Some("nan") => Ok(f64::NAN),
+        Some("inf" | "+inf" | "infinity" | "+infinity") => Ok(f64::INFINITY),
+        Some("-inf" | "-infinity") => Ok(f64::NEG_INFINITY),
+        _ => Err(format!("{what}: not a number")),
+    }
+}
+
+/// `input.boxes` (`[[[lo, hi] per coordinate] per box]`) or `input.lo` / `input.hi` (lists
+/// of points) as flat nets and the dimension.
+fn read_boxes(v: &Vector<'_>) -> Result<(Vec<f64>, Vec<f64>, usize), String> {
+    let (mut lo, mut hi) = (Vec::new(), Vec::new());
+    let mut dim = 0;
+    if let Some(boxes) = v.input.get("boxes") {
+        let list = boxes.as_array().ok_or("input.boxes: not a list")?;
+        for (q, b) in list.iter().enumerate() {
+            let sides = b.as_array().ok_or_else(|| format!("input.boxes[{q}]: not a list"))?;
+            if q == 0 {
+                dim = sides.len();
+            } else if sides.len() != dim {
+                return Err(format!("input.boxes[{q}]: {} coordinates, expected {dim}", sides.len()));
+            }
+            for (c, s) in sides.iter().enumerate() {
+                let what = format!("input.boxes[{q}][{c}]");
+                let pair = s.as_array().filter(|p| p.len() == 2).ok_or_else(|| format!("{what}: not [lo, hi]"))?;
+                lo.push(bound(&pair[0], &what)?);
+                hi.push(bound(&pair[1], &what)?);
+            }
+        }
+    } else {
+        for (key, net) in [("lo", &mut lo), ("hi", &mut hi)] {
+            let list = v.input(key)?.as_array().ok_or_else(|| format!("input.{key}: not a list"))?;
+            for (q, p) in list.iter().enumerate() {
+                let p = p.as_array().ok_or_else(|| format!("input.{key}[{q}]: not a point"))?;
+                dim = p.len();
+                for x in p {
+                    net.push(bound(x, &format!("input.{key}[{q}]"))?);
+                }
+            }
+        }
+    }
+    Ok((lo, hi, dim))
+}
+
+/// The containment degree asked by a vector: `params.containment_degree` or `params.N`, or
+/// the number in `params.containment` ("degree-10 control boxes"); `None` is `N = n`.
+fn containment_degree(v: &Vector<'_>) -> Result<Option<usize>, String> {
+    for key in ["containment_degree", "N"] {
+        if v.param(key).is_some() {
+            return v.param_usize(key).map(Some);
+        }
+    }
+    let text = v.param("containment").and_then(Value::as_str).unwrap_or("");
+    let digits: String = text
+        .split(|c: char| !c.is_ascii_digit())
+        .find(|s| !s.is_empty())
+        .unwrap_or("")
+        .to_string();
+    Ok(digits.parse().ok())
+}
+
+/// Whether the vector says its optimum is unique (`Some(true)`: `params.unique == true`),
+/// not unique (`Some(false)`: `params.unique == false`, or an id saying "nonunique" /
+/// "non-unique"), or nothing.
+fn uniqueness(v: &Vector<'_>) -> Option<bool> {
+    if let Some(u) = v.param("unique").and_then(Value::as_bool) {
+        return Some(u);
+    }
+    let id = v.id.to_ascii_lowercase();
+    if ["non-unique", "nonunique", "not-unique"].iter().any(|w| id.contains(w)) {
+        return Some(false);
+    }
+    None
+}
+
+fn run_reduction(v: &Vector<'_>) -> Result<Outcome, String> {
+    let (lo, hi, dim) = read_boxes(v)?;
+    let count = if dim == 0 { 0 } else { lo.len() / dim };
+    let n = match v.param("n") {
+        Some(_) => v.param_usize("n")?,
+        None => match (0..=cagd_reduce::MAX_INTERVAL_DEGREE).find(|&n| tri_count(n) == count) {
+            Some(n) => n,
+            None => return Ok(Outcome::Refused(format!("{count} boxes is not a triangular count"))),
+        },
+    };
+    let m = v.param_usize("m")?;
+    let big = containment_degree(v)?;
+    let p = match IntervalTriPatch::new(lo, hi, n, dim) {
+        Ok(p) => p,
+        Err(e) => return Ok(Outcome::Refused(e.to_string())),
+    };
+    let opts = IntervalOptions {
+        containment_degree: big,
+        ..IntervalOptions::new(m)
+    };
+    let r = match reduce_interval_triangle(&p, &opts) {
+        Ok(r) => r,
+        Err(e) => return Ok(Outcome::Refused(e.to_string())),
+    };
+    let got = answer(&r, dim);
+    if uniqueness(v) == Some(true) {
+        return Ok(Outcome::Values(got));
+    }
+    // Non-unique or unknown: every non-box key by the tolerance rule, the boxes by value or
+    // by thickness + proper boxes + exact containment.
+    let Value::Object(expected) = v.expected else {
+        return Err("expected: not an object".to_string());
+    };
+    let others: Map<String, Value> = expected.iter().filter(|(k, _)| *k != "boxes").map(|(k, x)| (k.clone(), x.clone())).collect();
+    let (mut max_diff, mut detail) = (0.0_f64, String::new());
+    let mut pass = match compare(&got, &Value::Object(others), v.tol) {
+        Ok(d) => {
+            max_diff = d;
+            true
+        }
+        Err((d, why)) => {
+            max_diff = max_diff.max(d);
+            detail = why;
+            false
+        }
+    };
+    if let Some(eb) = expected.get("boxes") {
+        match compare(&got["boxes"], eb, v.tol) {
+            Ok(d) => max_diff = max_diff.max(d),
+            Err((_, why)) => {
+                let t_exp = expected
+                    .get("thickness_out")
+                    .and_then(Value::as_f64)
+                    .ok_or("expected.thickness_out: needed to compare a non-unique optimum")?;
+                let t = r.report.thickness_out;
+                let dt = (t - t_exp).abs() / t_exp.abs().max(1.0);
+                let proper = r.patch.lo().iter().zip(r.patch.hi()).all(|(l, h)| l <= h);
+                let contains = r.patch.contains(&p, big).map_err(|e| e.to_string())?;
+                max_diff = max_diff.max(dt);
+                if !(dt <= v.tol && proper && contains) {
+                    pass = false;
+                    detail = format!(
+                        "boxes differ ({why}) and thickness {t} vs {t_exp} (diff {dt:.2e}), proper {proper}, contains {contains}"
+                    );
+                }
+            }
+        }
+    }
+    Ok(Outcome::Compared {
+        max_diff,
+        pass,
+        detail,
+    })
+}
+
+/// Every quantity the library computes, under the names a vector may ask for.
+fn answer(r: &cagd_reduce::IntervalReduction, dim: usize) -> Value {
+    let boxes: Vec<Value> = r
+        .patch
+        .lo()
+        .chunks(dim)
+        .zip(r.patch.hi().chunks(dim))
+        .map(|(l, h)| Value::Array(l.iter().zip(h).map(|(a, b)| json!([a, b])).collect()))
+        .collect();
+    let rep = &r.report;
+    let coupled = rep.coupled.iter().any(|&c| c);
+    let per_coord = dim as f64 * tri_count(r.patch.degree()) as f64;
+    json!({
+        "boxes": boxes,
+        "lo": super::fields::points_json(r.patch.lo(), dim),
+        "hi": super::fields::points_json(r.patch.hi(), dim),
+        "thickness_in": rep.thickness_in,
+        "thickness_out": rep.thickness_out,
+        "thickness": rep.thickness_out,
+        "ratio": rep.ratio,
+        "coupled": coupled,
+        "needs_coupling": coupled,
+        "coupled_per_coordinate": rep.coupled,
+        "objective": rep.objective,
+        "objective_coupled": rep.objective,
+        "coupled_objective": rep.objective,
+        "objective_decoupled": rep.objective_decoupled,
+        "decoupled_objective": rep.objective_decoupled,
+        "thickness_coupled": rep.objective / per_coord,
+        "thickness_decoupled": rep.objective_decoupled / per_coord,
+        "containment_degree": rep.containment_degree,
+        "degree": r.patch.degree(),
+        "dim": dim,
+    })
+}
+
+fn run_elevation(v: &Vector<'_>) -> Result<Outcome, String> {
+    let m = v.param_usize("m")?;
+    let n = v.param_usize("n")?;
+    match triangle_elevation_matrix(m, n) {
+        Ok(e) => Ok(Outcome::Values(json!({
+            "E": matrix_json(tri_count(n), tri_count(m), &e),
+            "rows": tri_count(n),
+            "cols": tri_count(m),
+        }))),
+        Err(e) => Ok(Outcome::Refused(e.to_string())),
+    }
+}
