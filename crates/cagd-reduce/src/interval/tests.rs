@@ -433,3 +433,35 @@ proptest! {
         }
     }
 }
+
+/// A deterministic pseudo-random interval triangle (xorshift), widths in `[0, 2)`.
+fn pseudo_random(n: usize, dim: usize, seed: u64) -> IntervalTriPatch {
+    let mut s = seed.max(1);
+    let mut next = move || {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        (s >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let len = tri_count(n) * dim;
+    let lo: Vec<f64> = (0..len).map(|_| 20.0 * next() - 10.0).collect();
+    let hi = lo.iter().map(|l| l + 2.0 * next()).collect();
+    IntervalTriPatch::new(lo, hi, n, dim).unwrap()
+}
+
+#[test]
+fn degree_20_to_10_in_three_dimensions() {
+    // The largest size the issue asks for: LPs of 231 rows x 66 variables (coupled:
+    // 528 x 132).
+    let p = pseudo_random(20, 3, 7);
+    let t0 = std::time::Instant::now();
+    let r = reduce_interval_triangle(&p, &IntervalOptions::new(10)).unwrap();
+    let dt = t0.elapsed();
+    assert_eq!(r.report.lp_size, (231, 66));
+    assert!(r.patch.contains(&p, None).unwrap());
+    assert!(r.report.max_violation.unwrap() <= 0.0);
+    let dual = dual_objective(&p, 10, 20, r.report.coupled.iter().any(|&c| c));
+    assert!((dual - r.report.objective).abs() < 1e-8 * dual.abs(), "{dual} {}", r.report.objective);
+    eprintln!("20 -> 10, dim 3: {dt:?}, coupled {:?}, repair {:e}", r.report.coupled, r.report.repair);
+}
+
