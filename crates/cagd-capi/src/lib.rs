@@ -45,7 +45,8 @@
 //!   `cagd_curve_exact_degree`, `cagd_curve_reduce_g1_optimal`, `cagd_reduce_operator`,
 //!   `cagd_bspline_reduce` (to a tolerance) and `cagd_bspline_reduce_uniform` (seed 001),
 //!   `cagd_bsplinesurface_reduce`, `cagd_tensorpatch_reduce` / `cagd_tripatch_reduce` and
-//!   their `_to_tolerance` forms. All take one `CagdReduceOptions` (versioned by its
+//!   their `_to_tolerance` forms; `cagd_intervaltri_reduce` (interval triangles, seed 004:
+//!   LP reduction certified to contain its input; handle `CagdIntervalTriPatch`). All take one `CagdReduceOptions` (versioned by its
 //!   leading `struct_size`, filled by `cagd_reduce_options_init`).
 //!
 //! ## Supported range and accuracy
@@ -74,6 +75,8 @@ mod curve;
 mod curve_list;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod curve_ops;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod interval;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod invariants;
 #[allow(
@@ -143,6 +146,11 @@ pub use curve_list::{
 pub use curve_ops::{
     cagd_curve_elevate, cagd_curve_eval, cagd_curve_eval_many, cagd_curve_segment,
     cagd_curve_subdivide,
+};
+pub use interval::{
+    CagdIntervalReport, CagdIntervalTriPatch, cagd_intervaltri_contains, cagd_intervaltri_free,
+    cagd_intervaltri_net, cagd_intervaltri_new, cagd_intervaltri_reduce, cagd_intervaltri_shape,
+    cagd_triangle_elevation_matrix,
 };
 pub use invariants::{
     cagd_curve_distance, cagd_curve_forward_difference, cagd_tensorpatch_degeneracy,

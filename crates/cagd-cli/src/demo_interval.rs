@@ -43,7 +43,10 @@ pub(crate) fn example_1() -> Result<IntervalTriPatch, String> {
 
 /// Appends Example 1 (and its tighter models) to `table`; writes `interval.svg` into `out`.
 pub(crate) fn run(out: &Path, table: &mut String) -> Result<(), String> {
-    let _ = writeln!(table, "-- seed 004 example 1, interval triangle 4 -> 3 (thickness 2 -> 125/36 = 3.4722)");
+    let _ = writeln!(
+        table,
+        "-- seed 004 example 1, interval triangle 4 -> 3 (thickness 2 -> 125/36 = 3.4722)"
+    );
     let p = example_1()?;
     let mut rows = Vec::new();
     for big in [None, Some(6), Some(10), Some(16)] {
@@ -53,7 +56,13 @@ pub(crate) fn run(out: &Path, table: &mut String) -> Result<(), String> {
         };
         let r = reduce_interval_triangle(&p, &opts).map_err(|e| e.to_string())?;
         let us = time_us(5, || {
-            let _ = reduce_interval_triangle(&p, &IntervalOptions { sample_grid: 0, ..opts });
+            let _ = reduce_interval_triangle(
+                &p,
+                &IntervalOptions {
+                    sample_grid: 0,
+                    ..opts
+                },
+            );
         });
         let rep = &r.report;
         let label = format!("interval-lp N={}", rep.containment_degree);

@@ -23,7 +23,10 @@ pub(crate) fn parse(obj: &Value, path: &str) -> Result<RawShape, InputError> {
         if net.len() != expected {
             return Err(InputError::new(
                 format!("{path}.{name}"),
-                format!("has {} points, expected (n + 1)(n + 2) / 2 = {expected}", net.len()),
+                format!(
+                    "has {} points, expected (n + 1)(n + 2) / 2 = {expected}",
+                    net.len()
+                ),
             ));
         }
     }
@@ -37,7 +40,12 @@ pub(crate) fn parse(obj: &Value, path: &str) -> Result<RawShape, InputError> {
 }
 
 /// Validates the nets with cagd-reduce; errors name the offending field.
-pub(crate) fn build(degree: usize, lo: PointList, hi: PointList, path: &str) -> Result<IntervalTriPatch, InputError> {
+pub(crate) fn build(
+    degree: usize,
+    lo: PointList,
+    hi: PointList,
+    path: &str,
+) -> Result<IntervalTriPatch, InputError> {
     IntervalTriPatch::new(lo.coords, hi.coords, degree, lo.dim).map_err(|e| {
         let at = match &e {
             Error::EmptyInterval { index, coord, .. } => format!("{path}.lo[{index}][{coord}]"),
@@ -85,13 +93,20 @@ pub(crate) fn report_json(r: &IntervalReduction, degree_from: usize) -> Value {
 }
 
 /// `cagd reduce` of one interval triangle.
-pub(crate) fn reduce(t: &IntervalTriPatch, args: &ReduceArgs, path: &str) -> Result<Output, Failure> {
+pub(crate) fn reduce(
+    t: &IntervalTriPatch,
+    args: &ReduceArgs,
+    path: &str,
+) -> Result<Output, Failure> {
     let usage = |flag: &str, message: &str| Failure {
         path: flag.into(),
         message: message.into(),
     };
     if args.to.1.is_some_and(|n| n != args.to.0) {
-        return Err(usage("--to", "an interval triangle has one degree: give --to M"));
+        return Err(usage(
+            "--to",
+            "an interval triangle has one degree: give --to M",
+        ));
     }
     if args.method.is_some() || args.tol.is_some() {
         return Err(usage(
@@ -111,7 +126,10 @@ pub(crate) fn reduce(t: &IntervalTriPatch, args: &ReduceArgs, path: &str) -> Res
     v["report"] = report_json(&red, t.degree());
     Ok(Output {
         json: v,
-        pair: Some((Shape::IntervalTriangle(t.clone()), Shape::IntervalTriangle(red.patch))),
+        pair: Some((
+            Shape::IntervalTriangle(t.clone()),
+            Shape::IntervalTriangle(red.patch),
+        )),
     })
 }
 

@@ -11,8 +11,8 @@
 mod args;
 mod check;
 mod demo;
-mod demo_patches;
 mod demo_interval;
+mod demo_patches;
 mod demo_splines;
 mod input;
 mod input_beziers;

@@ -19,14 +19,18 @@ fn vector_file(name: &str, edit: impl Fn(&mut Vec<Value>)) -> std::path::PathBuf
         })
         .collect();
     edit(&mut vs);
-    let path = std::env::temp_dir().join(format!("cagd-interval-{}-{name}.json", std::process::id()));
+    let path =
+        std::env::temp_dir().join(format!("cagd-interval-{}-{name}.json", std::process::id()));
     std::fs::write(&path, serde_json::to_string(&vs).unwrap()).unwrap();
     path
 }
 
 fn check(path: &std::path::Path) -> (bool, String) {
     let o = cagd(&["check", path.to_str().unwrap()], "");
-    (o.status.success(), String::from_utf8_lossy(&o.stdout).into_owned())
+    (
+        o.status.success(),
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+    )
 }
 
 #[test]
@@ -125,11 +129,16 @@ fn elevation_entry(m: usize, n: usize, a: (usize, usize), b: (usize, usize)) -> 
     if b.0 > a.0 || b.1 > a.1 || bk > ak {
         return BigRational::from_integer(0.into());
     }
-    BigRational::new(tri(m, b.0, b.1) * tri(n - m, a.0 - b.0, a.1 - b.1), tri(n, a.0, a.1))
+    BigRational::new(
+        tri(m, b.0, b.1) * tri(n - m, a.0 - b.0, a.1 - b.1),
+        tri(n, a.0, a.1),
+    )
 }
 
 fn indices(n: usize) -> Vec<(usize, usize)> {
-    (0..=n).flat_map(|i| (0..=n - i).map(move |j| (i, j))).collect()
+    (0..=n)
+        .flat_map(|i| (0..=n - i).map(move |j| (i, j)))
+        .collect()
 }
 
 #[test]
@@ -153,7 +162,10 @@ fn random_reductions_contain_their_input_exactly_on_the_printed_doubles() {
             hi.push(h);
         }
         let input = json!({"type": "interval-triangle", "degree": n, "lo": lo, "hi": hi});
-        let out = json_out(&cagd(&["reduce", "--to", &m.to_string()], &input.to_string()));
+        let out = json_out(&cagd(
+            &["reduce", "--to", &m.to_string()],
+            &input.to_string(),
+        ));
         assert_eq!(out["type"], "interval-triangle");
         assert_eq!(out["degree"], m);
         let rep = &out["report"];
@@ -164,7 +176,10 @@ fn random_reductions_contain_their_input_exactly_on_the_printed_doubles() {
         let (ai, bi) = (indices(n), indices(m));
         for c in 0..dim {
             for q in 0..bi.len() {
-                assert!(get(&out["lo"], q, c) <= get(&out["hi"], q, c), "case {case}: empty box {q}");
+                assert!(
+                    get(&out["lo"], q, c) <= get(&out["hi"], q, c),
+                    "case {case}: empty box {q}"
+                );
             }
             for (r, &a) in ai.iter().enumerate() {
                 let mut el = BigRational::from_integer(0.into());
@@ -179,15 +194,24 @@ fn random_reductions_contain_their_input_exactly_on_the_printed_doubles() {
                     "case {case} (n {n}, m {m}, dim {dim}): lower row {r} coordinate {c}: {el} vs {}\n{input}\n{out}",
                     lo[r][c]
                 );
-                assert!(eu >= exact(hi[r][c]), "case {case}: upper row {r} coordinate {c}");
+                assert!(
+                    eu >= exact(hi[r][c]),
+                    "case {case}: upper row {r} coordinate {c}"
+                );
             }
         }
         let t_in = rep["thickness_in"].as_f64().unwrap();
         let t_out = rep["thickness_out"].as_f64().unwrap();
-        assert!(t_out >= t_in * (1.0 - 1e-12), "a wrap is never thinner than its content");
+        assert!(
+            t_out >= t_in * (1.0 - 1e-12),
+            "a wrap is never thinner than its content"
+        );
         let objective = rep["objective"].as_f64().unwrap();
         let t_opt = objective / (dim * (m + 1) * (m + 2) / 2) as f64;
-        assert!((t_out - t_opt).abs() <= 1e-9 * t_opt.max(1.0), "case {case}: repair moved the optimum");
+        assert!(
+            (t_out - t_opt).abs() <= 1e-9 * t_opt.max(1.0),
+            "case {case}: repair moved the optimum"
+        );
     }
 }
 
@@ -199,7 +223,15 @@ fn containment_degree_and_svg() {
         "hi": [[1.0], [1.5], [1.5], [2.5], [1.2], [1.0], [3.5], [2.0], [1.0], [2.0]]});
     let base = json_out(&cagd(&["reduce", "--to", "2"], &input.to_string()));
     let o = cagd(
-        &["reduce", "--to", "2", "--containment-degree", "8", "--svg", svg.to_str().unwrap()],
+        &[
+            "reduce",
+            "--to",
+            "2",
+            "--containment-degree",
+            "8",
+            "--svg",
+            svg.to_str().unwrap(),
+        ],
         &input.to_string(),
     );
     let tight = json_out(&o);
@@ -208,7 +240,10 @@ fn containment_degree_and_svg() {
         base["report"]["thickness_out"].as_f64().unwrap(),
         tight["report"]["thickness_out"].as_f64().unwrap(),
     );
-    assert!(b <= a + 1e-12, "the tighter model is not thicker: {b} vs {a}");
+    assert!(
+        b <= a + 1e-12,
+        "the tighter model is not thicker: {b} vs {a}"
+    );
     let text = std::fs::read_to_string(&svg).unwrap();
     assert!(text.starts_with("<svg") && text.contains("thickness") && text.contains("polyline"));
 }

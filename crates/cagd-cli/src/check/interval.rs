@@ -13,7 +13,9 @@
 //! containment."
 
 use cagd_core::tri_count;
-use cagd_reduce::{IntervalOptions, IntervalTriPatch, reduce_interval_triangle, triangle_elevation_matrix};
+use cagd_reduce::{
+    IntervalOptions, IntervalTriPatch, reduce_interval_triangle, triangle_elevation_matrix,
+};
 use serde_json::{Map, Value, json};
 
 use super::fields::matrix_json;
@@ -47,24 +49,37 @@ fn read_boxes(v: &Vector<'_>) -> Result<(Vec<f64>, Vec<f64>, usize), String> {
     if let Some(boxes) = v.input.get("boxes") {
         let list = boxes.as_array().ok_or("input.boxes: not a list")?;
         for (q, b) in list.iter().enumerate() {
-            let sides = b.as_array().ok_or_else(|| format!("input.boxes[{q}]: not a list"))?;
+            let sides = b
+                .as_array()
+                .ok_or_else(|| format!("input.boxes[{q}]: not a list"))?;
             if q == 0 {
                 dim = sides.len();
             } else if sides.len() != dim {
-                return Err(format!("input.boxes[{q}]: {} coordinates, expected {dim}", sides.len()));
+                return Err(format!(
+                    "input.boxes[{q}]: {} coordinates, expected {dim}",
+                    sides.len()
+                ));
             }
             for (c, s) in sides.iter().enumerate() {
                 let what = format!("input.boxes[{q}][{c}]");
-                let pair = s.as_array().filter(|p| p.len() == 2).ok_or_else(|| format!("{what}: not [lo, hi]"))?;
+                let pair = s
+                    .as_array()
+                    .filter(|p| p.len() == 2)
+                    .ok_or_else(|| format!("{what}: not [lo, hi]"))?;
                 lo.push(bound(&pair[0], &what)?);
                 hi.push(bound(&pair[1], &what)?);
             }
         }
     } else {
         for (key, net) in [("lo", &mut lo), ("hi", &mut hi)] {
-            let list = v.input(key)?.as_array().ok_or_else(|| format!("input.{key}: not a list"))?;
+            let list = v
+                .input(key)?
+                .as_array()
+                .ok_or_else(|| format!("input.{key}: not a list"))?;
             for (q, p) in list.iter().enumerate() {
-                let p = p.as_array().ok_or_else(|| format!("input.{key}[{q}]: not a point"))?;
+                let p = p
+                    .as_array()
+                    .ok_or_else(|| format!("input.{key}[{q}]: not a point"))?;
                 dim = p.len();
                 for x in p {
                     net.push(bound(x, &format!("input.{key}[{q}]"))?);
@@ -100,7 +115,10 @@ fn uniqueness(v: &Vector<'_>) -> Option<bool> {
         return Some(u);
     }
     let id = v.id.to_ascii_lowercase();
-    if ["non-unique", "nonunique", "not-unique"].iter().any(|w| id.contains(w)) {
+    if ["non-unique", "nonunique", "not-unique"]
+        .iter()
+        .any(|w| id.contains(w))
+    {
         return Some(false);
     }
     None
@@ -113,7 +131,11 @@ fn run_reduction(v: &Vector<'_>) -> Result<Outcome, String> {
         Some(_) => v.param_usize("n")?,
         None => match (0..=cagd_reduce::MAX_INTERVAL_DEGREE).find(|&n| tri_count(n) == count) {
             Some(n) => n,
-            None => return Ok(Outcome::Refused(format!("{count} boxes is not a triangular count"))),
+            None => {
+                return Ok(Outcome::Refused(format!(
+                    "{count} boxes is not a triangular count"
+                )));
+            }
         },
     };
     let m = v.param_usize("m")?;
@@ -139,7 +161,11 @@ fn run_reduction(v: &Vector<'_>) -> Result<Outcome, String> {
     let Value::Object(expected) = v.expected else {
         return Err("expected: not an object".to_string());
     };
-    let others: Map<String, Value> = expected.iter().filter(|(k, _)| *k != "boxes").map(|(k, x)| (k.clone(), x.clone())).collect();
+    let others: Map<String, Value> = expected
+        .iter()
+        .filter(|(k, _)| *k != "boxes")
+        .map(|(k, x)| (k.clone(), x.clone()))
+        .collect();
     let (mut max_diff, mut detail) = (0.0_f64, String::new());
     let mut pass = match compare(&got, &Value::Object(others), v.tol) {
         Ok(d) => {

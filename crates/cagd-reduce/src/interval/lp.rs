@@ -20,7 +20,10 @@ pub(crate) enum Sense {
     /// `a'x >= rhs`.
     Ge,
     /// `a'x = rhs`.
-    #[cfg_attr(not(test), allow(dead_code, reason = "used by the dual route of the tests"))]
+    #[cfg_attr(
+        not(test),
+        allow(dead_code, reason = "used by the dual route of the tests")
+    )]
     Eq,
 }
 

@@ -461,7 +461,13 @@ fn degree_20_to_10_in_three_dimensions() {
     assert!(r.patch.contains(&p, None).unwrap());
     assert!(r.report.max_violation.unwrap() <= 0.0);
     let dual = dual_objective(&p, 10, 20, r.report.coupled.iter().any(|&c| c));
-    assert!((dual - r.report.objective).abs() < 1e-8 * dual.abs(), "{dual} {}", r.report.objective);
-    eprintln!("20 -> 10, dim 3: {dt:?}, coupled {:?}, repair {:e}", r.report.coupled, r.report.repair);
+    assert!(
+        (dual - r.report.objective).abs() < 1e-8 * dual.abs(),
+        "{dual} {}",
+        r.report.objective
+    );
+    eprintln!(
+        "20 -> 10, dim 3: {dt:?}, coupled {:?}, repair {:e}",
+        r.report.coupled, r.report.repair
+    );
 }
-
