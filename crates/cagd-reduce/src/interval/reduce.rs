@@ -203,7 +203,9 @@ fn bound_lp(a: &[f64], nm: usize, g: &[f64]) -> Result<Vec<f64>> {
     Ok(solve_min(&lp, "interval reduction (decoupled bound)")?.x)
 }
 
-/// `min 1'U - 1'L s.t. A L <= g_lo, A U >= g_hi, L <= U`.
+/// `min 1'U - 1'L s.t. A L <= g_lo, A U >= g_hi, L <= U`, solved as
+/// `min 1'W s.t. A L <= g_lo, A L + A W >= g_hi, W >= 0` with `U = L + W` (the coupling
+/// becomes variable bounds, so the LP has `2 N_N` rows instead of `2 N_N + N_m`).
 fn coupled_lp(
     a: &[f64],
     nm: usize,
@@ -212,22 +214,22 @@ fn coupled_lp(
 ) -> Result<(Vec<f64>, Vec<f64>, f64)> {
     let mut lp = Lp::default();
     for _ in 0..nm {
-        lp.var(-1.0, FREE); // L
+        lp.var(0.0, FREE); // L
     }
     for _ in 0..nm {
-        lp.var(1.0, FREE); // U
+        lp.var(1.0, (0.0, f64::INFINITY)); // W = U - L
     }
     for r in 0..g_lo.len() {
         let row = &a[r * nm..(r + 1) * nm];
         lp.row(row_terms(row, 0), Sense::Le, g_lo[r]);
-        lp.row(row_terms(row, nm), Sense::Ge, g_hi[r]);
-    }
-    for q in 0..nm {
-        lp.row(vec![(q, 1.0), (nm + q, -1.0)], Sense::Le, 0.0);
+        let mut both = row_terms(row, 0);
+        both.extend(row_terms(row, nm));
+        lp.row(both, Sense::Ge, g_hi[r]);
     }
     let sol = solve_min(&lp, "interval reduction (coupled)")?;
-    let (l, u) = sol.x.split_at(nm);
-    Ok((l.to_vec(), u.to_vec(), sol.objective))
+    let (l, w) = sol.x.split_at(nm);
+    let u = l.iter().zip(w).map(|(l, w)| l + w).collect();
+    Ok((l.to_vec(), u, sol.objective))
 }
 
 /// The non-zero entries of a dense row, as `(offset + column, value)`.

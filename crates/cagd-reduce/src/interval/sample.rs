@@ -9,6 +9,18 @@ use super::patch::IntervalTriPatch;
 
 /// Triangular Bernstein values `B^n_ij(u, v)` (`w = 1 - u - v`) in storage order.
 pub(crate) fn basis_values(n: usize, u: f64, v: f64) -> Vec<f64> {
+    basis_with(&trinomials(n), n, u, v)
+}
+
+/// The trinomials `n! / (i! j! k!)` in storage order, as doubles.
+fn trinomials(n: usize) -> Vec<f64> {
+    tri_indices(n)
+        .map(|(i, j)| trinomial(n, i, j) as f64)
+        .collect()
+}
+
+/// [`basis_values`] with the trinomials precomputed.
+fn basis_with(coefs: &[f64], n: usize, u: f64, v: f64) -> Vec<f64> {
     let w = 1.0 - u - v;
     let powers = |x: f64| {
         let mut p = vec![1.0; n + 1];
@@ -19,7 +31,8 @@ pub(crate) fn basis_values(n: usize, u: f64, v: f64) -> Vec<f64> {
     };
     let (pu, pv, pw) = (powers(u), powers(v), powers(w.max(0.0)));
     tri_indices(n)
-        .map(|(i, j)| trinomial(n, i, j) as f64 * pu[i] * pv[j] * pw[n - i - j])
+        .zip(coefs)
+        .map(|((i, j), c)| c * pu[i] * pv[j] * pw[n - i - j])
         .collect()
 }
 
@@ -52,9 +65,10 @@ pub(crate) fn max_violation(outer: &IntervalTriPatch, inner: &IntervalTriPatch, 
     let terms = (no.max(ni) + tri_count(no.max(ni)) + 8) as f64;
     let rel = 4.0 * terms * f64::EPSILON / 2.0;
     let mut worst = f64::NEG_INFINITY;
+    let (co, ci) = (trinomials(no), trinomials(ni));
     for (u, v) in grid(k.max(1)) {
-        let bo = basis_values(no, u, v);
-        let bi = basis_values(ni, u, v);
+        let bo = basis_with(&co, no, u, v);
+        let bi = basis_with(&ci, ni, u, v);
         for c in 0..d {
             let (ol, olm) = dot(&bo, outer.lo(), d, c);
             let (oh, ohm) = dot(&bo, outer.hi(), d, c);
