@@ -109,11 +109,18 @@ fn error_vectors_pass_only_when_refused() {
 /// A small deterministic pseudo-random generator (xorshift), values in [0, 1).
 struct Rng(u64);
 impl Rng {
-    fn next(&mut self) -> f64 {
+    fn bits(&mut self) -> u64 {
         self.0 ^= self.0 << 13;
         self.0 ^= self.0 >> 7;
         self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        self.0
+    }
+    fn next(&mut self) -> f64 {
+        (self.bits() >> 11) as f64 / (1u64 << 53) as f64
+    }
+    /// Uniform in `0..k`.
+    fn below(&mut self, k: usize) -> usize {
+        usize::try_from(self.bits() % k as u64).unwrap()
     }
 }
 
@@ -145,9 +152,9 @@ fn indices(n: usize) -> Vec<(usize, usize)> {
 fn random_reductions_contain_their_input_exactly_on_the_printed_doubles() {
     let mut rng = Rng(0x5eed_1234);
     for case in 0..40 {
-        let n = 1 + (rng.next() * 7.0) as usize; // 1..=7
-        let dim = 1 + (rng.next() * 3.0) as usize; // 1..=3
-        let m = (rng.next() * n as f64) as usize; // 0..n
+        let n = 1 + rng.below(7); // 1..=7
+        let dim = 1 + rng.below(3); // 1..=3
+        let m = rng.below(n); // 0..n
         let count = (n + 1) * (n + 2) / 2;
         let mut lo = Vec::new();
         let mut hi = Vec::new();

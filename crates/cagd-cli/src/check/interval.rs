@@ -18,7 +18,7 @@ use cagd_reduce::{
 };
 use serde_json::{Map, Value, json};
 
-use super::fields::matrix_json;
+use super::fields::{matrix_json, points};
 use super::{Outcome, Runner, Vector, compare};
 
 /// The family's dispatch table.
@@ -41,8 +41,9 @@ fn bound(v: &Value, what: &str) -> Result<f64, String> {
     }
 }
 
-/// `input.boxes` (`[[[lo, hi] per coordinate] per box]`) or `input.lo` / `input.hi` (lists
-/// of points) as flat nets and the dimension.
+/// `input.boxes` (`[[[lo, hi] per coordinate] per box]`; a bound may be the string "NaN" /
+/// "inf" / "-inf") or `input.lo` / `input.hi` (lists of points) as flat nets and the
+/// dimension.
 fn read_boxes(v: &Vector<'_>) -> Result<(Vec<f64>, Vec<f64>, usize), String> {
     let (mut lo, mut hi) = (Vec::new(), Vec::new());
     let mut dim = 0;
@@ -71,21 +72,12 @@ fn read_boxes(v: &Vector<'_>) -> Result<(Vec<f64>, Vec<f64>, usize), String> {
             }
         }
     } else {
-        for (key, net) in [("lo", &mut lo), ("hi", &mut hi)] {
-            let list = v
-                .input(key)?
-                .as_array()
-                .ok_or_else(|| format!("input.{key}: not a list"))?;
-            for (q, p) in list.iter().enumerate() {
-                let p = p
-                    .as_array()
-                    .ok_or_else(|| format!("input.{key}[{q}]: not a point"))?;
-                dim = p.len();
-                for x in p {
-                    net.push(bound(x, &format!("input.{key}[{q}]"))?);
-                }
-            }
+        let (l, dl) = points(v.input("lo")?, "input.lo")?;
+        let (h, dh) = points(v.input("hi")?, "input.hi")?;
+        if dl != dh {
+            return Err(format!("input.hi: {dh} coordinates, input.lo has {dl}"));
         }
+        (lo, hi, dim) = (l, h, dl);
     }
     Ok((lo, hi, dim))
 }
@@ -126,7 +118,7 @@ fn uniqueness(v: &Vector<'_>) -> Option<bool> {
 
 fn run_reduction(v: &Vector<'_>) -> Result<Outcome, String> {
     let (lo, hi, dim) = read_boxes(v)?;
-    let count = if dim == 0 { 0 } else { lo.len() / dim };
+    let count = lo.len().checked_div(dim).unwrap_or(0);
     let n = match v.param("n") {
         Some(_) => v.param_usize("n")?,
         None => match (0..=cagd_reduce::MAX_INTERVAL_DEGREE).find(|&n| tri_count(n) == count) {
@@ -237,6 +229,12 @@ fn answer(r: &cagd_reduce::IntervalReduction, dim: usize) -> Value {
         "decoupled_objective": rep.objective_decoupled,
         "thickness_coupled": rep.objective / per_coord,
         "thickness_decoupled": rep.objective_decoupled / per_coord,
+        "decoupled_thickness": rep.objective_decoupled / per_coord,
+        "coupled_thickness": rep.objective / per_coord,
+        "objective_value": rep.objective,
+        "sum_widths": rep.objective,
+        "decoupled_proper": !coupled,
+        "decoupled_has_empty_box": coupled,
         "containment_degree": rep.containment_degree,
         "degree": r.patch.degree(),
         "dim": dim,

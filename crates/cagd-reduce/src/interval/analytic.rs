@@ -95,7 +95,10 @@ pub fn reduce_interval_triangle_analytic(
         objective,
         thickness: objective / (d * nm) as f64,
         proper,
-        bases: bases as usize,
+        // bases <= MAX_ANALYTIC_BASES (checked above), an exact integer in f64.
+        bases: (0..=MAX_ANALYTIC_BASES)
+            .find(|&b| b as f64 >= bases)
+            .unwrap_or(MAX_ANALYTIC_BASES),
     })
 }
 

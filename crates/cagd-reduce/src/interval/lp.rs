@@ -27,6 +27,9 @@ pub(crate) enum Sense {
     Eq,
 }
 
+/// One constraint: non-zero `(variable, coefficient)` pairs, sense, right-hand side.
+pub(crate) type Row = (Vec<(usize, f64)>, Sense, f64);
+
 /// A dense LP `min c'x` subject to `lower <= x <= upper` (infinite bounds allowed) and
 /// sparse rows `a_r'x (sense_r) rhs_r`.
 #[derive(Debug, Clone, Default)]
@@ -36,7 +39,7 @@ pub(crate) struct Lp {
     /// Variable bounds.
     pub(crate) bounds: Vec<(f64, f64)>,
     /// Rows: non-zero `(variable, coefficient)` pairs, sense, right-hand side.
-    pub(crate) rows: Vec<(Vec<(usize, f64)>, Sense, f64)>,
+    pub(crate) rows: Vec<Row>,
 }
 
 impl Lp {

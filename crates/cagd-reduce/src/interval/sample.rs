@@ -104,4 +104,17 @@ mod tests {
         assert_eq!(b[tri_count(4) - 1], 1.0);
         assert_eq!(grid(44).count(), 1035);
     }
+
+    #[test]
+    fn sampling_sees_a_real_violation_and_none_for_a_copy() {
+        let lo = vec![0.0, 1.0, 0.5, 2.0, 1.0, 0.0];
+        let hi: Vec<f64> = lo.iter().map(|x| x + 1.0).collect();
+        let p = IntervalTriPatch::new(lo.clone(), hi.clone(), 2, 1).unwrap();
+        assert!(max_violation(&p, &p, 20) <= 0.0);
+        // Raise the lower net by 0.1: the outer box misses 0.1 everywhere.
+        let up: Vec<f64> = lo.iter().map(|x| x + 0.1).collect();
+        let q = IntervalTriPatch::new(up, hi, 2, 1).unwrap();
+        let v = max_violation(&q, &p, 20);
+        assert!((v - 0.1).abs() < 1e-12, "{v}");
+    }
 }
