@@ -158,7 +158,7 @@ fn width_at(t: &IntervalTriPatch, u: f64, v: f64) -> f64 {
 pub(crate) fn panels(title: &str, a: &IntervalTriPatch, b: &IntervalTriPatch) -> Vec<Panel> {
     let mut nets = Panel {
         title: format!(
-            "{title}: interval triangle {} (black) -> {} (red), lower (dashed) and upper nets",
+            "{title}: {} (black) -> {} (red), lower nets dashed",
             a.degree(),
             b.degree()
         ),
@@ -175,7 +175,7 @@ pub(crate) fn panels(title: &str, a: &IntervalTriPatch, b: &IntervalTriPatch) ->
     }
     let mut width = Panel {
         title: format!(
-            "mean box width along the median; thickness {:.4} -> {:.4}",
+            "box width on the median u = v; thickness {:.4} -> {:.4}",
             a.thickness(),
             b.thickness()
         ),
@@ -183,6 +183,8 @@ pub(crate) fn panels(title: &str, a: &IntervalTriPatch, b: &IntervalTriPatch) ->
         ..Panel::default()
     };
     const STEPS: usize = 200;
+    // The axis w = 0, so that the widths are seen against zero.
+    width.line(vec![(0.0, 0.0), (1.0, 0.0)], "#bbbbbb", 0.6);
     for (t, color) in [(a, "black"), (b, "#d01010")] {
         let pts = (0..=STEPS)
             .map(|s| {
