@@ -500,7 +500,7 @@ typedef struct CagdCurve CagdCurve;
 typedef struct CagdCurveList CagdCurveList;
 
 /**
- * Opaque handle to an interval triangular Bézier patch of degree `n` (`0..=40`) in `dim`
+ * Opaque handle to an interval triangular Bézier patch of degree `n` (`0..=64`) in `dim`
  * coordinates: one control box `[lo, hi]` per coordinate for each of the
  * `(n + 1)(n + 2) / 2` indices `i + j + k = n`, stored i-major (for i in 0..=n, for j in
  * 0..=n-i) as two nets `lo` and `hi` of `(n + 1)(n + 2) / 2 * dim` doubles. Invariant:
@@ -2009,7 +2009,7 @@ CagdStatus cagd_curve_segment(const struct CagdCurve *curve,
  * - `lo`, `hi` (in): `(degree + 1) * (degree + 2) / 2 * dim` doubles each, i-major: box
  *   `(i, j)` starts at double `(i * (2n + 3 - i) / 2 + j) * dim`; coordinate `c` of the box
  *   is the interval `[lo[.. + c], hi[.. + c]]`. Borrowed and copied.
- * - `degree` (in): the degree `n`, `0..=40`.
+ * - `degree` (in): the degree `n`, `0..=64`.
  * - `dim` (in): coordinates per box, `>= 1`.
  * - `patch_out` (out): on `CAGD_OK`, a new handle owned by the caller (release with
  *   `cagd_intervaltri_free`). Not written on failure.
@@ -2019,7 +2019,7 @@ CagdStatus cagd_curve_segment(const struct CagdCurve *curve,
  * - `CAGD_ERR_NULL_POINTER`: `lo`, `hi` or `patch_out` is NULL.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, the length formula overflows, or a pointer
  *   is misaligned.
- * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 40`.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
  * - `CAGD_ERR_NON_FINITE`: a bound is NaN or infinite.
  * - `CAGD_ERR_EMPTY_INTERVAL`: `lo > hi` for some box and coordinate (the message names
  *   them).
@@ -2125,7 +2125,7 @@ CagdStatus cagd_intervaltri_net(const struct CagdIntervalTriPatch *patch,
  * - `CAGD_OK`: `*contains_out` is written.
  * - `CAGD_ERR_NULL_POINTER`: any pointer is NULL.
  * - `CAGD_ERR_DIMENSION_MISMATCH`: the dimensions differ.
- * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `N > 40`.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `N > 64`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
@@ -2161,7 +2161,7 @@ CagdStatus cagd_intervaltri_contains(const struct CagdIntervalTriPatch *outer,
  * - `CAGD_OK`: `*patch_out` (and `*report_out`) are written.
  * - `CAGD_ERR_NULL_POINTER`: `patch` or `patch_out` is NULL.
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n`, or `0 < containment_degree < n`.
- * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `containment_degree > 40`.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `containment_degree > 64`.
  * - `CAGD_ERR_LP_INFEASIBLE`, `CAGD_ERR_LP_UNBOUNDED`: the LP solver said so (impossible by
  *   SPEC-convert I.2; reported, never hidden).
  * - `CAGD_ERR_LP_FAILED`: the LP solver failed or panicked (caught).
@@ -2186,7 +2186,7 @@ CagdStatus cagd_intervaltri_reduce(const struct CagdIntervalTriPatch *patch,
  * ask the size.
  *
  * Parameters:
- * - `m`, `n` (in): degrees, `m <= n <= 40`.
+ * - `m`, `n` (in): degrees, `m <= n <= 64`.
  * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
  *   `(n+1)(n+2)/2 * (m+1)(m+2)/2` doubles hold the matrix. May be NULL only when
  *   `out_cap == 0`.
@@ -2198,7 +2198,7 @@ CagdStatus cagd_intervaltri_reduce(const struct CagdIntervalTriPatch *patch,
  * - `CAGD_ERR_NULL_POINTER`: `out_needed` is NULL, or `out` is NULL with `out_cap > 0`.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is too small; only `*out_needed` is written.
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `m > n`.
- * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n > 40`.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n > 64`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *

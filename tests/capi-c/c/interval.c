@@ -76,7 +76,7 @@ int cagd_ctest_intervaltri_elevation_matrix(void) {
     CHECK_NEAR(e[5 * 6 + 4], 1.0 / 3.0, 0.0);
     CHECK(e[0] == 1.0 && e[59] == 1.0);
     CHECK_STATUS(cagd_triangle_elevation_matrix(3, 2, e, 60, &needed), CAGD_ERR_BAD_DEGREE_PAIR);
-    CHECK_STATUS(cagd_triangle_elevation_matrix(2, 41, e, 60, &needed),
+    CHECK_STATUS(cagd_triangle_elevation_matrix(2, 65, e, 60, &needed),
                  CAGD_ERR_DEGREE_OUT_OF_RANGE);
     CHECK_STATUS(cagd_triangle_elevation_matrix(2, 3, e, 60, NULL), CAGD_ERR_NULL_POINTER);
     rc = 0;
@@ -97,7 +97,7 @@ int cagd_ctest_intervaltri_bad_input(void) {
     CHECK_STATUS(cagd_intervaltri_new(lo, NULL, 2, 1, &p), CAGD_ERR_NULL_POINTER);
     CHECK_STATUS(cagd_intervaltri_new(lo, hi, 2, 1, NULL), CAGD_ERR_NULL_POINTER);
     CHECK_STATUS(cagd_intervaltri_new(lo, hi, 2, 0, &p), CAGD_ERR_INVALID_ARGUMENT);
-    CHECK_STATUS(cagd_intervaltri_new(lo, hi, 41, 1, &p), CAGD_ERR_DEGREE_OUT_OF_RANGE);
+    CHECK_STATUS(cagd_intervaltri_new(lo, hi, 65, 1, &p), CAGD_ERR_DEGREE_OUT_OF_RANGE);
     CHECK_STATUS(cagd_intervaltri_new(lo, hi, SIZE_MAX, 1, &p), CAGD_ERR_DEGREE_OUT_OF_RANGE);
     memcpy(bad, hi, sizeof bad);
     bad[3] = NAN;
@@ -118,13 +118,13 @@ int cagd_ctest_intervaltri_bad_input(void) {
     CHECK(needed == 6 && buf[0] == -7.0);
     CHECK_STATUS(cagd_intervaltri_reduce(p, 2, 0, &q, NULL), CAGD_ERR_BAD_DEGREE_PAIR);
     CHECK_STATUS(cagd_intervaltri_reduce(p, 1, 1, &q, NULL), CAGD_ERR_BAD_DEGREE_PAIR);
-    CHECK_STATUS(cagd_intervaltri_reduce(p, 1, 41, &q, NULL), CAGD_ERR_DEGREE_OUT_OF_RANGE);
+    CHECK_STATUS(cagd_intervaltri_reduce(p, 1, 65, &q, NULL), CAGD_ERR_DEGREE_OUT_OF_RANGE);
     CHECK_STATUS(cagd_intervaltri_reduce(NULL, 1, 0, &q, NULL), CAGD_ERR_NULL_POINTER);
     CHECK_STATUS(cagd_intervaltri_reduce(p, 1, 0, NULL, NULL), CAGD_ERR_NULL_POINTER);
     CHECK(q == NULL);
     CHECK_STATUS(cagd_intervaltri_contains(p, NULL, 0, &yes), CAGD_ERR_NULL_POINTER);
     CHECK_STATUS(cagd_intervaltri_contains(p, p, 0, NULL), CAGD_ERR_NULL_POINTER);
-    CHECK_STATUS(cagd_intervaltri_contains(p, p, 41, &yes), CAGD_ERR_DEGREE_OUT_OF_RANGE);
+    CHECK_STATUS(cagd_intervaltri_contains(p, p, 65, &yes), CAGD_ERR_DEGREE_OUT_OF_RANGE);
     CHECK_OK(cagd_intervaltri_contains(p, p, 0, &yes));
     CHECK(yes);
     cagd_intervaltri_free(NULL);

@@ -223,6 +223,21 @@ mod tests {
     }
 
     #[test]
+    fn degree_64_fits_and_matches_rationals() {
+        // The largest coefficients (3^64 range) in u128; spot-check rows against BigRational
+        // and that every row sums to its denominator.
+        let e = IntElevation::new(30, 64).unwrap();
+        for (r, row) in e.rows.iter().enumerate().step_by(97) {
+            let s: u128 = row.iter().map(|&(_, x)| x).sum();
+            assert_eq!(s, e.den[r]);
+        }
+        let f = e.to_f64();
+        let r = 1000;
+        let s: f64 = f[r * e.ncols()..(r + 1) * e.ncols()].iter().sum();
+        assert!((s - 1.0).abs() < 1e-13);
+    }
+
+    #[test]
     fn bad_pairs_are_named_errors() {
         assert!(matches!(
             triangle_elevation_matrix(3, 2),

@@ -25,8 +25,11 @@ pub use patch::IntervalTriPatch;
 pub use reduce::reduce_interval_triangle;
 pub use report::{IntervalOptions, IntervalReduction, IntervalReport};
 
-/// The largest degree (input, target or containment degree) of the interval routines.
-pub const MAX_INTERVAL_DEGREE: usize = 40;
+/// The largest degree (input, target or containment degree) of the interval routines:
+/// cagd-core's [`cagd_core::MAX_DEGREE`] (the exact elevation coefficients are trinomials
+/// `<= 3^64`, which fit `u128`). Above degree ~20 the LPs are slow (see
+/// [`reduce_interval_triangle`]).
+pub const MAX_INTERVAL_DEGREE: usize = cagd_core::MAX_DEGREE;
 
 /// The default sampling grid `K` of [`IntervalOptions::sample_grid`] (1 035 points).
 pub const DEFAULT_SAMPLE_GRID: usize = 44;

@@ -32,7 +32,7 @@ const FREE: (f64, f64) = (f64::NEG_INFINITY, f64::INFINITY);
 /// implies pointwise containment of the surfaces (Bernstein functions are non-negative and
 /// sum to 1); the report adds the largest violation found by dense sampling.
 ///
-/// Supported: `0 <= m < n <= MAX_INTERVAL_DEGREE` (40), `n <= N <= 40`, any dimension.
+/// Supported: `0 <= m < n <= MAX_INTERVAL_DEGREE` (64), `n <= N <= 40`, any dimension.
 ///
 /// Time per reduction of a random 3-D interval triangle (release, the project's shared
 /// 2-core machine, `cargo bench -p cagd-reduce --bench interval`; certified, without /
@@ -44,7 +44,7 @@ const FREE: (f64, f64) = (f64::NEG_INFINITY, f64::INFINITY);
 ///
 /// # Errors
 /// [`Error::BadDegreePair`] unless `m < n`, or when `N < n`; [`Error::DegreeOutOfRange`]
-/// for `N > 40`; [`Error::LpInfeasible`] / [`Error::LpUnbounded`] if the solver says so
+/// for `N > 64`; [`Error::LpInfeasible`] / [`Error::LpUnbounded`] if the solver says so
 /// (impossible by SPEC-convert I.2: the LP is feasible and bounded),
 /// [`Error::LpSolverFailed`] (solver failure or caught panic), [`Error::NotCertified`].
 ///

@@ -481,26 +481,53 @@ fn degree_20_to_10_in_three_dimensions() {
 #[test]
 fn adversarial_scales_are_certified() {
     // Far from the origin with tiny widths, zero widths, and a constant coordinate.
-    let cases: [(f64, f64); 5] = [(1e6, 1e-9), (-3e8, 0.0), (0.0, 0.0), (1e-200, 1e-210), (5.0, 1e3)];
+    let cases: [(f64, f64); 5] = [
+        (1e6, 1e-9),
+        (-3e8, 0.0),
+        (0.0, 0.0),
+        (1e-200, 1e-210),
+        (5.0, 1e3),
+    ];
     for (offset, width) in cases {
         for (n, m) in [(3, 1), (5, 4), (6, 2)] {
             let base = pseudo_random(n, 2, (n * 31 + m) as u64);
-            let lo: Vec<f64> = base.lo().iter().map(|x| offset + x * width.max(1e-300)).collect();
-            let mut hi: Vec<f64> = lo.iter().zip(base.hi().iter().zip(base.lo())).map(|(l, (h, b))| l + (h - b) * width).collect();
+            let lo: Vec<f64> = base
+                .lo()
+                .iter()
+                .map(|x| offset + x * width.max(1e-300))
+                .collect();
+            let mut hi: Vec<f64> = lo
+                .iter()
+                .zip(base.hi().iter().zip(base.lo()))
+                .map(|(l, (h, b))| l + (h - b) * width)
+                .collect();
             for (q, h) in hi.iter_mut().enumerate() {
                 if q % 2 == 1 {
                     // A constant second coordinate.
                     *h = offset;
                 }
             }
-            let lo: Vec<f64> = lo.iter().enumerate().map(|(q, &l)| if q % 2 == 1 { offset } else { l }).collect();
+            let lo: Vec<f64> = lo
+                .iter()
+                .enumerate()
+                .map(|(q, &l)| if q % 2 == 1 { offset } else { l })
+                .collect();
             let p = IntervalTriPatch::new(lo, hi, n, 2).unwrap();
             let r = reduce_interval_triangle(&p, &IntervalOptions::new(m)).unwrap();
-            assert!(r.patch.contains(&p, None).unwrap(), "{offset} {width} {n}->{m}");
+            assert!(
+                r.patch.contains(&p, None).unwrap(),
+                "{offset} {width} {n}->{m}"
+            );
             assert!(r.report.max_violation.unwrap() <= 0.0);
             // The constant coordinate stays (nearly) constant: its thickness is the repair.
-            let w1 = (0..tri_count(m)).map(|q| r.patch.hi()[2 * q + 1] - r.patch.lo()[2 * q + 1]).fold(0.0, f64::max);
-            assert!(w1 <= 4.0 * r.report.repair + 1e-15 * offset.abs(), "{w1} {}", r.report.repair);
+            let w1 = (0..tri_count(m))
+                .map(|q| r.patch.hi()[2 * q + 1] - r.patch.lo()[2 * q + 1])
+                .fold(0.0, f64::max);
+            assert!(
+                w1 <= 4.0 * r.report.repair + 1e-15 * offset.abs(),
+                "{w1} {}",
+                r.report.repair
+            );
         }
     }
 }
