@@ -7,7 +7,9 @@
 //! `{"type":"triangle","degree":n,"points":[...]}` (i-major),
 //! `{"type":"bspline-surface","degree":[p,q],"knots_u":[...],"knots_v":[...],
 //! "points":[[[x,y,...],...],...],"weights":[[...],...]}` (`points[i][j]`: `i` along `u`;
-//! weights optional, nested like the points; see [`crate::input_surface`]).
+//! weights optional, nested like the points; see [`crate::input_surface`]),
+//! `{"type":"interval-triangle","degree":n,"lo":[...],"hi":[...]}` (i-major lower and upper
+//! nets; see [`crate::interval_cmd`]).
 //!
 //! Every error names the JSON path of the offending field (`input[2].points[3][1]`).
 

@@ -14,6 +14,10 @@ use crate::{Error, Result};
 
 const FREE: (f64, f64) = (f64::NEG_INFINITY, f64::INFINITY);
 
+/// Round-off allowed between `L_q` and `U_q` of a decoupled answer on unit-size data before
+/// the box counts as empty (SPEC-convert I.2: "if any `L > U`").
+const CROSSING_TOL: f64 = 1e-11;
+
 /// Reduces an interval triangle of degree `n` to the tightest degree-`m` interval triangle
 /// that contains it in the control-box sense (SPEC-convert I.2, seed 004 §2).
 ///
@@ -178,7 +182,11 @@ fn solve_coordinate(
     let l: Vec<f64> = x.iter().map(|v| -v).collect();
     let objective_decoupled = (u.iter().sum::<f64>() - l.iter().sum::<f64>()) * s;
     let back = |v: &[f64]| v.iter().map(|x| t + s * x).collect::<Vec<_>>();
-    if l.iter().zip(&u).all(|(a, b)| a <= b) {
+    // An empty interval is `L_q > U_q` beyond the solver's round-off (the data are of unit
+    // size here); a crossing within it is a touching box (`L_q = U_q` at the exact
+    // optimum), closed by lowering `L_q`, which keeps `A L <= g_lo` (`A >= 0`).
+    if l.iter().zip(&u).all(|(a, b)| a <= &(b + CROSSING_TOL)) {
+        let l: Vec<f64> = l.iter().zip(&u).map(|(a, b)| a.min(*b)).collect();
         return Ok(CoordinateSolution {
             lo: back(&l),
             hi: back(&u),
