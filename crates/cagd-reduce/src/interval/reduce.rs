@@ -36,15 +36,17 @@ const CROSSING_TOL: f64 = 1e-11;
 /// implies pointwise containment of the surfaces (Bernstein functions are non-negative and
 /// sum to 1); the report adds the largest violation found by dense sampling.
 ///
-/// Supported: `0 <= m < n <= MAX_INTERVAL_DEGREE` (64), `n <= N <= 40`, any dimension.
+/// Supported: `0 <= m < n <= MAX_INTERVAL_DEGREE` (64), `n <= N <= 64`, any dimension.
 ///
-/// Time per reduction of a random 3-D interval triangle (release, the project's shared
-/// 2-core machine, `cargo bench -p cagd-reduce --bench interval`; certified, without /
-/// with the 1 035-point sampling; the coupled LP was needed for 10 / 20 / 24 / 24 / 24 of
-/// 24 coordinates): 4 -> 3 (LP 15 x 10) 1.6 / 3.6 ms, 6 -> 5 (28 x 21) 4.7 / 9.6 ms,
-/// 10 -> 5 (66 x 21) 22 / 31 ms, 15 -> 10 (136 x 66) 0.15 / 0.17 s, 20 -> 10 (231 x 66)
-/// 0.33–0.39 s. Nearly all of it is the simplex solver (`microlp` is a sparse solver and
-/// `E` is dense); the exact certification is a few percent.
+/// Time per reduction of a random 3-D interval triangle (release, the project's 2-core
+/// machine shared with other builds, so the two runs below differ by up to 2x;
+/// `cargo bench -p cagd-reduce --bench interval`; certified, without / with the 1 035-point
+/// sampling; the coupled LP was needed for 10 / 20 / 24 / 24 / 24 of 24 coordinates):
+/// 4 -> 3 (LP 15 x 10) 0.9–1.6 / 2.7–3.6 ms, 6 -> 5 (28 x 21) 3.5–4.7 / 5.3–9.6 ms,
+/// 10 -> 5 (66 x 21) 15–22 / 15–31 ms, 15 -> 10 (136 x 66) 75–150 / 100–170 ms,
+/// 20 -> 10 (231 x 66) 0.19–0.39 / 0.29–0.40 s. Nearly all of it is the simplex solver
+/// (`microlp` is a sparse solver and `E` is dense); the exact certification is a few
+/// percent.
 ///
 /// # Errors
 /// [`Error::BadDegreePair`] unless `m < n`, or when `N < n`; [`Error::DegreeOutOfRange`]
