@@ -194,6 +194,33 @@ fn optional_weights(obj: &Value, path: &str, n: usize) -> Result<Option<Vec<f64>
     }
 }
 
+/// Reads an `interval-triangle` object (seed 004; the counts are checked here, the values
+/// by `crate::interval_cmd::build`).
+fn parse_interval(obj: &Value, path: &str) -> Result<RawShape, InputError> {
+    let degree = count(field(obj, path, "degree")?, &format!("{path}.degree"))?;
+    let lo = point_list(field(obj, path, "lo")?, &format!("{path}.lo"))?;
+    let hi = point_list(field(obj, path, "hi")?, &format!("{path}.hi"))?;
+    let expected = (degree + 1).saturating_mul(degree + 2) / 2;
+    for (name, net) in [("lo", &lo), ("hi", &hi)] {
+        if net.len() != expected {
+            return Err(InputError::new(
+                format!("{path}.{name}"),
+                format!(
+                    "has {} points, expected (n + 1)(n + 2) / 2 = {expected}",
+                    net.len()
+                ),
+            ));
+        }
+    }
+    if hi.dim != lo.dim {
+        return Err(InputError::new(
+            format!("{path}.hi"),
+            format!("points have {} coordinates, lo has {}", hi.dim, lo.dim),
+        ));
+    }
+    Ok(RawShape::IntervalTriangle { degree, lo, hi })
+}
+
 fn parse_shape(obj: &Value, path: &str) -> Result<RawShape, InputError> {
     if !obj.is_object() {
         return Err(InputError::new(path, "expected an object"));
@@ -206,7 +233,7 @@ fn parse_shape(obj: &Value, path: &str) -> Result<RawShape, InputError> {
         return crate::input_surface::parse(obj, path);
     }
     if ty == "interval-triangle" {
-        return crate::interval_cmd::parse(obj, path);
+        return parse_interval(obj, path);
     }
     let points = point_list(field(obj, path, "points")?, &format!("{path}.points"))?;
     match ty {

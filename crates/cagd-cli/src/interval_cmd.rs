@@ -6,37 +6,12 @@ use cagd_core::{Error, tri_count};
 use cagd_reduce::{IntervalOptions, IntervalReduction, IntervalTriPatch, reduce_interval_triangle};
 use serde_json::{Value, json};
 
-use crate::args::ReduceArgs;
-use crate::input::{InputError, PointList, RawShape, count, field, point_list};
-use crate::reduce_cmd::{Failure, Output};
-use crate::shape::{Shape, rows};
+use crate::input::{InputError, PointList};
 use crate::svg::{Panel, project};
 
-/// Reads an `interval-triangle` object (the counts are checked here, the values by
-/// [`build`]).
-pub(crate) fn parse(obj: &Value, path: &str) -> Result<RawShape, InputError> {
-    let degree = count(field(obj, path, "degree")?, &format!("{path}.degree"))?;
-    let lo = point_list(field(obj, path, "lo")?, &format!("{path}.lo"))?;
-    let hi = point_list(field(obj, path, "hi")?, &format!("{path}.hi"))?;
-    let expected = (degree + 1).saturating_mul(degree + 2) / 2;
-    for (name, net) in [("lo", &lo), ("hi", &hi)] {
-        if net.len() != expected {
-            return Err(InputError::new(
-                format!("{path}.{name}"),
-                format!(
-                    "has {} points, expected (n + 1)(n + 2) / 2 = {expected}",
-                    net.len()
-                ),
-            ));
-        }
-    }
-    if hi.dim != lo.dim {
-        return Err(InputError::new(
-            format!("{path}.hi"),
-            format!("points have {} coordinates, lo has {}", hi.dim, lo.dim),
-        ));
-    }
-    Ok(RawShape::IntervalTriangle { degree, lo, hi })
+/// A flat row-major buffer as a JSON list of points.
+fn rows(flat: &[f64], dim: usize) -> Value {
+    Value::Array(flat.chunks(dim).map(|p| json!(p)).collect())
 }
 
 /// Validates the nets with cagd-reduce; errors name the offending field.
@@ -92,45 +67,16 @@ pub(crate) fn report_json(r: &IntervalReduction, degree_from: usize) -> Value {
     })
 }
 
-/// `cagd reduce` of one interval triangle.
+/// `cagd reduce` of one interval triangle with `opts`: the output JSON (the shape of
+/// degree `m` with its `"report"`) and the result.
 pub(crate) fn reduce(
     t: &IntervalTriPatch,
-    args: &ReduceArgs,
-    path: &str,
-) -> Result<Output, Failure> {
-    let usage = |flag: &str, message: &str| Failure {
-        path: flag.into(),
-        message: message.into(),
-    };
-    if args.to.1.is_some_and(|n| n != args.to.0) {
-        return Err(usage(
-            "--to",
-            "an interval triangle has one degree: give --to M",
-        ));
-    }
-    if args.method.is_some() || args.tol.is_some() {
-        return Err(usage(
-            "--method",
-            "an interval triangle is reduced by the LP of seed 004 only (no --method / --tol)",
-        ));
-    }
-    let opts = IntervalOptions {
-        containment_degree: args.containment_degree,
-        ..IntervalOptions::new(args.to.0)
-    };
-    let red = reduce_interval_triangle(t, &opts).map_err(|e| Failure {
-        path: path.to_string(),
-        message: e.to_string(),
-    })?;
+    opts: &IntervalOptions,
+) -> cagd_reduce::Result<(Value, IntervalTriPatch)> {
+    let red = reduce_interval_triangle(t, opts)?;
     let mut v = to_json(&red.patch);
     v["report"] = report_json(&red, t.degree());
-    Ok(Output {
-        json: v,
-        pair: Some((
-            Shape::IntervalTriangle(t.clone()),
-            Shape::IntervalTriangle(red.patch),
-        )),
-    })
+    Ok((v, red.patch))
 }
 
 /// The control-net lines of a triangular net (rows along i, j and k), projected.

@@ -63,23 +63,77 @@ fn altered_vectors_fail() {
     assert!(!ok && out.contains("FAIL interval-elevation-2to3"), "{out}");
 }
 
+/// A vector (SPEC-convert §0 form) for `p` reduced to `m` with the given expected boxes.
+fn reduction_vector(
+    p: &cagd_reduce::IntervalTriPatch,
+    m: usize,
+    lo: &[f64],
+    hi: &[f64],
+    t: f64,
+) -> Value {
+    let d = p.dim();
+    let boxes = |l: &[f64], h: &[f64]| -> Vec<Value> {
+        l.chunks(d)
+            .zip(h.chunks(d))
+            .map(|(a, b)| Value::Array(a.iter().zip(b).map(|(x, y)| json!([x, y])).collect()))
+            .collect()
+    };
+    json!({
+        "id": "nonunique-synthetic",
+        "algorithm": "interval_triangle_degree_reduction_lp",
+        "params": {"n": p.degree(), "m": m, "unique": false},
+        "input": {"boxes": boxes(p.lo(), p.hi())},
+        "expected": {"boxes": boxes(lo, hi), "thickness_out": t},
+        "tol": 1e-9
+    })
+}
+
 #[test]
 fn non_unique_rule_accepts_another_optimal_vertex_only() {
-    // Marked non-unique: different expected boxes with the right thickness pass (the
-    // answer is an optimum that contains the input) ...
+    // Find a random 1-D 3 -> 2 case whose optimum is not unique: the vertex enumeration
+    // (seed 004 §3) and the simplex return different optimal vertices, both proper.
+    use cagd_reduce::{IntervalOptions, IntervalTriPatch, reduce_interval_triangle};
+    let mut rng = Rng(0xabcd_ef01);
+    let mut found = None;
+    for _ in 0..400 {
+        let lo: Vec<f64> = (0..10).map(|_| (rng.next() * 8.0).round()).collect();
+        let hi: Vec<f64> = lo.iter().map(|l| l + (rng.next() * 3.0).round()).collect();
+        let p = IntervalTriPatch::new(lo, hi, 3, 1).unwrap();
+        let r = reduce_interval_triangle(&p, &IntervalOptions::new(2)).unwrap();
+        let a = cagd_reduce::reduce_interval_triangle_analytic(&p, 2, None).unwrap();
+        let differs =
+            a.lo.iter()
+                .chain(&a.hi)
+                .zip(r.patch.lo().iter().chain(r.patch.hi()))
+                .any(|(x, y)| (x - y).abs() > 1e-6);
+        if a.proper && !r.report.coupled[0] && differs {
+            found = Some((p, a));
+            break;
+        }
+    }
+    let (p, a) = found.expect("a non-unique 3 -> 2 case among 400 random ones");
     let path = vector_file("nonunique", |vs| {
-        vs.truncate(1);
-        vs[0]["params"]["unique"] = json!(false);
-        vs[0]["expected"]["boxes"][5][0] = json!([0.0, 1.0]);
+        *vs = vec![reduction_vector(&p, 2, &a.lo, &a.hi, a.thickness)]
     });
     let (ok, out) = check(&path);
-    assert!(ok, "{out}");
-    // ... a wrong thickness does not.
-    let path = vector_file("nonunique-bad", |vs| {
-        vs.truncate(1);
-        vs[0]["params"]["unique"] = json!(false);
-        vs[0]["expected"]["boxes"][5][0] = json!([0.0, 1.0]);
-        vs[0]["expected"]["thickness_out"] = json!(3.4);
+    assert!(ok, "another optimal vertex is accepted:\n{out}");
+    // The same vector with one expected bound moved (thickness no longer matches) fails.
+    let mut lo = a.lo.clone();
+    lo[3] -= 0.5;
+    let path = vector_file("nonunique-moved", |vs| {
+        *vs = vec![reduction_vector(&p, 2, &lo, &a.hi, a.thickness)]
+    });
+    let (ok, out) = check(&path);
+    assert!(!ok, "{out}");
+    // Moved so that the thickness still matches but the input is no longer contained.
+    let mut hi = a.hi.clone();
+    let q = (0..hi.len()).find(|&q| lo[q] + 0.5 <= hi[q]).unwrap_or(0);
+    lo[3] += 0.5;
+    lo[q] += 0.25;
+    hi[q] -= 0.0;
+    let t = (hi.iter().sum::<f64>() - lo.iter().sum::<f64>()) / 6.0;
+    let path = vector_file("nonunique-raised", |vs| {
+        *vs = vec![reduction_vector(&p, 2, &lo, &hi, t)]
     });
     let (ok, out) = check(&path);
     assert!(!ok, "{out}");

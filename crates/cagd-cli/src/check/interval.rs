@@ -3,9 +3,9 @@
 //!
 //! Comparison rule of the reduction. A vector whose `params.unique` is `true` is compared
 //! value by value (boxes and every other key of `expected`). Any other vector — marked
-//! non-unique (`params.unique == false`, or an id saying "nonunique" / "non-unique"),
-//! or of unknown uniqueness — passes when every non-box key of `expected` matches by the
-//! tolerance rule AND either the boxes match within the tolerance, or (the optimum is not
+//! non-unique (`params.unique == false`) or of unknown uniqueness (a non-unique vector may
+//! carry no mark other than its id and note) — passes when every non-box key of `expected`
+//! matches by the tolerance rule AND either the boxes match within the tolerance, or (the optimum is not
 //! unique, so another optimal vertex is as good) the thickness equals the expected
 //! thickness within the tolerance, every box is proper (`lo <= hi`) and the result contains
 //! the input in exact arithmetic on the returned doubles (at the vector's containment
@@ -19,7 +19,7 @@ use cagd_reduce::{
 use serde_json::{Map, Value, json};
 
 use super::fields::{matrix_json, points};
-use super::{Outcome, Runner, Vector, compare};
+use super::{Outcome, Rule, Runner, Vector, compare};
 
 /// The family's dispatch table.
 pub(crate) const TABLE: &[(&str, Runner)] = &[
@@ -100,20 +100,9 @@ fn containment_degree(v: &Vector<'_>) -> Result<Option<usize>, String> {
 }
 
 /// Whether the vector says its optimum is unique (`Some(true)`: `params.unique == true`),
-/// not unique (`Some(false)`: `params.unique == false`, or an id saying "nonunique" /
-/// "non-unique"), or nothing.
+/// not unique (`Some(false)`), or nothing.
 fn uniqueness(v: &Vector<'_>) -> Option<bool> {
-    if let Some(u) = v.param("unique").and_then(Value::as_bool) {
-        return Some(u);
-    }
-    let id = v.id.to_ascii_lowercase();
-    if ["non-unique", "nonunique", "not-unique"]
-        .iter()
-        .any(|w| id.contains(w))
-    {
-        return Some(false);
-    }
-    None
+    v.param("unique").and_then(Value::as_bool)
 }
 
 fn run_reduction(v: &Vector<'_>) -> Result<Outcome, String> {
@@ -159,7 +148,7 @@ fn run_reduction(v: &Vector<'_>) -> Result<Outcome, String> {
         .map(|(k, x)| (k.clone(), x.clone()))
         .collect();
     let (mut max_diff, mut detail) = (0.0_f64, String::new());
-    let mut pass = match compare(&got, &Value::Object(others), v.tol) {
+    let mut pass = match compare(&got, &Value::Object(others), v.tol, Rule::Elementwise) {
         Ok(d) => {
             max_diff = d;
             true
@@ -171,7 +160,7 @@ fn run_reduction(v: &Vector<'_>) -> Result<Outcome, String> {
         }
     };
     if let Some(eb) = expected.get("boxes") {
-        match compare(&got["boxes"], eb, v.tol) {
+        match compare(&got["boxes"], eb, v.tol, Rule::Elementwise) {
             Ok(d) => max_diff = max_diff.max(d),
             Err((_, why)) => {
                 let t_exp = expected
@@ -182,11 +171,18 @@ fn run_reduction(v: &Vector<'_>) -> Result<Outcome, String> {
                 let dt = (t - t_exp).abs() / t_exp.abs().max(1.0);
                 let proper = r.patch.lo().iter().zip(r.patch.hi()).all(|(l, h)| l <= h);
                 let contains = r.patch.contains(&p, big).map_err(|e| e.to_string())?;
+                // The expected boxes must be another optimal wrap: proper, of the expected
+                // thickness, containing the input (within the tolerance: they are rounded).
+                let other = expected_is_optimal_wrap(eb, &p, r.patch.degree(), big, t_exp, v.tol)?;
                 max_diff = max_diff.max(dt);
-                if !(dt <= v.tol && proper && contains) {
+                if !(dt <= v.tol && proper && contains && other.is_ok()) {
                     pass = false;
                     detail = format!(
-                        "boxes differ ({why}) and thickness {t} vs {t_exp} (diff {dt:.2e}), proper {proper}, contains {contains}"
+                        "boxes differ ({why}) and thickness {t} vs {t_exp} (diff {dt:.2e}), proper {proper}, \
+                         contains {contains}, expected boxes: {}",
+                        other
+                            .err()
+                            .unwrap_or_else(|| "a valid optimal wrap".to_string())
                     );
                 }
             }
@@ -197,6 +193,80 @@ fn run_reduction(v: &Vector<'_>) -> Result<Outcome, String> {
         pass,
         detail,
     })
+}
+
+/// Whether the expected boxes `eb` are an optimal wrap of `p` at degree `m`: every box
+/// proper, their thickness `t_exp` (relative `tol`), and
+/// `E_{m->N} lo_exp <= E_{n->N} lo + slack`, `E_{m->N} hi_exp >= E_{n->N} hi - slack` with
+/// `slack = tol * max(1, |value|)` (the expected doubles are rounded rationals). `Ok(Err)`
+/// says what fails.
+fn expected_is_optimal_wrap(
+    eb: &Value,
+    p: &IntervalTriPatch,
+    m: usize,
+    big: Option<usize>,
+    t_exp: f64,
+    tol: f64,
+) -> Result<Result<(), String>, String> {
+    let dim = p.dim();
+    let (mut lo, mut hi) = (Vec::new(), Vec::new());
+    for (q, b) in eb
+        .as_array()
+        .ok_or("expected.boxes: not a list")?
+        .iter()
+        .enumerate()
+    {
+        for (c, side) in b
+            .as_array()
+            .ok_or("expected.boxes: not a list of boxes")?
+            .iter()
+            .enumerate()
+        {
+            let pair = side.as_array().filter(|a| a.len() == 2 && c < dim);
+            let pair = pair.ok_or_else(|| format!("expected.boxes[{q}][{c}]: not [lo, hi]"))?;
+            lo.push(bound(&pair[0], "expected.boxes")?);
+            hi.push(bound(&pair[1], "expected.boxes")?);
+        }
+    }
+    if lo.len() != tri_count(m) * dim {
+        return Ok(Err(format!(
+            "{} bounds, expected {}",
+            lo.len(),
+            tri_count(m) * dim
+        )));
+    }
+    if let Some(q) = (0..lo.len()).find(|&q| lo[q] > hi[q]) {
+        return Ok(Err(format!("box {} is empty", q / dim)));
+    }
+    let t: f64 = hi.iter().zip(&lo).map(|(h, l)| h - l).sum::<f64>() / lo.len() as f64;
+    if (t - t_exp).abs() > tol * t_exp.abs().max(1.0) {
+        return Ok(Err(format!("their thickness is {t}, not {t_exp}")));
+    }
+    let n = p.degree();
+    let big = big.unwrap_or(n).max(n);
+    let (eo, ei) = match (
+        triangle_elevation_matrix(m, big),
+        triangle_elevation_matrix(n, big),
+    ) {
+        (Ok(a), Ok(b)) => (a, b),
+        _ => return Ok(Err("degrees out of range".to_string())),
+    };
+    let (rows, nm, nn) = (tri_count(big), tri_count(m), tri_count(n));
+    for c in 0..dim {
+        for r in 0..rows {
+            let dot = |e: &[f64], cols: usize, net: &[f64]| -> f64 {
+                (0..cols).map(|k| e[r * cols + k] * net[k * dim + c]).sum()
+            };
+            let (ol, oh) = (dot(&eo, nm, &lo), dot(&eo, nm, &hi));
+            let (il, ih) = (dot(&ei, nn, p.lo()), dot(&ei, nn, p.hi()));
+            if ol > il + tol * il.abs().max(1.0) || oh < ih - tol * ih.abs().max(1.0) {
+                return Ok(Err(format!(
+                    "they do not contain the input (row {r}, coordinate {c})"
+                )));
+            }
+        }
+    }
+    Ok(Ok(()))
 }
 
 /// Every quantity the library computes, under the names a vector may ask for.

@@ -17,7 +17,6 @@ use num_traits::{Signed, Zero};
 
 use super::MAX_INTERVAL_DEGREE;
 use super::elevation::IntElevation;
-use super::patch::IntervalTriPatch;
 use crate::{Error, Result};
 
 /// Which bound a column is: the lower net must stay below, the upper net above.
@@ -208,30 +207,6 @@ fn row_cmp_exact(a: &[(usize, u128)], x: &[f64], b: &[(usize, u128)], f: &[f64])
     } else {
         Ordering::Less
     }
-}
-
-/// Whether `outer` contains `inner` at degree `big` (both nets elevated to `big`), exactly.
-pub(crate) fn contains_exact(
-    outer: &IntervalTriPatch,
-    inner: &IntervalTriPatch,
-    big: usize,
-) -> Result<bool> {
-    let eo = IntElevation::new(outer.degree(), big)?;
-    let ei = IntElevation::new(inner.degree(), big)?;
-    let cont = Containment {
-        outer: &eo,
-        inner: &ei,
-    };
-    let d = outer.dim();
-    for c in 0..d {
-        let col = |net: &[f64]| net.iter().skip(c).step_by(d).copied().collect::<Vec<_>>();
-        if !cont.holds(&col(outer.lo()), &col(inner.lo()), Side::Lower)
-            || !cont.holds(&col(outer.hi()), &col(inner.hi()), Side::Upper)
-        {
-            return Ok(false);
-        }
-    }
-    Ok(true)
 }
 
 #[cfg(test)]

@@ -9,6 +9,7 @@
 //! - [`reduce_interval_triangle_analytic`]: seed 004 §3's vertex enumeration (test oracle).
 
 mod analytic;
+mod basis;
 mod certify;
 mod elevation;
 mod lp;

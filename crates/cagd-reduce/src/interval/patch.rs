@@ -3,9 +3,9 @@
 use cagd_core::{check_points, tri_count};
 
 use super::MAX_INTERVAL_DEGREE;
-use super::certify::{containment_degree_of, contains_exact};
+use super::basis::basis_values;
+use super::certify::{Containment, Side, containment_degree_of};
 use super::elevation::{IntElevation, check_pair};
-use super::sample::basis_values;
 use crate::{Error, Result};
 
 /// An interval triangular Bézier patch of degree `n` in any dimension: one control box
@@ -182,4 +182,24 @@ impl IntervalTriPatch {
         check_pair(self.degree, big)?;
         contains_exact(self, inner, big)
     }
+}
+
+/// Whether `outer` contains `inner` at degree `big` (both nets elevated to `big`), exactly.
+fn contains_exact(outer: &IntervalTriPatch, inner: &IntervalTriPatch, big: usize) -> Result<bool> {
+    let eo = IntElevation::new(outer.degree(), big)?;
+    let ei = IntElevation::new(inner.degree(), big)?;
+    let cont = Containment {
+        outer: &eo,
+        inner: &ei,
+    };
+    let d = outer.dim();
+    for c in 0..d {
+        let col = |net: &[f64]| net.iter().skip(c).step_by(d).copied().collect::<Vec<_>>();
+        if !cont.holds(&col(outer.lo()), &col(inner.lo()), Side::Lower)
+            || !cont.holds(&col(outer.hi()), &col(inner.hi()), Side::Upper)
+        {
+            return Ok(false);
+        }
+    }
+    Ok(true)
 }

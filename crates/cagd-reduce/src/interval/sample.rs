@@ -4,37 +4,9 @@
 
 use cagd_core::tri_count;
 
-use super::elevation::{tri_indices, trinomial};
+use super::basis::{basis_with, trinomials};
+use super::elevation::tri_indices;
 use super::patch::IntervalTriPatch;
-
-/// Triangular Bernstein values `B^n_ij(u, v)` (`w = 1 - u - v`) in storage order.
-pub(crate) fn basis_values(n: usize, u: f64, v: f64) -> Vec<f64> {
-    basis_with(&trinomials(n), n, u, v)
-}
-
-/// The trinomials `n! / (i! j! k!)` in storage order, as doubles.
-fn trinomials(n: usize) -> Vec<f64> {
-    tri_indices(n)
-        .map(|(i, j)| trinomial(n, i, j) as f64)
-        .collect()
-}
-
-/// [`basis_values`] with the trinomials precomputed.
-fn basis_with(coefs: &[f64], n: usize, u: f64, v: f64) -> Vec<f64> {
-    let w = 1.0 - u - v;
-    let powers = |x: f64| {
-        let mut p = vec![1.0; n + 1];
-        for k in 1..=n {
-            p[k] = p[k - 1] * x;
-        }
-        p
-    };
-    let (pu, pv, pw) = (powers(u), powers(v), powers(w.max(0.0)));
-    tri_indices(n)
-        .zip(coefs)
-        .map(|((i, j), c)| c * pu[i] * pv[j] * pw[n - i - j])
-        .collect()
-}
 
 /// The grid points `(a/K, b/K)`, `a + b <= K`: `(K + 1)(K + 2) / 2` of them.
 pub(crate) fn grid(k: usize) -> impl Iterator<Item = (f64, f64)> {
@@ -90,6 +62,7 @@ pub(crate) fn max_violation(outer: &IntervalTriPatch, inner: &IntervalTriPatch, 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::interval::basis::basis_values;
 
     #[test]
     fn basis_is_a_partition_of_unity_with_corners() {
