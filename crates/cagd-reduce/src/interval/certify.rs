@@ -82,37 +82,79 @@ impl Containment<'_> {
             .fold(f64::NEG_INFINITY, f64::max)
     }
 
-    /// Moves `x` outward by one uniform shift (rows of `E` sum to 1, so a shift `delta`
-    /// moves every `(E x)_alpha` by `delta`) until [`Containment::holds`]; returns the shift
-    /// (0 when it already held). SPEC-convert I.2 post-processing (1).
+    /// The rows that fail, decided exactly.
+    fn failing_rows(&self, x: &[f64], f: &[f64], side: Side) -> Vec<usize> {
+        (0..self.outer.nrows())
+            .filter(|&r| {
+                let ord = row_cmp(&self.outer.rows[r], x, &self.inner.rows[r], f);
+                match side {
+                    Side::Lower => ord == Ordering::Greater,
+                    Side::Upper => ord == Ordering::Less,
+                }
+            })
+            .collect()
+    }
+
+    /// Moves `x` outward until [`Containment::holds`]; returns the largest shift applied (0
+    /// when it already held). SPEC-convert I.2 post-processing (1): rows of `E` sum to 1 and
+    /// `E >= 0`, so shifting every column in the support of a failing row by `delta` moves
+    /// that row by exactly `delta` and every other row only in the safe direction. Only those
+    /// columns move (the spec's uniform shift restricted to where it is needed), by the
+    /// estimated violation plus one rounding unit, doubled until the failing rows hold.
     ///
     /// # Errors
-    /// [`Error::NotCertified`] if no shift up to 2^200 times the first estimate certifies
-    /// (cannot happen for finite data; reported, never hidden).
+    /// [`Error::NotCertified`] if 200 doublings do not certify (cannot happen for finite
+    /// data; reported, never hidden).
     pub(crate) fn repair(&self, x: &mut Vec<f64>, f: &[f64], side: Side) -> Result<f64> {
-        if self.holds(x, f, side) {
-            return Ok(0.0);
-        }
         let scale = x.iter().chain(f).fold(0.0_f64, |m, v| m.max(v.abs()));
-        let estimate = self.violation_f64(x, f, side);
-        let mut delta = estimate.max(0.0) + (scale * f64::EPSILON).max(f64::MIN_POSITIVE);
-        for _ in 0..200 {
-            let cand: Vec<f64> = x
-                .iter()
-                .map(|v| match side {
-                    Side::Lower => v - delta,
-                    Side::Upper => v + delta,
-                })
-                .collect();
-            if cand.iter().all(|v| v.is_finite()) && self.holds(&cand, f, side) {
-                *x = cand;
-                return Ok(delta);
+        let ulp = (scale * f64::EPSILON).max(f64::MIN_POSITIVE);
+        let mut shift = 0.0_f64;
+        for _ in 0..64 {
+            let failing = self.failing_rows(x, f, side);
+            if failing.is_empty() {
+                return Ok(shift);
             }
-            delta *= 2.0;
+            let mut cols = vec![false; x.len()];
+            for &r in &failing {
+                for &(c, _) in &self.outer.rows[r] {
+                    cols[c] = true;
+                }
+            }
+            let estimate = self.violation_f64(x, f, side).max(0.0);
+            let mut delta = estimate + ulp;
+            let mut moved = false;
+            for _ in 0..200 {
+                let cand: Vec<f64> = x
+                    .iter()
+                    .zip(&cols)
+                    .map(|(&v, &m)| match (m, side) {
+                        (false, _) => v,
+                        (true, Side::Lower) => v - delta,
+                        (true, Side::Upper) => v + delta,
+                    })
+                    .collect();
+                let fixed = failing.iter().all(|&r| {
+                    let ord = row_cmp(&self.outer.rows[r], &cand, &self.inner.rows[r], f);
+                    match side {
+                        Side::Lower => ord != Ordering::Greater,
+                        Side::Upper => ord != Ordering::Less,
+                    }
+                });
+                if cand.iter().all(|v| v.is_finite()) && fixed {
+                    *x = cand;
+                    shift = shift.max(delta);
+                    moved = true;
+                    break;
+                }
+                delta *= 2.0;
+            }
+            if !moved {
+                break;
+            }
         }
         Err(Error::NotCertified {
             what: "interval reduction (outward repair)",
-            residual: estimate,
+            residual: self.violation_f64(x, f, side),
         })
     }
 }
