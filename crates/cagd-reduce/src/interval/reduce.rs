@@ -29,7 +29,7 @@ const CROSSING_TOL: f64 = 1e-11;
 /// `L <= U`. The LPs are solved by `microlp` (simplex: a vertex, like the paper's
 /// enumeration) on data moved to the coordinate's centre and scaled to unit size.
 ///
-/// Certification: the answer is moved outward by a uniform shift until
+/// Certification: the control points under the failing rows are moved outward until
 /// `E_{m->N} L <= E_{n->N} f_lo` and `E_{m->N} U >= E_{n->N} f_hi` hold in **exact
 /// arithmetic on the returned doubles** (see [`IntervalTriPatch::contains`]), and `L <= U`
 /// holds; a result that is not certified is never returned. Containment of the control boxes
