@@ -194,6 +194,10 @@ enum CagdStatus
    */
   CAGD_ERR_NOT_PLANAR = 35,
   /**
+   * An interval whose lower bound exceeds its upper bound (an empty box side).
+   */
+  CAGD_ERR_EMPTY_INTERVAL = 30,
+  /**
    * A condition of a seed formula is not met (the message gives the equation number).
    */
   CAGD_ERR_CONDITION_NOT_MET = 40,
@@ -243,6 +247,24 @@ enum CagdStatus
    * Two curves overlap along an arc: their intersection is not a finite set.
    */
   CAGD_ERR_COINCIDENT = 56,
+  /**
+   * The LP solver answered "infeasible" (cannot happen for the interval reduction LP by
+   * SPEC-convert I.2; reported, never hidden).
+   */
+  CAGD_ERR_LP_INFEASIBLE = 60,
+  /**
+   * The LP solver answered "unbounded" (cannot happen for the interval reduction LP by
+   * SPEC-convert I.2; reported, never hidden).
+   */
+  CAGD_ERR_LP_UNBOUNDED = 61,
+  /**
+   * The LP solver failed (internal error, caught panic, non-finite answer).
+   */
+  CAGD_ERR_LP_FAILED = 62,
+  /**
+   * A containment that must be certified could not be certified after outward repair.
+   */
+  CAGD_ERR_NOT_CERTIFIED = 63,
   /**
    * A bug inside cagd was caught at the boundary (a Rust panic); please report it with
    * the message.
@@ -588,6 +610,15 @@ typedef struct CagdCurveList CagdCurveList;
 typedef struct CagdImplicit CagdImplicit;
 
 /**
+ * Opaque handle to an interval triangular Bézier patch of degree `n` (`0..=64`) in `dim`
+ * coordinates: one control box `[lo, hi]` per coordinate for each of the
+ * `(n + 1)(n + 2) / 2` indices `i + j + k = n`, stored i-major (for i in 0..=n, for j in
+ * 0..=n-i) as two nets `lo` and `hi` of `(n + 1)(n + 2) / 2 * dim` doubles. Invariant:
+ * every bound finite and `lo <= hi`. Immutable; release with `cagd_intervaltri_free`.
+ */
+typedef struct CagdIntervalTriPatch CagdIntervalTriPatch;
+
+/**
  * Opaque handle to the pieces of a patch conversion, in the order the conversion defines
  * (see each `cagd_tripatch_to_*` / `cagd_tensorpatch_*` function). Immutable; release
  * with `cagd_patchpiecelist_free`.
@@ -749,6 +780,53 @@ typedef struct CagdReduceOptions {
    */
   int32_t spline_continuity;
 } CagdReduceOptions;
+
+/**
+ * The report of `cagd_intervaltri_reduce` (plain data, written only on `CAGD_OK`).
+ */
+typedef struct CagdIntervalReport {
+  /**
+   * Thickness of the input: the mean box width over boxes and coordinates
+   * (SPEC-convert I.1).
+   */
+  double thickness_in;
+  /**
+   * Thickness of the result.
+   */
+  double thickness_out;
+  /**
+   * `thickness_out / thickness_in`; NaN when the input has thickness 0.
+   */
+  double ratio;
+  /**
+   * Number of coordinates whose decoupled LP optimum had an empty box, so that the
+   * coupled LP (with `L <= U`) was solved (0 = decoupled everywhere).
+   */
+  size_t n_coupled;
+  /**
+   * The largest outward shift of the containment repair (model units; 0 when the
+   * solver's vertex was certified as it was).
+   */
+  double repair;
+  /**
+   * The largest pointwise containment violation found by sampling 1 035 domain points
+   * (`<= 0`: contained at every sample; differences within the rounding bound of the
+   * `f64` evaluation count as 0).
+   */
+  double max_violation;
+  /**
+   * The containment degree `N` of the model solved and certified.
+   */
+  size_t containment_degree;
+  /**
+   * Sum over coordinates of the LP optima `sum U - sum L` (before repair).
+   */
+  double objective;
+  /**
+   * Sum over coordinates of the decoupled LP optima (`<= objective`).
+   */
+  double objective_decoupled;
+} CagdIntervalReport;
 
 #ifdef __cplusplus
 extern "C" {
@@ -2927,6 +3005,215 @@ CagdStatus cagd_implicit_subdivision_matrix(size_t n,
                                             double *out,
                                             size_t out_cap,
                                             size_t *out_needed);
+
+/**
+ * Creates an interval triangle of degree `degree` from its lower and upper nets.
+ *
+ * Parameters:
+ * - `lo`, `hi` (in): `(degree + 1) * (degree + 2) / 2 * dim` doubles each, i-major: box
+ *   `(i, j)` starts at double `(i * (2n + 3 - i) / 2 + j) * dim`; coordinate `c` of the box
+ *   is the interval `[lo[.. + c], hi[.. + c]]`. Borrowed and copied.
+ * - `degree` (in): the degree `n`, `0..=64`.
+ * - `dim` (in): coordinates per box, `>= 1`.
+ * - `patch_out` (out): on `CAGD_OK`, a new handle owned by the caller (release with
+ *   `cagd_intervaltri_free`). Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*patch_out` holds the new patch.
+ * - `CAGD_ERR_NULL_POINTER`: `lo`, `hi` or `patch_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, the length formula overflows, or a pointer
+ *   is misaligned.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
+ * - `CAGD_ERR_NON_FINITE`: a bound is NaN or infinite.
+ * - `CAGD_ERR_EMPTY_INTERVAL`: `lo > hi` for some box and coordinate (the message names
+ *   them).
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `lo` and `hi` must be NULL or point to `(degree + 1) * (degree + 2) / 2 * dim` readable
+ * doubles each; `patch_out` NULL or writable.
+ */
+CagdStatus cagd_intervaltri_new(const double *lo,
+                                const double *hi,
+                                size_t degree,
+                                size_t dim,
+                                struct CagdIntervalTriPatch **patch_out);
+
+/**
+ * Releases an interval triangle. NULL is accepted and ignored (freeing NULL twice is
+ * fine); a non-NULL handle must be released exactly once and not used afterwards.
+ *
+ * Parameters:
+ * - `patch` (in, consumed): a handle from `cagd_intervaltri_new` or
+ *   `cagd_intervaltri_reduce`, or NULL.
+ *
+ * Does not change `cagd_last_error_message()`.
+ *
+ * # Safety
+ * `patch` must be NULL or a live handle created by cagd that is not used afterwards.
+ */
+void cagd_intervaltri_free(struct CagdIntervalTriPatch *patch);
+
+/**
+ * Reads the degree, the dimension and the thickness of an interval triangle.
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `degree_out` (out): on `CAGD_OK`, the degree `n`.
+ * - `dim_out` (out): on `CAGD_OK`, the coordinates per box.
+ * - `thickness_out` (out): on `CAGD_OK`, the thickness (mean box width over boxes and
+ *   coordinates, SPEC-convert I.1).
+ *
+ * Returns:
+ * - `CAGD_OK`: every output is written.
+ * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_intervaltri_shape(const struct CagdIntervalTriPatch *patch,
+                                  size_t *degree_out,
+                                  size_t *dim_out,
+                                  double *thickness_out);
+
+/**
+ * Copies one net of an interval triangle: `upper == false` the lower net, `true` the
+ * upper net, i-major as in `cagd_intervaltri_new`. Call with `out_cap = 0` (and `out` NULL)
+ * to ask the size.
+ *
+ * Parameters:
+ * - `patch` (in): the patch.
+ * - `upper` (in): which net.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
+ *   `(n + 1) * (n + 2) / 2 * dim` doubles hold the net. May be NULL only when
+ *   `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
+ *   `(n + 1) * (n + 2) / 2 * dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the net is in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
+ *   written.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live handle; `out` NULL or `out_cap` writable doubles;
+ * `out_needed` NULL or writable.
+ */
+CagdStatus cagd_intervaltri_net(const struct CagdIntervalTriPatch *patch,
+                                bool upper,
+                                double *out,
+                                size_t out_cap,
+                                size_t *out_needed);
+
+/**
+ * Certified containment: whether `outer` contains `inner` in the control-box sense at
+ * degree `N = max(n_outer, n_inner, containment_degree)`, i.e.
+ * `E_{n_outer->N} lo_outer <= E_{n_inner->N} lo_inner` and the same `>=` for `hi`, decided
+ * in exact arithmetic on the stored doubles. This implies pointwise containment of the
+ * interval surfaces.
+ *
+ * Parameters:
+ * - `outer`, `inner` (in): the patches (same `dim`).
+ * - `containment_degree` (in): `N`; 0 (or anything below the degrees) means the larger
+ *   of the two degrees.
+ * - `contains_out` (out): on `CAGD_OK`, the answer.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*contains_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: any pointer is NULL.
+ * - `CAGD_ERR_DIMENSION_MISMATCH`: the dimensions differ.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `N > 64`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `outer`, `inner` must be NULL or live handles; `contains_out` NULL or writable.
+ */
+CagdStatus cagd_intervaltri_contains(const struct CagdIntervalTriPatch *outer,
+                                     const struct CagdIntervalTriPatch *inner,
+                                     size_t containment_degree,
+                                     bool *contains_out);
+
+/**
+ * Reduces an interval triangle of degree `n` to the tightest degree-`target` interval
+ * triangle that contains it (seed 004's LP, SPEC-convert I.2): per coordinate
+ * `min sum U - sum L` s.t. `E_{m->N} L <= E_{n->N} lo`, `E_{m->N} U >= E_{n->N} hi`,
+ * decoupled first and coupled (`L <= U`) where the decoupled optimum has an empty box;
+ * the answer is moved outward until the containment holds in exact arithmetic on the
+ * returned doubles (never returned uncertified).
+ *
+ * Parameters:
+ * - `patch` (in): the input, degree `n`.
+ * - `target` (in): the degree `m < n`.
+ * - `containment_degree` (in): `N >= n` of the tighter model; 0 means `N = n` (the
+ *   paper's model).
+ * - `patch_out` (out): on `CAGD_OK`, a new handle of degree `target` owned by the caller
+ *   (release with `cagd_intervaltri_free`).
+ * - `report_out` (out): on `CAGD_OK`, the report; may be NULL when not wanted.
+ *
+ * Time (release, 3-D, random boxes, the project's 2-core machine): 4 -> 3 about 4 ms,
+ * 10 -> 5 about 30 ms, 20 -> 10 (LPs of 231 rows x 66 variables) about 0.4 s.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*patch_out` (and `*report_out`) are written.
+ * - `CAGD_ERR_NULL_POINTER`: `patch` or `patch_out` is NULL.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n`, or `0 < containment_degree < n`.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `containment_degree > 64`.
+ * - `CAGD_ERR_LP_INFEASIBLE`, `CAGD_ERR_LP_UNBOUNDED`: the LP solver said so (impossible by
+ *   SPEC-convert I.2; reported, never hidden).
+ * - `CAGD_ERR_LP_FAILED`: the LP solver failed or panicked (caught).
+ * - `CAGD_ERR_NOT_CERTIFIED`: the containment could not be certified after repair.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `patch` must be NULL or a live handle; `patch_out` NULL or writable; `report_out` NULL
+ * or writable.
+ */
+CagdStatus cagd_intervaltri_reduce(const struct CagdIntervalTriPatch *patch,
+                                   size_t target,
+                                   size_t containment_degree,
+                                   struct CagdIntervalTriPatch **patch_out,
+                                   struct CagdIntervalReport *report_out);
+
+/**
+ * The elevation matrix `E_{m->n}` of triangular nets (SPEC-convert I.1; entry
+ * `C(m;b) C(n-m;a-b) / C(n;a)` rounded once), row-major: row `a` = index of the degree-`n`
+ * net, column `b` = index of the degree-`m` net, both i-major. Call with `out_cap = 0` to
+ * ask the size.
+ *
+ * Parameters:
+ * - `m`, `n` (in): degrees, `m <= n <= 64`.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
+ *   `(n+1)(n+2)/2 * (m+1)(m+2)/2` doubles hold the matrix. May be NULL only when
+ *   `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, the size above.
+ *
+ * Returns:
+ * - `CAGD_OK`: the matrix is in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `out_needed` is NULL, or `out` is NULL with `out_cap > 0`.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is too small; only `*out_needed` is written.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `m > n`.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n > 64`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `out` NULL or `out_cap` writable doubles; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_triangle_elevation_matrix(size_t m,
+                                          size_t n,
+                                          double *out,
+                                          size_t out_cap,
+                                          size_t *out_needed);
 
 /**
  * The forward difference `Delta^n P_0 = sum_{i=0..n} (-1)^(n-i) C(n,i) P_i` of a degree-`n`

@@ -52,7 +52,8 @@
 //!   `cagd_curve_exact_degree`, `cagd_curve_reduce_g1_optimal`, `cagd_reduce_operator`,
 //!   `cagd_bspline_reduce` (to a tolerance) and `cagd_bspline_reduce_uniform` (seed 001),
 //!   `cagd_bsplinesurface_reduce`, `cagd_tensorpatch_reduce` / `cagd_tripatch_reduce` and
-//!   their `_to_tolerance` forms. All take one `CagdReduceOptions` (versioned by its
+//!   their `_to_tolerance` forms; `cagd_intervaltri_reduce` (interval triangles, seed 004:
+//!   LP reduction certified to contain its input; handle `CagdIntervalTriPatch`). All take one `CagdReduceOptions` (versioned by its
 //!   leading `struct_size`, filled by `cagd_reduce_options_init`).
 //!
 //! - Patch conversions (SPEC-convert §15.4–15.7), handles in and a `CagdPatchPieceList`
@@ -81,6 +82,8 @@ mod convert_patch;
 mod curve;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod implicit;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod interval;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod invariants;
 #[allow(
@@ -148,6 +151,11 @@ pub use implicit::{
     CAGD_INTERSECTION_STRIDE, CagdImplicit, cagd_curve_implicitize, cagd_curve_intersect,
     cagd_implicit_bezout, cagd_implicit_classify, cagd_implicit_coefficients, cagd_implicit_free,
     cagd_implicit_invert, cagd_implicit_report, cagd_implicit_subdivision_matrix,
+};
+pub use interval::{
+    CagdIntervalReport, CagdIntervalTriPatch, cagd_intervaltri_contains, cagd_intervaltri_free,
+    cagd_intervaltri_net, cagd_intervaltri_new, cagd_intervaltri_reduce, cagd_intervaltri_shape,
+    cagd_triangle_elevation_matrix,
 };
 pub use invariants::{
     cagd_curve_distance, cagd_curve_forward_difference, cagd_tensorpatch_degeneracy,

@@ -55,6 +55,8 @@ pub enum CagdStatus {
     ERR_BAD_DEGREE_PAIR = 27,
     /// An implicitization / intersection input is not a planar (dim = 2) curve.
     ERR_NOT_PLANAR = 35,
+    /// An interval whose lower bound exceeds its upper bound (an empty box side).
+    ERR_EMPTY_INTERVAL = 30,
     /// A condition of a seed formula is not met (the message gives the equation number).
     ERR_CONDITION_NOT_MET = 40,
     /// An iterative or adaptive algorithm could not reach the tolerance.
@@ -83,6 +85,16 @@ pub enum CagdStatus {
     ERR_NOT_ON_CURVE = 55,
     /// Two curves overlap along an arc: their intersection is not a finite set.
     ERR_COINCIDENT = 56,
+    /// The LP solver answered "infeasible" (cannot happen for the interval reduction LP by
+    /// SPEC-convert I.2; reported, never hidden).
+    ERR_LP_INFEASIBLE = 60,
+    /// The LP solver answered "unbounded" (cannot happen for the interval reduction LP by
+    /// SPEC-convert I.2; reported, never hidden).
+    ERR_LP_UNBOUNDED = 61,
+    /// The LP solver failed (internal error, caught panic, non-finite answer).
+    ERR_LP_FAILED = 62,
+    /// A containment that must be certified could not be certified after outward repair.
+    ERR_NOT_CERTIFIED = 63,
     /// A bug inside cagd was caught at the boundary (a Rust panic); please report it with
     /// the message.
     ERR_PANIC = 99,
@@ -118,6 +130,11 @@ impl CagdStatus {
             CagdStatus::ERR_SINGULAR_POINT => c"CAGD_ERR_SINGULAR_POINT",
             CagdStatus::ERR_NOT_ON_CURVE => c"CAGD_ERR_NOT_ON_CURVE",
             CagdStatus::ERR_COINCIDENT => c"CAGD_ERR_COINCIDENT",
+            CagdStatus::ERR_EMPTY_INTERVAL => c"CAGD_ERR_EMPTY_INTERVAL",
+            CagdStatus::ERR_LP_INFEASIBLE => c"CAGD_ERR_LP_INFEASIBLE",
+            CagdStatus::ERR_LP_UNBOUNDED => c"CAGD_ERR_LP_UNBOUNDED",
+            CagdStatus::ERR_LP_FAILED => c"CAGD_ERR_LP_FAILED",
+            CagdStatus::ERR_NOT_CERTIFIED => c"CAGD_ERR_NOT_CERTIFIED",
             CagdStatus::ERR_PANIC => c"CAGD_ERR_PANIC",
         }
     }
@@ -129,7 +146,7 @@ impl CagdStatus {
 }
 
 /// Every status, in numeric order (used by tests and by `cagd_status_name`).
-pub(crate) const ALL_STATUSES: [CagdStatus; 27] = [
+pub(crate) const ALL_STATUSES: [CagdStatus; 32] = [
     CagdStatus::OK,
     CagdStatus::ERR_NULL_POINTER,
     CagdStatus::ERR_BUFFER_TOO_SMALL,
@@ -144,18 +161,23 @@ pub(crate) const ALL_STATUSES: [CagdStatus; 27] = [
     CagdStatus::ERR_DEGREE_OUT_OF_RANGE,
     CagdStatus::ERR_TOO_MANY_CONSTRAINTS,
     CagdStatus::ERR_BAD_DEGREE_PAIR,
+    CagdStatus::ERR_EMPTY_INTERVAL,
     CagdStatus::ERR_NOT_PLANAR,
     CagdStatus::ERR_CONDITION_NOT_MET,
     CagdStatus::ERR_NO_CONVERGENCE,
     CagdStatus::ERR_SINGULAR,
+    CagdStatus::ERR_CONVERSION_CONDITION,
     CagdStatus::ERR_NOT_DEGENERATE,
     CagdStatus::ERR_DEGENERATE_SPLIT,
     CagdStatus::ERR_UNSUPPORTED_TRIM,
-    CagdStatus::ERR_CONVERSION_CONDITION,
     CagdStatus::ERR_BASE_POINT,
     CagdStatus::ERR_SINGULAR_POINT,
     CagdStatus::ERR_NOT_ON_CURVE,
     CagdStatus::ERR_COINCIDENT,
+    CagdStatus::ERR_LP_INFEASIBLE,
+    CagdStatus::ERR_LP_UNBOUNDED,
+    CagdStatus::ERR_LP_FAILED,
+    CagdStatus::ERR_NOT_CERTIFIED,
     CagdStatus::ERR_PANIC,
 ];
 
@@ -192,6 +214,11 @@ pub fn status_of_core(e: &Error) -> CagdStatus {
         Error::SingularPoint { .. } => CagdStatus::ERR_SINGULAR_POINT,
         Error::NotOnCurve { .. } => CagdStatus::ERR_NOT_ON_CURVE,
         Error::Coincident { .. } => CagdStatus::ERR_COINCIDENT,
+        Error::EmptyInterval { .. } => CagdStatus::ERR_EMPTY_INTERVAL,
+        Error::LpInfeasible { .. } => CagdStatus::ERR_LP_INFEASIBLE,
+        Error::LpUnbounded { .. } => CagdStatus::ERR_LP_UNBOUNDED,
+        Error::LpSolverFailed { .. } => CagdStatus::ERR_LP_FAILED,
+        Error::NotCertified { .. } => CagdStatus::ERR_NOT_CERTIFIED,
         _ => CagdStatus::ERR_INVALID_ARGUMENT,
     }
 }
@@ -221,7 +248,7 @@ mod tests {
 
     #[test]
     fn discriminants_are_pinned() {
-        let expected: [(CagdStatus, i32); 27] = [
+        let expected: [(CagdStatus, i32); 32] = [
             (CagdStatus::OK, 0),
             (CagdStatus::ERR_NULL_POINTER, 1),
             (CagdStatus::ERR_BUFFER_TOO_SMALL, 2),
@@ -236,18 +263,23 @@ mod tests {
             (CagdStatus::ERR_DEGREE_OUT_OF_RANGE, 25),
             (CagdStatus::ERR_TOO_MANY_CONSTRAINTS, 26),
             (CagdStatus::ERR_BAD_DEGREE_PAIR, 27),
+            (CagdStatus::ERR_EMPTY_INTERVAL, 30),
             (CagdStatus::ERR_NOT_PLANAR, 35),
             (CagdStatus::ERR_CONDITION_NOT_MET, 40),
             (CagdStatus::ERR_NO_CONVERGENCE, 41),
             (CagdStatus::ERR_SINGULAR, 42),
+            (CagdStatus::ERR_CONVERSION_CONDITION, 43),
             (CagdStatus::ERR_NOT_DEGENERATE, 50),
             (CagdStatus::ERR_DEGENERATE_SPLIT, 51),
             (CagdStatus::ERR_UNSUPPORTED_TRIM, 52),
-            (CagdStatus::ERR_CONVERSION_CONDITION, 43),
             (CagdStatus::ERR_BASE_POINT, 53),
             (CagdStatus::ERR_SINGULAR_POINT, 54),
             (CagdStatus::ERR_NOT_ON_CURVE, 55),
             (CagdStatus::ERR_COINCIDENT, 56),
+            (CagdStatus::ERR_LP_INFEASIBLE, 60),
+            (CagdStatus::ERR_LP_UNBOUNDED, 61),
+            (CagdStatus::ERR_LP_FAILED, 62),
+            (CagdStatus::ERR_NOT_CERTIFIED, 63),
             (CagdStatus::ERR_PANIC, 99),
         ];
         for (i, (s, code)) in expected.into_iter().enumerate() {
@@ -421,6 +453,31 @@ mod tests {
                 S::ERR_NOT_ON_CURVE,
             ),
             (Error::Coincident { s0: 0.0, s1: 1.0 }, S::ERR_COINCIDENT),
+            (
+                Error::EmptyInterval {
+                    index: 2,
+                    coord: 1,
+                    lo: 1.0,
+                    hi: 0.0,
+                },
+                S::ERR_EMPTY_INTERVAL,
+            ),
+            (Error::LpInfeasible { what: "x" }, S::ERR_LP_INFEASIBLE),
+            (Error::LpUnbounded { what: "x" }, S::ERR_LP_UNBOUNDED),
+            (
+                Error::LpSolverFailed {
+                    what: "x",
+                    why: "panic".to_string(),
+                },
+                S::ERR_LP_FAILED,
+            ),
+            (
+                Error::NotCertified {
+                    what: "x",
+                    residual: 1.0,
+                },
+                S::ERR_NOT_CERTIFIED,
+            ),
         ];
         for (e, s) in cases {
             assert_eq!(status_of_core(&e), s, "{e:?}");

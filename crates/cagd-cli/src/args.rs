@@ -10,7 +10,7 @@ pub(crate) const USAGE: &str = "\
 usage:
   cagd reduce --to M[,N] [--method NAME] [--r R] [--p P] [--tol T] [--continuity K]
               [--merge exact|lossy] [--strategy fit|segments|piegl-tiller-1995]
-              [-i FILE] [-o FILE] [--svg FILE]
+              [--containment-degree N] [-i FILE] [-o FILE] [--svg FILE]
   cagd merge [--continuity K] [--tol T] [-i FILE] [-o FILE]
   cagd convert --to bezier|nurbs [--standard-form] [--tol T] [-i FILE] [-o FILE] [--svg FILE]
   cagd convert (--to rectangle|rectangles3|triangles|triangle [--inner U,V] [--edges G,K,H]
@@ -38,6 +38,9 @@ reduced patch by patch (l2 or chebyshev, C^K across knot lines with --continuity
 --tol T by the global fit direction by direction (--strategy fit, default; knots added and
 removed as for curves) or, with --strategy segments (the default when --method is given),
 patch by patch with every knot span split until the certified bound is within T.
+An interval triangle ({\"type\":\"interval-triangle\",\"degree\":n,\"lo\":[...],\"hi\":[...]},
+i-major) is wrapped by the tightest degree-M interval triangle of seed 004's LP, certified
+to contain it; --containment-degree N (>= n) asks the tighter model of SPEC-convert I.2.
 
 merge reads one object {\"type\":\"beziers\",\"segments\":[[[x,y,...],...],...]} (optional
 \"weights\": one list or null per segment; optional \"breaks\": count + 1 increasing values,
@@ -102,6 +105,8 @@ pub(crate) struct ReduceArgs {
     pub(crate) svg: Option<PathBuf>,
     pub(crate) lossy_merge: bool,
     pub(crate) strategy: Option<String>,
+    /// `--containment-degree N` of an interval-triangle reduction.
+    pub(crate) containment_degree: Option<usize>,
 }
 
 impl ReduceArgs {
@@ -332,6 +337,7 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
                 svg: None,
                 lossy_merge: false,
                 strategy: None,
+                containment_degree: None,
             };
             let mut have_to = false;
             while let Some(a) = it.next() {
@@ -353,6 +359,9 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
                     "-i" | "--input" => r.input = Some(PathBuf::from(value(&mut it, a)?)),
                     "-o" | "--output" => r.output = Some(PathBuf::from(value(&mut it, a)?)),
                     "--svg" => r.svg = Some(PathBuf::from(value(&mut it, a)?)),
+                    "--containment-degree" => {
+                        r.containment_degree = Some(parse_num(value(&mut it, a)?, a)?);
+                    }
                     "--merge" => {
                         r.lossy_merge = match value(&mut it, a)? {
                             "exact" => false,

@@ -7,7 +7,9 @@
 //! `{"type":"triangle","degree":n,"points":[...]}` (i-major),
 //! `{"type":"bspline-surface","degree":[p,q],"knots_u":[...],"knots_v":[...],
 //! "points":[[[x,y,...],...],...],"weights":[[...],...]}` (`points[i][j]`: `i` along `u`;
-//! weights optional, nested like the points; see [`crate::input_surface`]).
+//! weights optional, nested like the points; see [`crate::input_surface`]),
+//! `{"type":"interval-triangle","degree":n,"lo":[...],"hi":[...]}` (i-major lower and upper
+//! nets; see [`crate::interval_cmd`]).
 //!
 //! Every error names the JSON path of the offending field (`input[2].points[3][1]`).
 
@@ -70,6 +72,12 @@ pub(crate) enum RawShape {
     Triangle {
         degree: usize,
         points: PointList,
+    },
+    /// An interval triangle (seed 004): degree and the lower / upper nets.
+    IntervalTriangle {
+        degree: usize,
+        lo: PointList,
+        hi: PointList,
     },
     /// A B-spline / NURBS surface: points flat and i-major over `counts = (n_u, n_v)`.
     BSplineSurface {
@@ -186,6 +194,33 @@ fn optional_weights(obj: &Value, path: &str, n: usize) -> Result<Option<Vec<f64>
     }
 }
 
+/// Reads an `interval-triangle` object (seed 004; the counts are checked here, the values
+/// by `crate::interval_cmd::build`).
+fn parse_interval(obj: &Value, path: &str) -> Result<RawShape, InputError> {
+    let degree = count(field(obj, path, "degree")?, &format!("{path}.degree"))?;
+    let lo = point_list(field(obj, path, "lo")?, &format!("{path}.lo"))?;
+    let hi = point_list(field(obj, path, "hi")?, &format!("{path}.hi"))?;
+    let expected = (degree + 1).saturating_mul(degree + 2) / 2;
+    for (name, net) in [("lo", &lo), ("hi", &hi)] {
+        if net.len() != expected {
+            return Err(InputError::new(
+                format!("{path}.{name}"),
+                format!(
+                    "has {} points, expected (n + 1)(n + 2) / 2 = {expected}",
+                    net.len()
+                ),
+            ));
+        }
+    }
+    if hi.dim != lo.dim {
+        return Err(InputError::new(
+            format!("{path}.hi"),
+            format!("points have {} coordinates, lo has {}", hi.dim, lo.dim),
+        ));
+    }
+    Ok(RawShape::IntervalTriangle { degree, lo, hi })
+}
+
 fn parse_shape(obj: &Value, path: &str) -> Result<RawShape, InputError> {
     if !obj.is_object() {
         return Err(InputError::new(path, "expected an object"));
@@ -196,6 +231,9 @@ fn parse_shape(obj: &Value, path: &str) -> Result<RawShape, InputError> {
         .ok_or_else(|| InputError::new(format!("{path}.type"), "expected a string"))?;
     if ty == "bspline-surface" {
         return crate::input_surface::parse(obj, path);
+    }
+    if ty == "interval-triangle" {
+        return parse_interval(obj, path);
     }
     let points = point_list(field(obj, path, "points")?, &format!("{path}.points"))?;
     match ty {

@@ -109,6 +109,9 @@ pub(crate) fn panels(title: &str, input: &Shape, output: &Shape) -> Vec<Panel> {
                 false,
             )]
         }
+        (Shape::IntervalTriangle(a), Shape::IntervalTriangle(b)) => {
+            crate::interval_cmd::panels(title, a, b)
+        }
         _ => Vec::new(),
     }
 }

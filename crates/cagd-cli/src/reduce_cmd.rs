@@ -210,6 +210,31 @@ pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<O
                     pair: result.map(|r| (shape.clone(), r)),
                 });
             }
+            Shape::IntervalTriangle(t) => {
+                if args.to.1.is_some_and(|n| n != args.to.0) {
+                    return Err(Failure {
+                        path: "--to".into(),
+                        message: "an interval triangle has one degree: give --to M".into(),
+                    });
+                }
+                if args.method.is_some() || args.tol.is_some() {
+                    return Err(Failure {
+                        path: "--method".into(),
+                        message: "an interval triangle is reduced by the LP of seed 004 only \
+                                  (no --method / --tol)"
+                            .into(),
+                    });
+                }
+                let opts = cagd_reduce::IntervalOptions {
+                    containment_degree: args.containment_degree,
+                    ..cagd_reduce::IntervalOptions::new(args.to.0)
+                };
+                let (json, result) = crate::interval_cmd::reduce(t, &opts).map_err(fail)?;
+                out.push(Output {
+                    json,
+                    pair: Some((shape.clone(), Shape::IntervalTriangle(result))),
+                });
+            }
             Shape::BSplineSurface(s) => {
                 let (json, result) = crate::surface_cmd::reduce(s, args, path)?;
                 out.push(Output {

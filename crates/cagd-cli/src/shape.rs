@@ -1,6 +1,7 @@
 //! Validated shapes (cagd-core objects) built from the raw JSON input, and their JSON output.
 
 use cagd_core::{BSplineCurve, BSplineSurface, BezierCurve, Error, TensorPatch, TriPatch};
+use cagd_reduce::IntervalTriPatch;
 use serde_json::{Value, json};
 
 use crate::input::{InputError, PointList, RawShape};
@@ -13,6 +14,7 @@ pub(crate) enum Shape {
     Tensor(TensorPatch),
     Triangle(TriPatch),
     BSplineSurface(BSplineSurface),
+    IntervalTriangle(IntervalTriPatch),
 }
 
 /// Turns a cagd-core validation error into an input error naming the JSON field.
@@ -65,6 +67,9 @@ impl Shape {
                 };
                 Shape::BSpline(c.map_err(|e| locate(path, &e))?)
             }
+            RawShape::IntervalTriangle { degree, lo, hi } => {
+                Shape::IntervalTriangle(crate::interval_cmd::build(degree, lo, hi, path)?)
+            }
             RawShape::BSplineSurface {
                 degree,
                 knots_u,
@@ -114,6 +119,7 @@ impl Shape {
                 json!({"type": "triangle", "degree": t.degree(), "points": rows(t.points(), t.dim())})
             }
             Shape::BSplineSurface(s) => crate::surface_shape::to_json(s),
+            Shape::IntervalTriangle(t) => crate::interval_cmd::to_json(t),
         }
     }
 }

@@ -235,6 +235,46 @@ pub enum Error {
         /// End of the overlap on the first curve (parameter).
         s1: f64,
     },
+    /// An interval (box side) whose lower bound exceeds its upper bound (seed 004 §1).
+    #[error("box {index} coordinate {coord}: lo = {lo} > hi = {hi} (an empty interval)")]
+    EmptyInterval {
+        /// Index of the control box.
+        index: usize,
+        /// Index of the coordinate within the box.
+        coord: usize,
+        /// The lower bound given.
+        lo: f64,
+        /// The upper bound given.
+        hi: f64,
+    },
+    /// The LP solver answered that a linear program is infeasible.
+    #[error("the linear program of {what} is infeasible (solver answer)")]
+    LpInfeasible {
+        /// Which linear program.
+        what: &'static str,
+    },
+    /// The LP solver answered that a linear program is unbounded.
+    #[error("the linear program of {what} is unbounded (solver answer)")]
+    LpUnbounded {
+        /// Which linear program.
+        what: &'static str,
+    },
+    /// The LP solver failed (an internal error, a panic caught, a non-finite answer).
+    #[error("the LP solver failed on {what}: {why}")]
+    LpSolverFailed {
+        /// Which linear program.
+        what: &'static str,
+        /// The solver's message.
+        why: String,
+    },
+    /// A containment that must be certified could not be (after outward repair).
+    #[error("containment of {what} could not be certified (residual {residual})")]
+    NotCertified {
+        /// What was to be certified.
+        what: &'static str,
+        /// The largest residual left (in model units).
+        residual: f64,
+    },
 }
 
 /// `Result` with [`Error`].

@@ -150,6 +150,7 @@
 mod bezier;
 mod bspline;
 mod exact;
+mod interval;
 mod patch;
 
 pub use bezier::{
@@ -167,6 +168,11 @@ pub use bspline::{
     spline_max_deviation,
 };
 pub use cagd_core::{Error, Result};
+pub use interval::{
+    AnalyticOptimum, DEFAULT_SAMPLE_GRID, IntervalOptions, IntervalReduction, IntervalReport,
+    IntervalTriPatch, MAX_ANALYTIC_BASES, MAX_INTERVAL_DEGREE, reduce_interval_triangle,
+    reduce_interval_triangle_analytic, triangle_elevation_matrix, triangle_elevation_matrix_exact,
+};
 pub use patch::{
     MAX_SUBDIVISION_LEVEL, PatchConstraint, PatchOptions, PatchReduction, PatchReport,
     TensorMethod, TensorPiece, TriMethod, TriOptions, TriPiece, TriReduction, reduce_tensor,

@@ -40,6 +40,10 @@ macro_rules! c_tests {
 }
 
 c_tests![
+    // c/interval.c
+    intervaltri_example_1,
+    intervaltri_elevation_matrix,
+    intervaltri_bad_input,
     // c/status.c
     status_names,
     last_error_message,

@@ -14,6 +14,7 @@ mod convert_nurbs;
 mod convert_patch;
 mod fields;
 mod implicit;
+mod interval;
 mod reduce;
 
 use std::path::Path;
@@ -54,6 +55,7 @@ const TABLES: &[(&[(&str, Runner)], Rule)] = &[
     (convert_nurbs::TABLE, Rule::Elementwise),
     (convert_patch::TABLE, Rule::Elementwise),
     (implicit::TABLE, Rule::Elementwise),
+    (interval::TABLE, Rule::Elementwise),
 ];
 
 /// The runner of `algorithm` and its comparison rule, if any table knows it.
