@@ -180,6 +180,7 @@ mod patch_tolerance;
 mod patch_tri;
 mod patch_tri_l2;
 mod piecewise;
+mod rational_to_polynomial;
 mod reduce;
 mod tolerance;
 #[cfg(test)]
@@ -213,6 +214,18 @@ pub use patch_tolerance::{
 };
 pub use patch_tri::{reduce_triangle, tri_perturbation_matrix};
 pub use piecewise::{PiecewiseReduction, PiecewiseReport, ReducedPiece};
+pub use rational_to_polynomial::{
+    PolynomialReduction, PolynomialReport, PolynomialSurfaceReduction,
+    rational_surface_to_polynomial, rational_to_polynomial,
+};
 pub use reduce::{ErrorSpace, ReduceOptions, Reduction, Report, reduce, reduce_with};
 pub use tolerance::{DEFAULT_MAX_DEPTH, MAX_PIECES, ToleranceOptions, reduce_to_tolerance};
 pub use wn_table::perturbation_error_factor;
+
+// Crate-internal items shared with `rational_to_polynomial` (imported through the root).
+use banded_lsq::BandedLsq;
+use bspline_fit::SpanBound;
+use bspline_global::splits;
+use bspline_knots::{LocalBounds, Raw};
+use bspline_reduce::order_at;
+use bspline_surface_reduce::sampled_error;
