@@ -45,7 +45,9 @@
 //!   `cagd_curve_exact_degree`, `cagd_curve_reduce_g1_optimal`, `cagd_reduce_operator`,
 //!   `cagd_bspline_reduce` (to a tolerance) and `cagd_bspline_reduce_uniform` (seed 001),
 //!   `cagd_bsplinesurface_reduce`, `cagd_tensorpatch_reduce` / `cagd_tripatch_reduce` and
-//!   their `_to_tolerance` forms. All take one `CagdReduceOptions` (versioned by its
+//!   their `_to_tolerance` forms; `cagd_bspline_to_polynomial` /
+//!   `cagd_bsplinesurface_to_polynomial` (NURBS to polynomial within a tolerance). The
+//!   reductions take one `CagdReduceOptions` (versioned by its
 //!   leading `struct_size`, filled by `cagd_reduce_options_init`).
 //!
 //! ## Supported range and accuracy
@@ -87,6 +89,8 @@ mod matrices;
 mod patch_list;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod patch_reduce;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod rational_to_polynomial;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod reduce;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
@@ -162,6 +166,7 @@ pub use patch_reduce::{
     cagd_report_patch, cagd_tensorpatch_reduce, cagd_tensorpatch_reduce_to_tolerance,
     cagd_tripatch_reduce, cagd_tripatch_reduce_to_tolerance,
 };
+pub use rational_to_polynomial::{cagd_bspline_to_polynomial, cagd_bsplinesurface_to_polynomial};
 pub use reduce::{cagd_curve_reduce, cagd_curve_reduce_batch};
 pub use reduce_extra::{
     CAGD_EXACT_DEGREE_REL_TOL, cagd_curve_exact_degree, cagd_curve_reduce_exact,

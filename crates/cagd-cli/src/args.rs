@@ -9,6 +9,7 @@ usage:
   cagd reduce --to M[,N] [--method NAME] [--r R] [--p P] [--tol T] [--continuity K]
               [--merge exact|lossy] [--strategy fit|segments|piegl-tiller-1995]
               [-i FILE] [-o FILE] [--svg FILE]
+  cagd reduce --polynomial --tol T [--to M[,N]] [-i FILE] [-o FILE] [--svg FILE]
   cagd merge [--continuity K] [--tol T] [-i FILE] [-o FILE]
   cagd demo [--out DIR]
   cagd check FILE...
@@ -30,6 +31,13 @@ reduced patch by patch (l2 or chebyshev, C^K across knot lines with --continuity
 --tol T by the global fit direction by direction (--strategy fit, default; knots added and
 removed as for curves) or, with --strategy segments (the default when --method is given),
 patch by patch with every knot span split until the certified bound is within T.
+
+reduce --polynomial --tol T turns a NURBS curve (\"bspline\" with \"weights\") or surface
+(\"bspline-surface\") into a polynomial one of degree <= M (default: the input's degree; M
+may equal it, be lower — reduce and drop the weights in one pass — or higher) within the
+certified bound T, keeping the continuity the input has at each knot (C^min(k, M-1) where
+it is C^k); output: a \"bspline\" / \"bspline-surface\" without weights. Equal weights are
+recognised exactly (the same control points, no spans added).
 
 merge reads one object {\"type\":\"beziers\",\"segments\":[[[x,y,...],...],...]} (optional
 \"weights\": one list or null per segment; optional \"breaks\": count + 1 increasing values,
@@ -62,6 +70,9 @@ pub(crate) struct ReduceArgs {
     pub(crate) svg: Option<PathBuf>,
     pub(crate) lossy_merge: bool,
     pub(crate) strategy: Option<String>,
+    /// `--polynomial`: rational to polynomial within `--tol`; `to == (0, None)` when `--to`
+    /// is not given (the input's degree).
+    pub(crate) polynomial: bool,
 }
 
 impl ReduceArgs {
@@ -179,6 +190,7 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
                 svg: None,
                 lossy_merge: false,
                 strategy: None,
+                polynomial: false,
             };
             let mut have_to = false;
             while let Some(a) = it.next() {
@@ -209,8 +221,12 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
                             }
                         }
                     }
+                    "--polynomial" => r.polynomial = true,
                     other => return Err(format!("reduce: unknown argument {other:?}")),
                 }
+            }
+            if r.polynomial {
+                return check_polynomial(r, have_to).map(Command::Reduce);
             }
             if !have_to {
                 return Err("reduce: --to M is required".to_string());
@@ -219,6 +235,30 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
         }
         other => Err(format!("unknown command {other:?}")),
     }
+}
+
+/// The arguments of `reduce --polynomial`: `--tol` required, `--to` optional (not 0), no
+/// method, strategy, continuity or merge options.
+fn check_polynomial(r: ReduceArgs, have_to: bool) -> Result<ReduceArgs, String> {
+    if r.tol.is_none() {
+        return Err("reduce --polynomial: --tol T is required".to_string());
+    }
+    if have_to && (r.to.0 == 0 || r.to.1 == Some(0)) {
+        return Err("reduce --polynomial: --to degrees must be at least 1".to_string());
+    }
+    let extra = [
+        (r.method.is_some(), "--method"),
+        (r.strategy.is_some(), "--strategy"),
+        (r.r.is_some() || r.p.is_some(), "--r/--p"),
+        (r.continuity.is_some(), "--continuity"),
+        (r.lossy_merge, "--merge"),
+    ];
+    if let Some((_, name)) = extra.iter().find(|(given, _)| *given) {
+        return Err(format!(
+            "reduce --polynomial: {name} does not apply (the continuity kept is the input's)"
+        ));
+    }
+    Ok(r)
 }
 
 #[cfg(test)]

@@ -21,6 +21,7 @@ mod merge_cmd;
 mod methods;
 mod patch_cmd;
 mod picture;
+mod polynomial_cmd;
 mod reduce_cmd;
 mod shape;
 mod spline_cmd;

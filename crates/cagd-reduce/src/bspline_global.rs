@@ -95,7 +95,7 @@ pub(crate) fn initial_knots(
 /// # Errors
 /// [`Error::ConditionNotMet`] when a span's rounding floor is above half the budget or the
 /// span is too short to split.
-pub(crate) fn splits(
+fn splits(
     bounds: &[SpanBound],
     budget: f64,
     (threshold, target): (f64, f64),

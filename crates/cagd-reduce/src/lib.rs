@@ -225,7 +225,6 @@ pub use wn_table::perturbation_error_factor;
 // Crate-internal items shared with `rational_to_polynomial` (imported through the root).
 use banded_lsq::BandedLsq;
 use bspline_fit::SpanBound;
-use bspline_global::splits;
 use bspline_knots::{LocalBounds, Raw};
 use bspline_reduce::order_at;
 use bspline_surface_reduce::sampled_error;

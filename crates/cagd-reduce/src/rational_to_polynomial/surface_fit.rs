@@ -4,8 +4,9 @@
 //! collocation matrices, so the least-squares solution is separable: a banded Givens QR in
 //! `u` with every `(v node, coordinate)` as a right-hand side, then one in `v` with every
 //! `(u point, coordinate)` (no normal equations). Certified per patch by
-//! [`super::bound::patch_bound`]; patches above the budget have their `u` and `v` knot
-//! intervals split (the curve fit's split rule) and the fit is repeated.
+//! [`super::bound::patch_bound`]; where patches are above the budget, the knots of both
+//! directions are placed anew by [`refine`] (on the worst patch bound of each knot
+//! interval) and the fit is repeated.
 
 use cagd_core::kernel::de_casteljau;
 use cagd_core::{BSplineSurface, Error, Result, basis_functions, gauss_legendre};
@@ -13,7 +14,8 @@ use cagd_core::{BSplineSurface, Error, Result, basis_functions, gauss_legendre};
 use super::bound::patch_bound;
 use super::curve_fit::nodes_per_span;
 use super::pieces::restrict_bezier;
-use crate::{BandedLsq, SpanBound, splits};
+use super::refine::refine;
+use crate::{BandedLsq, SpanBound};
 
 /// Most refine-and-refit rounds, and most patches.
 const MAX_ROUNDS: usize = 40;
@@ -235,7 +237,7 @@ pub(crate) fn patch_bounds(
     Ok(out)
 }
 
-/// The worst patch bound per knot interval of one direction, as spans for [`splits`].
+/// The worst patch bound per knot interval of one direction, as spans for [`refine`].
 fn direction_spans(bounds: &[PatchBound], by_u: bool) -> Vec<SpanBound> {
     let mut out: Vec<SpanBound> = Vec::new();
     for x in bounds {
@@ -265,10 +267,11 @@ fn direction_spans(bounds: &[PatchBound], by_u: bool) -> Vec<SpanBound> {
 pub(crate) fn fit_to_budget(
     src: &RationalPatches,
     m: (usize, usize),
-    (mut ku, mut kv): (Vec<f64>, Vec<f64>),
+    (su, sv): (Vec<f64>, Vec<f64>),
     budget: f64,
 ) -> Result<(Vec<f64>, Vec<f64>, Vec<f64>, Vec<PatchBound>)> {
     let mut rounds = 0;
+    let (mut ku, mut kv) = (su.clone(), sv.clone());
     loop {
         let net = fit(src, m, (&ku, &kv))?;
         let (nu, nv) = (ku.len() - m.0 - 1, kv.len() - m.1 - 1);
@@ -279,28 +282,32 @@ pub(crate) fn fit_to_budget(
             return Ok((ku, kv, net, bounds));
         }
         rounds += 1;
-        let target = if rounds >= 2 { 0.9 * budget } else { budget };
-        let new_u = splits(
+        let target = 0.95 * budget;
+        let new_u = refine(
             &direction_spans(&bounds, true),
+            &src.breaks_u,
             budget,
-            (budget, target),
+            target,
             m.0,
         )?;
-        let new_v = splits(
+        let new_v = refine(
             &direction_spans(&bounds, false),
+            &src.breaks_v,
             budget,
-            (budget, target),
+            target,
             m.1,
         )?;
-        let count = (nu + new_u.len()) * (nv + new_v.len());
+        let count = (su.len() + new_u.len()) * (sv.len() + new_v.len());
         if rounds > MAX_ROUNDS || count > MAX_PATCHES {
             return Err(Error::ConditionNotMet {
                 eq: "tolerance",
                 why: "the refinement needs too many patches",
             });
         }
+        ku.clone_from(&su);
         ku.extend(new_u);
         ku.sort_by(f64::total_cmp);
+        kv.clone_from(&sv);
         kv.extend(new_v);
         kv.sort_by(f64::total_cmp);
     }
