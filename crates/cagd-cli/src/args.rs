@@ -284,6 +284,26 @@ mod tests {
     }
 
     #[test]
+    fn polynomial_arguments() {
+        let Command::Reduce(r) = parse(&args("reduce --polynomial --tol 1e-3")).unwrap() else {
+            panic!("not reduce");
+        };
+        assert!(r.polynomial && r.to == (0, None) && r.tol == Some(1e-3));
+        let Command::Reduce(r) = parse(&args("reduce --polynomial --to 3 --tol 1e-3")).unwrap()
+        else {
+            panic!("not reduce");
+        };
+        assert_eq!(r.to, (3, None));
+        for bad in [
+            "reduce --polynomial",
+            "reduce --polynomial --tol 1e-3 --to 0",
+            "reduce --polynomial --tol 1e-3 --strategy fit",
+        ] {
+            assert!(parse(&args(bad)).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
     fn merge_arguments() {
         let Command::Merge(m) =
             parse(&args("merge --continuity 1 --tol 1e-6 -i a.json -o b.json")).unwrap()

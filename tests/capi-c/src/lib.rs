@@ -124,6 +124,9 @@ c_tests![
     tensorpatch_ops,
     tripatch_ops,
     patch_ops_bad_input,
+    // c/rational_to_polynomial.c
+    rational_to_polynomial_half_circle,
+    rational_to_polynomial_equal_weights_and_errors,
     // cpp/header_compiles.cpp
     cpp_header,
 ];
