@@ -78,8 +78,8 @@ pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<O
                     "spans_in": r.spans_in,
                     "spans_out": r.spans_out,
                     "pieces_before_knot_removal": r.pieces,
-                    "continuity_u": pairs(&r.continuity.0),
-                    "continuity_v": pairs(&r.continuity.1),
+                    "continuity_u": pairs(&r.continuity_u),
+                    "continuity_v": pairs(&r.continuity_v),
                 });
                 out.push(Output {
                     json: v,

@@ -117,8 +117,8 @@ pub(crate) fn target_degree(p: usize, m: Option<usize>) -> Result<usize> {
 /// Converts a NURBS curve `C = A / W` of degree `p` to a polynomial B-spline of degree
 /// `<= m` (`m` defaults to `p`; any `1 <= m <= 64`, so a conic may become cubic) whose
 /// certified distance to `C` is within `tol`, keeping `C^min(p - s, m - 1)` at every input
-/// knot of multiplicity `s` (see the [module docs](self) for the method; ours, on the
-/// machinery of [`crate::reduce_bspline`]).
+/// knot of multiplicity `s` (the method: the crate docs, "Rational to polynomial"; ours,
+/// on the machinery of [`crate::reduce_bspline`]).
 ///
 /// Weights all equal (or no weights) are recognised exactly: the polynomial spline of the
 /// same control points is returned unchanged when `m >= p` (bound 0, no spans added) and

@@ -62,10 +62,11 @@ pub(crate) fn refine(
             })
             .collect();
         let total: f64 = mass.iter().sum();
-        let want = (total / target.powf(e)).ceil();
-        let n = (want as usize)
-            .max(group.len() + 1)
-            .min(group.len() * MAX_GROWTH);
+        let want = total / target.powf(e);
+        let cap = group.len() * MAX_GROWTH;
+        let n = (group.len() + 1..=cap)
+            .find(|&j| j as f64 >= want)
+            .unwrap_or(cap);
         let mut k = 0;
         let mut acc = 0.0;
         for j in 1..n {

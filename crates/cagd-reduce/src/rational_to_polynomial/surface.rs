@@ -31,9 +31,11 @@ pub struct PolynomialSurfaceReduction {
     pub spans_in: (usize, usize),
     /// Non-empty knot spans of the result in `u` and `v`.
     pub spans_out: (usize, usize),
-    /// For every interior knot line of the input, `(t, k)`: the continuity guaranteed
-    /// across it, `k = min(p - s, m - 1)` (as for curves), in `u` and in `v`.
-    pub continuity: (Vec<(f64, usize)>, Vec<(f64, usize)>),
+    /// For every interior knot line `u = t` of the input, `(t, k)`: the continuity
+    /// guaranteed across it, `k = min(p - s, m_u - 1)` (as for curves).
+    pub continuity_u: Vec<(f64, usize)>,
+    /// The same for the knot lines `v = t` (`k = min(q - s, m_v - 1)`).
+    pub continuity_v: Vec<(f64, usize)>,
 }
 
 /// `net` (`rows x cols` points of `block` coordinates, row-major) transposed.
@@ -50,8 +52,8 @@ fn transpose(net: &[f64], rows: usize, cols: usize, block: usize) -> Vec<f64> {
 
 /// Converts a tensor NURBS surface of degrees `(p, q)` to a polynomial B-spline surface of
 /// degrees `<= (m_u, m_v)` (default `(p, q)`; each `1..=64`) within `tol`, certified,
-/// keeping `C^min(p - s, m - 1)` across every knot line of multiplicity `s` (see the
-/// [module docs](self); ours). Weights all equal are recognised exactly: the surface of
+/// keeping `C^min(p - s, m - 1)` across every knot line of multiplicity `s` (the crate docs,
+/// "Rational to polynomial"; ours). Weights all equal are recognised exactly: the surface of
 /// the same control points (reduced by [`crate::reduce_bspline_surface_fit`] where a
 /// target degree is below the input's).
 ///
@@ -98,7 +100,8 @@ pub fn rational_surface_to_polynomial(
     }
     let ku = start_knots(s.knots_u(), p, mu, &src.breaks_u)?;
     let kv = start_knots(s.knots_v(), q, mv, &src.breaks_v)?;
-    let (ku, kv, net, bounds) = fit_to_budget(&src, (mu, mv), (ku, kv), FIT_SHARE * tol)?;
+    let fit = fit_to_budget(&src, (mu, mv), (ku, kv), FIT_SHARE * tol)?;
+    let (ku, kv, net, bounds) = (fit.knots_u, fit.knots_v, fit.net, fit.bounds);
     let dim = s.dim();
     let (nu, nv) = (ku.len() - mu - 1, kv.len() - mv - 1);
     // Per-patch bounds on the fit's grid.
@@ -164,9 +167,13 @@ pub fn rational_surface_to_polynomial(
         pieces: (pu, pv),
         spans_in,
         spans_out,
-        continuity,
+        continuity_u: continuity.0,
+        continuity_v: continuity.1,
     })
 }
+
+/// The continuity reports in `u` and `v`.
+type Continuity = (Vec<(f64, usize)>, Vec<(f64, usize)>);
 
 /// Equal weights: the polynomial surface of the same points, reduced where a target
 /// degree is below the input's.
@@ -175,7 +182,7 @@ fn exact_case(
     (mu, mv): (usize, usize),
     tol: f64,
     spans_in: (usize, usize),
-    continuity: (Vec<(f64, usize)>, Vec<(f64, usize)>),
+    continuity: Continuity,
 ) -> Result<PolynomialSurfaceReduction> {
     let (p, q) = s.degrees();
     let poly = BSplineSurface::new(
@@ -208,6 +215,7 @@ fn exact_case(
         pieces: spans_out,
         spans_in,
         spans_out,
-        continuity,
+        continuity_u: continuity.0,
+        continuity_v: continuity.1,
     })
 }

@@ -259,6 +259,15 @@ fn direction_spans(bounds: &[PatchBound], by_u: bool) -> Vec<SpanBound> {
     out
 }
 
+/// The result of [`fit_to_budget`].
+pub(crate) struct SurfaceFit {
+    pub(crate) knots_u: Vec<f64>,
+    pub(crate) knots_v: Vec<f64>,
+    /// The control net, i-major.
+    pub(crate) net: Vec<f64>,
+    pub(crate) bounds: Vec<PatchBound>,
+}
+
 /// Fits and refines until every patch is within `budget`: the knots, the net, the bounds.
 ///
 /// # Errors
@@ -269,7 +278,7 @@ pub(crate) fn fit_to_budget(
     m: (usize, usize),
     (su, sv): (Vec<f64>, Vec<f64>),
     budget: f64,
-) -> Result<(Vec<f64>, Vec<f64>, Vec<f64>, Vec<PatchBound>)> {
+) -> Result<SurfaceFit> {
     let mut rounds = 0;
     let (mut ku, mut kv) = (su.clone(), sv.clone());
     loop {
@@ -279,7 +288,12 @@ pub(crate) fn fit_to_budget(
         let bounds = patch_bounds(src, &fitted)?;
         if bounds.iter().all(|x| x.bound <= budget) {
             let net = fitted.points().to_vec();
-            return Ok((ku, kv, net, bounds));
+            return Ok(SurfaceFit {
+                knots_u: ku,
+                knots_v: kv,
+                net,
+                bounds,
+            });
         }
         rounds += 1;
         let target = 0.95 * budget;

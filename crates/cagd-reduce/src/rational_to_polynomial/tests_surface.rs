@@ -113,8 +113,8 @@ fn check(
     assert!(r.max_error <= r.error_bound);
     let (mu, mv) = out.degrees();
     for (list, knots, m) in [
-        (&r.continuity.0, out.knots_u(), mu),
-        (&r.continuity.1, out.knots_v(), mv),
+        (&r.continuity_u, out.knots_u(), mu),
+        (&r.continuity_v, out.knots_v(), mv),
     ] {
         for &(t, k) in list {
             assert!(
@@ -145,7 +145,7 @@ fn sphere_and_cylinder_within_tolerance() {
         );
         // Linear in v stays one span in v; the double knot in u stays a C^0 knot line.
         assert_eq!(r.spans_out.1, 1);
-        assert_eq!(r.continuity.0, vec![(0.5, 0)]);
+        assert_eq!(r.continuity_u, vec![(0.5, 0)]);
     }
 }
 
