@@ -74,6 +74,39 @@ pub(crate) fn span_count(knots: &[f64], p: usize) -> usize {
     (p..n).filter(|&i| knots[i] < knots[i + 1]).count()
 }
 
+/// One fit from a start knot vector: the spline after knot removal and its numbers.
+struct Attempt {
+    curve: BSplineCurve,
+    bound: f64,
+    segment_bound: f64,
+    pieces: usize,
+    spans: usize,
+    knots_len: usize,
+}
+
+/// Fits from the knot vector `start` ([`fit_to_budget`]) and removes knots within `tol`.
+fn fit_and_remove(src: &RationalPieces, m: usize, start: Vec<f64>, tol: f64) -> Result<Attempt> {
+    let knots_len = start.len();
+    let (knots, points, bounds) = fit_to_budget(src, m, start, FIT_SHARE * tol)?;
+    let pieces = bounds.len();
+    let segment_bound = bounds.iter().map(|x| x.bound).fold(0.0, f64::max);
+    let mut breaks: Vec<f64> = bounds.iter().map(|x| x.a).collect();
+    breaks.push(bounds[pieces - 1].b);
+    let mut local = LocalBounds::new(breaks, bounds.iter().map(|x| x.bound).collect());
+    let mut raw = Raw::new(&BSplineCurve::new(m, knots, points, src.dim)?);
+    local.remove_greedily(&mut raw, tol)?;
+    let curve = raw.into_curve()?;
+    let spans = span_count(curve.knots(), m);
+    Ok(Attempt {
+        curve,
+        bound: local.max_bound(),
+        segment_bound,
+        pieces,
+        spans,
+        knots_len,
+    })
+}
+
 /// The continuity report: every interior break of the input with `min(p - s, m - 1)`.
 pub(crate) fn continuity_report(
     knots: &[f64],
@@ -92,10 +125,24 @@ pub(crate) fn continuity_report(
 /// # Errors
 /// [`Error::BadParameter`] for an interior knot of multiplicity `p + 1`.
 pub(crate) fn start_knots(knots: &[f64], p: usize, m: usize, breaks: &[f64]) -> Result<Vec<f64>> {
+    start_knots_from(knots, p, m, breaks, false)
+}
+
+/// [`start_knots`]; with `coarse`, the breaks where the result may be `C^(m-1)` (no
+/// multiple knot needed) are left out: the refinement places the knots there.
+pub(crate) fn start_knots_from(
+    knots: &[f64],
+    p: usize,
+    m: usize,
+    breaks: &[f64],
+    coarse: bool,
+) -> Result<Vec<f64>> {
     let mut out = vec![breaks[0]; m + 1];
     for &t in &breaks[1..breaks.len() - 1] {
         let keep = order_at(knots, p, p, t)?.min(m - 1);
-        out.extend(std::iter::repeat_n(t, m - keep));
+        if !(coarse && keep == m - 1) {
+            out.extend(std::iter::repeat_n(t, m - keep));
+        }
     }
     out.extend(std::iter::repeat_n(breaks[breaks.len() - 1], m + 1));
     Ok(out)
@@ -155,17 +202,25 @@ pub fn rational_to_polynomial(
     if let Some(poly) = polynomial_part(curve)? {
         return exact_case(curve, poly, m, tol, &src.breaks, spans_in);
     }
-    let knots = start_knots(curve.knots(), p, m, &src.breaks)?;
-    let (knots, points, bounds) = fit_to_budget(&src, m, knots, FIT_SHARE * tol)?;
-    let pieces = bounds.len();
-    let segment_bound = bounds.iter().map(|x| x.bound).fold(0.0, f64::max);
-    let mut breaks: Vec<f64> = bounds.iter().map(|x| x.a).collect();
-    breaks.push(bounds[pieces - 1].b);
-    let mut local = LocalBounds::new(breaks, bounds.iter().map(|x| x.bound).collect());
-    let fitted = BSplineCurve::new(m, knots, points, curve.dim())?;
-    let mut raw = Raw::new(&fitted);
-    local.remove_greedily(&mut raw, tol)?;
-    let out = raw.into_curve()?;
+    let full = start_knots_from(curve.knots(), p, m, &src.breaks, false)?;
+    let coarse = start_knots_from(curve.knots(), p, m, &src.breaks, true)?;
+    let mut best = fit_and_remove(&src, m, full, tol)?;
+    if coarse.len() < best.knots_len {
+        // A failure of the coarse start (e.g. its refinement runs out of rounds) leaves
+        // the full start's result.
+        if let Ok(other) = fit_and_remove(&src, m, coarse, tol) {
+            if other.spans < best.spans {
+                best = other;
+            }
+        }
+    }
+    let Attempt {
+        curve: out,
+        bound,
+        segment_bound,
+        pieces,
+        ..
+    } = best;
     let max_error = spline_max_deviation(curve, &out)?;
     let spans_out = span_count(out.knots(), m);
     Ok(PolynomialReduction {
@@ -174,7 +229,7 @@ pub fn rational_to_polynomial(
             degree_to: m,
             tolerance: tol,
             equal_weights: false,
-            error_bound: local.max_bound(),
+            error_bound: bound,
             segment_bound,
             max_error,
             pieces,

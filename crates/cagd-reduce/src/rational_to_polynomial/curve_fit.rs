@@ -9,8 +9,8 @@
 use cagd_core::{BSplineCurve, Error, Result, basis_functions, gauss_legendre};
 
 use super::bound::patch_bound;
-use super::pieces::RationalPieces;
-use super::refine::refine;
+use super::pieces::{RationalPieces, restrict_bezier};
+use super::refine::refine_with;
 use crate::{BandedLsq, SpanBound};
 
 /// Most refine-and-refit rounds.
@@ -18,6 +18,8 @@ const MAX_ROUNDS: usize = 60;
 /// New spans aim at this share of the budget (the `h^(m+1)` prediction is not exact, and
 /// the fit is global: refining one span moves its neighbours' error a little).
 const SPLIT_TARGET: f64 = 0.95;
+/// Rounds that re-place the knots by equidistribution before local splitting takes over.
+const GLOBAL_ROUNDS: usize = 3;
 /// Most spans the refinement may create.
 const MAX_SPANS: usize = 1 << 20;
 
@@ -97,12 +99,11 @@ pub(crate) fn fit(src: &RationalPieces, m: usize, knots: &[f64]) -> Result<Vec<f
         if a >= b {
             continue;
         }
-        let k = src.piece_of(a, b);
         for (x, w) in nodes.iter().zip(&weights) {
             let t = a + (b - a) * x;
             let sw = (w * (b - a)).sqrt();
             basis_functions(knots, s, m, t, &mut basis, &mut scratch);
-            src.eval(k, t, &mut work, &mut hom, &mut value);
+            src.eval(src.piece_at(t), t, &mut work, &mut hom, &mut value);
             row.clear();
             let mut first = None;
             for (j, bj) in basis.iter().enumerate() {
@@ -133,7 +134,8 @@ pub(crate) fn fit(src: &RationalPieces, m: usize, knots: &[f64]) -> Result<Vec<f
 }
 
 /// The certified bound of `max ||C - S||` on every span of the degree-`m` spline
-/// `(knots, points)`.
+/// `(knots, points)`: the largest over the input pieces the span meets, each bounded on
+/// the overlap (both Bézier forms restricted to it).
 pub(crate) fn span_bounds(
     src: &RationalPieces,
     m: usize,
@@ -144,10 +146,31 @@ pub(crate) fn span_bounds(
     let mut out = Vec::new();
     for piece in fitted.to_beziers()? {
         let (a, b) = (piece.start, piece.end);
-        let k = src.piece_of(a, b);
-        let hom = src.restrict(k, a, b);
-        let (bound, floor) =
-            patch_bound(&hom, (src.degree, 0), piece.curve.points(), (m, 0), src.dim);
+        let (mut bound, mut floor): (f64, f64) = (0.0, 0.0);
+        let mut k = src.piece_at(a);
+        loop {
+            let (lo, hi) = (a.max(src.breaks[k]), b.min(src.breaks[k + 1]));
+            if hi > lo {
+                let hom = src.restrict(k, lo, hi);
+                let sub = if (lo, hi) == (a, b) {
+                    piece.curve.points().to_vec()
+                } else {
+                    restrict_bezier(
+                        piece.curve.points(),
+                        src.dim,
+                        (lo - a) / (b - a),
+                        (hi - a) / (b - a),
+                    )
+                };
+                let (x, f) = patch_bound(&hom, (src.degree, 0), &sub, (m, 0), src.dim);
+                bound = bound.max(x);
+                floor = floor.max(f);
+            }
+            if src.breaks[k + 1] >= b || k + 1 >= src.len() {
+                break;
+            }
+            k += 1;
+        }
         out.push(SpanBound { a, b, bound, floor });
     }
     Ok(out)
@@ -155,7 +178,7 @@ pub(crate) fn span_bounds(
 
 /// Fits and refines until every span's bound is within `budget`: the final knots, points
 /// and span bounds (the loop of [`crate::reduce_bspline`]'s global fit, with the
-/// equidistributing refinement of [`refine`]). `start` is the knot vector on the input's
+/// equidistributing refinement of [`refine_with`]). `start` is the knot vector on the input's
 /// breaks; the simple knots the refinement adds are kept apart and merged in.
 ///
 /// # Errors
@@ -169,6 +192,9 @@ pub(crate) fn fit_to_budget(
 ) -> Result<(Vec<f64>, Vec<f64>, Vec<SpanBound>)> {
     let mut rounds = 0;
     let mut knots = start.clone();
+    // The refinement places knots anew between the distinct knots of `start`.
+    let mut groups = start.clone();
+    groups.dedup();
     loop {
         let points = fit(src, m, &knots)?;
         let bounds = span_bounds(src, m, &knots, &points)?;
@@ -176,7 +202,14 @@ pub(crate) fn fit_to_budget(
             return Ok((knots, points, bounds));
         }
         rounds += 1;
-        let added = refine(&bounds, &src.breaks, budget, SPLIT_TARGET * budget, m)?;
+        // Equidistribution in the first rounds, local splits after (see `refine_with`).
+        let added = refine_with(
+            &bounds,
+            &groups,
+            (budget, SPLIT_TARGET * budget),
+            m,
+            rounds > GLOBAL_ROUNDS,
+        )?;
         if rounds > MAX_ROUNDS || src.len() + added.len() > MAX_SPANS {
             return Err(Error::ConditionNotMet {
                 eq: "tolerance",

@@ -16,9 +16,15 @@
 //! 4. **Certify** ([`bound`]): per span, `max ||A/W - S|| <= max ||A - W S|| / W` on Bézier
 //!    pieces (the polynomial `A - W S` of degree `p + m` by the Bernstein product, centred
 //!    on the piece's bounding-box centre, joint subdivision with `W`, rounding included).
-//! 5. **Refine** spans above 0.9 of the tolerance (the global fit's split rule) and fit
-//!    again; then **remove knots** (Tiller's certified removal, charged per span) within
-//!    the rest of the tolerance.
+//! 5. **Refine** where spans are above 0.9 of the tolerance ([`refine`]: knots placed by
+//!    error equidistribution, later rounds split the offending spans) and fit again; then
+//!    **remove knots** (Tiller's certified removal, charged per span) within the rest.
+//! 6. Steps 2–5 run twice for curves: from every input break, and from only the breaks
+//!    that need a multiple knot (`C^(m-1)` cannot be kept there); the result with fewer
+//!    spans is returned. Measured on a 1 000-span rational cubic spiral: to cubics within
+//!    1e-3 the coarse start gives 350 spans (every break: 455), within 1e-5 every break
+//!    gives 1 738 (coarse: 2 148 — the input's third derivative jumps at its knots, which
+//!    a cubic follows best with a knot there).
 //!
 //! Surfaces ([`rational_surface_to_polynomial`]): the same per direction — the fit is the
 //! tensor product of the two curve fits on a grid of Gauss nodes (a separable least-squares

@@ -60,14 +60,6 @@ impl RationalPieces {
         &self.hom[k * len..(k + 1) * len]
     }
 
-    /// The piece containing the interval `[a, b]` (`a < b`, inside one piece).
-    pub(crate) fn piece_of(&self, a: f64, b: f64) -> usize {
-        let mid = 0.5 * (a + b);
-        self.breaks[1..]
-            .partition_point(|x| *x <= mid)
-            .min(self.len() - 1)
-    }
-
     /// `C(t) = A(t) / W(t)` on piece `k` (`t` global) into `out` (`d` values); `work` holds
     /// `(p + 1) (d + 1)` and `hom` `d + 1` scratch values.
     pub(crate) fn eval(
@@ -84,6 +76,13 @@ impl RationalPieces {
         for (o, x) in out.iter_mut().zip(hom.iter()) {
             *o = x / w;
         }
+    }
+
+    /// The piece whose interval contains `t` (the last for the domain's end).
+    pub(crate) fn piece_at(&self, t: f64) -> usize {
+        self.breaks[1..]
+            .partition_point(|x| *x <= t)
+            .min(self.len() - 1)
     }
 
     /// The homogeneous Bézier points of the input on `[a, b]` (inside piece `k`).

@@ -31,6 +31,23 @@ pub(crate) fn refine(
     target: f64,
     m: usize,
 ) -> Result<Vec<f64>> {
+    refine_with(bounds, breaks, (budget, target), m, false)
+}
+
+/// [`refine`], or with `local` the offending spans alone split (each into
+/// `ceil((bound / target)^(1/(m+1)))` equal parts, at least 2), the other knots kept: the
+/// later rounds, where re-placing every knot of a long group would move spans that were
+/// already within the budget back above it.
+///
+/// # Errors
+/// As [`refine`].
+pub(crate) fn refine_with(
+    bounds: &[SpanBound],
+    breaks: &[f64],
+    (budget, target): (f64, f64),
+    m: usize,
+    local: bool,
+) -> Result<Vec<f64>> {
     let e = 1.0 / (m as f64 + 1.0);
     let mut out = Vec::new();
     let mut i = 0;
@@ -53,6 +70,31 @@ pub(crate) fn refine(
                 eq: "tolerance",
                 why: "the tolerance is below the rounding level of the curve",
             });
+        }
+        if local {
+            for (j, x) in group.iter().enumerate() {
+                if j > 0 {
+                    out.push(x.a);
+                }
+                if x.bound > budget {
+                    let ratio = (x.bound / target).powf(e);
+                    let parts = (2..MAX_GROWTH)
+                        .find(|&j| j as f64 >= ratio)
+                        .unwrap_or(MAX_GROWTH);
+                    let h = (x.b - x.a) / parts as f64;
+                    for k in 1..parts {
+                        let t = x.a + h * k as f64;
+                        if !(t > x.a && t < x.b) {
+                            return Err(Error::ConditionNotMet {
+                                eq: "tolerance",
+                                why: "a span cannot be split further (rounding level)",
+                            });
+                        }
+                        out.push(t);
+                    }
+                }
+            }
+            continue;
         }
         // Cumulative int c^(1/(m+1)) dt over the group (piecewise constant density).
         let mass: Vec<f64> = group
@@ -144,5 +186,9 @@ mod tests {
         let k = refine(&b, &[0.0, 1.0, 2.0], 1e-3, 1e-3, 2).unwrap();
         assert_eq!(k[..2], [0.5, 0.7]);
         assert!(k[2..].iter().all(|t| *t > 1.0 && *t < 2.0) && k.len() >= 3);
+        // Local: the offending span alone is split, the others keep their knots.
+        let b = [sb(0.0, 0.5, 1e-4), sb(0.5, 0.7, 5e-3), sb(0.7, 1.0, 1e-4)];
+        let k = refine_with(&b, &[0.0, 1.0], (1e-3, 1e-3), 3, true).unwrap();
+        assert_eq!(k, vec![0.5, 0.6, 0.7]);
     }
 }

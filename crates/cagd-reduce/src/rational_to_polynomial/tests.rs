@@ -372,3 +372,34 @@ proptest! {
         check(&c, Some(m), tol, None);
     }
 }
+
+/// A smooth rational cubic with many more spans than the tolerance needs (a spiral, 60
+/// simple knots, smoothly varying weights): fewer spans out than in, the laws of `check`
+/// (the spans of the coarse start cross input knots, so their bounds are the largest over
+/// the input pieces they meet).
+#[test]
+fn many_span_spiral_gets_fewer_spans() {
+    let n = 63;
+    let mut knots = vec![0.0; 4];
+    knots.extend((1..60).map(|i| f64::from(i) / 60.0));
+    knots.extend([1.0; 4]);
+    let pts: Vec<f64> = (0..n)
+        .flat_map(|i| {
+            let (a, r) = (f64::from(i) * 0.1, 1.0 + 0.01 * f64::from(i));
+            [r * a.cos(), r * a.sin(), 0.05 * f64::from(i)]
+        })
+        .collect();
+    let w: Vec<f64> = (0..n)
+        .map(|i| 1.0 + 0.5 * (0.37 * f64::from(i)).sin())
+        .collect();
+    let c = BSplineCurve::new_rational(3, knots, pts, w, 3).unwrap();
+    for tol in [1e-3, 1e-5] {
+        for m in [2, 3] {
+            let r = check(&c, Some(m), tol, None);
+            eprintln!("spiral tol {tol:e} m {m}: spans 60 -> {}", r.spans_out);
+            if tol == 1e-3 {
+                assert!(r.spans_out < 60, "{}", r.spans_out);
+            }
+        }
+    }
+}
