@@ -7,12 +7,10 @@
 use cagd_reduce::{PatchReport, rational_surface_to_polynomial, rational_to_polynomial};
 
 use crate::boundary::{CResult, Failure, boundary, handle_ref, into_handle, nonnull, out_ref};
-use crate::bspline::{CagdBSpline, spline_failure};
-use crate::bspline_surface::CagdBSplineSurface;
-use crate::reduce_options::CagdReduceMethod;
-use crate::report::{CagdReport, ReportKind, SplineReport, StrategyReport};
-use crate::spline_strategy::CagdSplineStrategy;
+use crate::bspline::spline_failure;
+use crate::report::{ReportKind, SplineReport, StrategyReport};
 use crate::status::CagdStatus;
+use crate::{CagdBSpline, CagdBSplineSurface, CagdReduceMethod, CagdReport, CagdSplineStrategy};
 
 /// Checks and borrows the two outputs (distinct, non-NULL, aligned).
 ///

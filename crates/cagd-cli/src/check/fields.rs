@@ -5,8 +5,6 @@ use serde_json::Value;
 /// One vector of a spec file, its parts borrowed from the parsed JSON.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Vector<'a> {
-    /// The vector's `id`.
-    pub(crate) id: &'a str,
     /// `params` (an empty object when absent).
     pub(crate) params: &'a Value,
     /// `input` (an empty object when absent).
@@ -22,7 +20,6 @@ static EMPTY: Value = Value::Null;
 impl<'a> Vector<'a> {
     /// Reads the fields every vector has.
     pub(crate) fn read(raw: &'a Value) -> Result<Self, String> {
-        let id = raw.get("id").and_then(Value::as_str).unwrap_or("");
         let expected = raw.get("expected").ok_or("no \"expected\"")?;
         let tol = raw
             .get("tol")
@@ -32,7 +29,6 @@ impl<'a> Vector<'a> {
             return Err(format!("tol {tol} is not finite and >= 0"));
         }
         Ok(Vector {
-            id,
             params: raw.get("params").unwrap_or(&EMPTY),
             input: raw.get("input").unwrap_or(&EMPTY),
             expected,
@@ -85,7 +81,9 @@ pub(crate) fn numbers(v: &Value, what: &str) -> Result<Vec<f64>, String> {
 /// A list of points `[[x, y, ...], ...]` as a flat row-major buffer and its dimension
 /// (every point must have the same, non-zero, dimension; an empty list has dimension 0).
 pub(crate) fn points(v: &Value, what: &str) -> Result<(Vec<f64>, usize), String> {
-    let a = v.as_array().ok_or_else(|| format!("{what}: not a list of points"))?;
+    let a = v
+        .as_array()
+        .ok_or_else(|| format!("{what}: not a list of points"))?;
     let mut flat = Vec::new();
     let mut dim = 0;
     for (i, p) in a.iter().enumerate() {
@@ -96,7 +94,10 @@ pub(crate) fn points(v: &Value, what: &str) -> Result<(Vec<f64>, usize), String>
                 return Err(format!("{what}[0]: a point needs a coordinate"));
             }
         } else if p.len() != dim {
-            return Err(format!("{what}[{i}]: {} coordinates, expected {dim}", p.len()));
+            return Err(format!(
+                "{what}[{i}]: {} coordinates, expected {dim}",
+                p.len()
+            ));
         }
         flat.extend(p);
     }
@@ -116,7 +117,14 @@ pub(crate) fn points_json(flat: &[f64], dim: usize) -> Value {
 pub(crate) fn matrix_json(rows: usize, cols: usize, data: &[f64]) -> Value {
     Value::Array(
         (0..rows)
-            .map(|i| Value::Array(data[i * cols..(i + 1) * cols].iter().map(|&x| Value::from(x)).collect()))
+            .map(|i| {
+                Value::Array(
+                    data[i * cols..(i + 1) * cols]
+                        .iter()
+                        .map(|&x| Value::from(x))
+                        .collect(),
+                )
+            })
             .collect(),
     )
 }
