@@ -93,7 +93,12 @@ fn reduce(args: &args::ReduceArgs) -> ExitCode {
             }
         }
     }
-    let results = match reduce_cmd::run(&shapes, args) {
+    let run = if args.polynomial {
+        polynomial_cmd::run
+    } else {
+        reduce_cmd::run
+    };
+    let results = match run(&shapes, args) {
         Ok(r) => r,
         Err(f) => {
             eprintln!("cagd: {}: {}", f.path, f.message);

@@ -115,9 +115,6 @@ pub(crate) struct Output {
 
 /// Runs `cagd reduce` on validated shapes; returns one output per input object.
 pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<Output>, Failure> {
-    if args.polynomial {
-        return crate::polynomial_cmd::run(shapes, args);
-    }
     let name = args.method.as_deref().unwrap_or(DEFAULT_METHOD);
     let how = plan(name, args.r, args.p).map_err(|message| Failure {
         path: "--method".into(),
