@@ -3847,6 +3847,103 @@ CagdStatus cagd_report_patch(const struct CagdReport *report,
                              size_t *n_pieces_out);
 
 /**
+ * Converts a NURBS curve `C = A / W` of degree `p` to a polynomial B-spline of degree
+ * `<= target` whose certified distance to `C` (`max_t |C(t) - S(t)|`, same parameter,
+ * Euclidean, model space, rounding included — so also a bound of the geometric distance)
+ * is `<= tolerance`, keeping `C^min(p - s, target - 1)` at every interior knot of the
+ * input of multiplicity `s` (the input is `C^(p - s)` there). The method: the degree-
+ * `target` spline on the input's breaks, the least-squares fit of `C` at Gauss nodes
+ * (joints where the input is only `C^0` interpolated), a certified bound per span of
+ * `|A - W S| / W` on Bézier pieces, refinement until every span is within the tolerance,
+ * then certified knot removal. Weights all equal (or none) are recognised exactly: the
+ * polynomial spline of the same control points is returned (its knots unchanged, bound
+ * 0) when `target >= p`, reduced as by `cagd_bspline_reduce` when `target < p`.
+ *
+ * Parameters:
+ * - `spline` (in): the curve (rational or not, clamped or not).
+ * - `target` (in): the largest degree of the result, `1..=64` (may be above `p`: a conic
+ *   into cubics), or `0` for the input's degree `p`.
+ * - `tolerance` (in): finite, `> 0`.
+ * - `spline_out` (out): on `CAGD_OK`, the polynomial spline (no weights) on the input's
+ *   domain, owned by the caller: release with `cagd_bspline_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report, owned by the caller: release with
+ *   `cagd_report_free`. Neither output is written on failure. Accessors:
+ *   `cagd_report_bound` (the certified bound, `<= tolerance`), `cagd_report_max_error`
+ *   (the densely sampled distance, always measured), `cagd_report_spline` (the largest
+ *   span bound of the fit, its spans before knot removal, spans in and out),
+ *   `cagd_report_spline_continuity` (every interior break of the input with the order
+ *   guaranteed there), `cagd_report_spline_strategy` (`CAGD_SPLINE_FIT`),
+ *   `cagd_report_method` (`CAGD_METHOD_L2`).
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `spline`, `spline_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `tolerance` not finite and `> 0`; the two outputs are
+ *   the same address; a pointer is misaligned.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target > 64`.
+ * - `CAGD_ERR_BAD_KNOTS`: an interior knot of multiplicity `p + 1` (the input may jump
+ *   there).
+ * - `CAGD_ERR_CONDITION_NOT_MET`: the tolerance is below the rounding level of the curve
+ *   or needs more than `2^20` spans.
+ * - `CAGD_ERR_SINGULAR`: the least-squares system is rank-deficient (not expected).
+ * - `CAGD_ERR_NON_FINITE`: the sampled error is not finite.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_bspline_to_polynomial(const struct CagdBSpline *spline,
+                                      size_t target,
+                                      double tolerance,
+                                      struct CagdBSpline **spline_out,
+                                      struct CagdReport **report_out);
+
+/**
+ * Converts a tensor NURBS surface of degrees `(p, q)` to a polynomial B-spline surface of
+ * degrees `<= (target_u, target_v)` whose certified distance to the input (same
+ * parameters, Euclidean, model space) is `<= tolerance`, keeping `C^min(p - s, m - 1)`
+ * across every knot line of multiplicity `s`: the curve method of
+ * `cagd_bspline_to_polynomial` on the tensor product (a separable least-squares fit on a
+ * grid of Gauss nodes, a certified bound of `|A - W S| / W` per patch, refinement, knot
+ * lines removed within the rest). Weights all equal (or none): the polynomial surface of
+ * the same control points (bound 0), reduced by the global fit of
+ * `cagd_bsplinesurface_reduce_to_tolerance` where a target is below the input's degree.
+ *
+ * Parameters:
+ * - `surface` (in): the surface.
+ * - `target_u`, `target_v` (in): the largest degrees, `1..=64`, or `0` for the input's.
+ * - `tolerance` (in): finite, `> 0`.
+ * - `surface_out` (out): on `CAGD_OK`, the polynomial surface (no weights), owned by the
+ *   caller: release with `cagd_bsplinesurface_free`.
+ * - `report_out` (out): on `CAGD_OK`, the report (`cagd_report_bound`: the certified
+ *   bound; `cagd_report_max_error`: the distance sampled on a 17 x 17 grid per input
+ *   patch; `cagd_report_patch`: patch method -1 and the patches of the result; `cagd_report_method`:
+ *   `CAGD_METHOD_L2`), owned by the caller: release with `cagd_report_free`. Neither
+ *   output is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: both outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `surface`, `surface_out` or `report_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `tolerance` not finite and `> 0`; the two outputs are
+ *   the same address; a pointer is misaligned.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: a target above 64.
+ * - `CAGD_ERR_BAD_KNOTS`: a knot line of multiplicity `p + 1`.
+ * - `CAGD_ERR_CONDITION_NOT_MET`: the tolerance cannot be reached (rounding level, or
+ *   more than `2^20` patches).
+ * - `CAGD_ERR_SINGULAR`: the least-squares system is rank-deficient (not expected).
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `surface` must be NULL or a live surface handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_bsplinesurface_to_polynomial(const struct CagdBSplineSurface *surface,
+                                             size_t target_u,
+                                             size_t target_v,
+                                             double tolerance,
+                                             struct CagdBSplineSurface **surface_out,
+                                             struct CagdReport **report_out);
+
+/**
  * Reduces a curve of degree `n` to degree `opts->target` with `opts->method`, returning
  * the reduced curve and a report with the certified error bound (and, with
  * `opts->measure`, the measured error). Rational curves are reduced in homogeneous

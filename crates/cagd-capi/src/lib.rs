@@ -53,7 +53,9 @@
 //!   `cagd_bspline_reduce` (to a tolerance) and `cagd_bspline_reduce_uniform` (seed 001),
 //!   `cagd_bsplinesurface_reduce`, `cagd_tensorpatch_reduce` / `cagd_tripatch_reduce` and
 //!   their `_to_tolerance` forms; `cagd_intervaltri_reduce` (interval triangles, seed 004:
-//!   LP reduction certified to contain its input; handle `CagdIntervalTriPatch`). All take one `CagdReduceOptions` (versioned by its
+//!   LP reduction certified to contain its input; handle `CagdIntervalTriPatch`);
+//!   `cagd_bspline_to_polynomial` / `cagd_bsplinesurface_to_polynomial` (NURBS to polynomial
+//!   within a tolerance). The reductions take one `CagdReduceOptions` (versioned by its
 //!   leading `struct_size`, filled by `cagd_reduce_options_init`).
 //!
 //! - Patch conversions (SPEC-convert §15.4–15.7), handles in and a `CagdPatchPieceList`
@@ -100,6 +102,8 @@ mod matrices;
 mod options;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod patch;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod rational_to_polynomial;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod reduce;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
@@ -176,6 +180,7 @@ pub use patch::{
     cagd_tensorpatchlist_get, cagd_tripatch_reduce, cagd_tripatch_reduce_to_tolerance,
     cagd_tripatchlist_count, cagd_tripatchlist_free, cagd_tripatchlist_get,
 };
+pub use rational_to_polynomial::{cagd_bspline_to_polynomial, cagd_bsplinesurface_to_polynomial};
 pub use reduce::{
     CAGD_EXACT_DEGREE_REL_TOL, cagd_curve_exact_degree, cagd_curve_reduce, cagd_curve_reduce_batch,
     cagd_curve_reduce_exact, cagd_curve_reduce_g1_optimal, cagd_curve_reduce_to_tolerance,

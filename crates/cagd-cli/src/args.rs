@@ -11,6 +11,7 @@ usage:
   cagd reduce --to M[,N] [--method NAME] [--r R] [--p P] [--tol T] [--continuity K]
               [--merge exact|lossy] [--strategy fit|segments|piegl-tiller-1995]
               [--containment-degree N] [-i FILE] [-o FILE] [--svg FILE]
+  cagd reduce --polynomial --tol T [--to M[,N]] [-i FILE] [-o FILE] [--svg FILE]
   cagd merge [--continuity K] [--tol T] [-i FILE] [-o FILE]
   cagd convert --to bezier|nurbs [--standard-form] [--tol T] [-i FILE] [-o FILE] [--svg FILE]
   cagd convert (--to rectangle|rectangles3|triangles|triangle [--inner U,V] [--edges G,K,H]
@@ -41,6 +42,13 @@ patch by patch with every knot span split until the certified bound is within T.
 An interval triangle ({\"type\":\"interval-triangle\",\"degree\":n,\"lo\":[...],\"hi\":[...]},
 i-major) is wrapped by the tightest degree-M interval triangle of seed 004's LP, certified
 to contain it; --containment-degree N (>= n) asks the tighter model of SPEC-convert I.2.
+
+reduce --polynomial --tol T turns a NURBS curve (\"bspline\" with \"weights\") or surface
+(\"bspline-surface\") into a polynomial one of degree <= M (default: the input's degree; M
+may equal it, be lower — reduce and drop the weights in one pass — or higher) within the
+certified bound T, keeping the continuity the input has at each knot (C^min(k, M-1) where
+it is C^k); output: a \"bspline\" / \"bspline-surface\" without weights. Equal weights are
+recognised exactly (the same control points, no spans added).
 
 merge reads one object {\"type\":\"beziers\",\"segments\":[[[x,y,...],...],...]} (optional
 \"weights\": one list or null per segment; optional \"breaks\": count + 1 increasing values,
@@ -107,6 +115,9 @@ pub(crate) struct ReduceArgs {
     pub(crate) strategy: Option<String>,
     /// `--containment-degree N` of an interval-triangle reduction.
     pub(crate) containment_degree: Option<usize>,
+    /// `--polynomial`: rational to polynomial within `--tol`; `to == (0, None)` when `--to`
+    /// is not given (the input's degree).
+    pub(crate) polynomial: bool,
 }
 
 impl ReduceArgs {
@@ -338,6 +349,7 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
                 lossy_merge: false,
                 strategy: None,
                 containment_degree: None,
+                polynomial: false,
             };
             let mut have_to = false;
             while let Some(a) = it.next() {
@@ -371,8 +383,12 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
                             }
                         }
                     }
+                    "--polynomial" => r.polynomial = true,
                     other => return Err(format!("reduce: unknown argument {other:?}")),
                 }
+            }
+            if r.polynomial {
+                return check_polynomial(r, have_to).map(Command::Reduce);
             }
             if !have_to {
                 return Err("reduce: --to M is required".to_string());
@@ -381,6 +397,30 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
         }
         other => Err(format!("unknown command {other:?}")),
     }
+}
+
+/// The arguments of `reduce --polynomial`: `--tol` required, `--to` optional (not 0), no
+/// method, strategy, continuity or merge options.
+fn check_polynomial(r: ReduceArgs, have_to: bool) -> Result<ReduceArgs, String> {
+    if r.tol.is_none() {
+        return Err("reduce --polynomial: --tol T is required".to_string());
+    }
+    if have_to && (r.to.0 == 0 || r.to.1 == Some(0)) {
+        return Err("reduce --polynomial: --to degrees must be at least 1".to_string());
+    }
+    let extra = [
+        (r.method.is_some(), "--method"),
+        (r.strategy.is_some(), "--strategy"),
+        (r.r.is_some() || r.p.is_some(), "--r/--p"),
+        (r.continuity.is_some(), "--continuity"),
+        (r.lossy_merge, "--merge"),
+    ];
+    if let Some((_, name)) = extra.iter().find(|(given, _)| *given) {
+        return Err(format!(
+            "reduce --polynomial: {name} does not apply (the continuity kept is the input's)"
+        ));
+    }
+    Ok(r)
 }
 
 #[cfg(test)]
@@ -403,6 +443,26 @@ mod tests {
         assert_eq!(r.method.as_deref(), Some("l2"));
         assert_eq!((r.r, r.p, r.tol), (Some(1), Some(-1), Some(1e-3)));
         assert_eq!(r.input, Some(PathBuf::from("a.json")));
+    }
+
+    #[test]
+    fn polynomial_arguments() {
+        let Command::Reduce(r) = parse(&args("reduce --polynomial --tol 1e-3")).unwrap() else {
+            panic!("not reduce");
+        };
+        assert!(r.polynomial && r.to == (0, None) && r.tol == Some(1e-3));
+        let Command::Reduce(r) = parse(&args("reduce --polynomial --to 3 --tol 1e-3")).unwrap()
+        else {
+            panic!("not reduce");
+        };
+        assert_eq!(r.to, (3, None));
+        for bad in [
+            "reduce --polynomial",
+            "reduce --polynomial --tol 1e-3 --to 0",
+            "reduce --polynomial --tol 1e-3 --strategy fit",
+        ] {
+            assert!(parse(&args(bad)).is_err(), "{bad}");
+        }
     }
 
     #[test]

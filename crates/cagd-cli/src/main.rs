@@ -36,6 +36,7 @@ mod merge_cmd;
 mod methods;
 mod patch_cmd;
 mod picture;
+mod polynomial_cmd;
 mod reduce_cmd;
 mod shape;
 mod spline_cmd;
@@ -107,7 +108,12 @@ fn reduce(args: &args::ReduceArgs) -> ExitCode {
             }
         }
     }
-    let results = match reduce_cmd::run(&shapes, args) {
+    let run = if args.polynomial {
+        polynomial_cmd::run
+    } else {
+        reduce_cmd::run
+    };
+    let results = match run(&shapes, args) {
         Ok(r) => r,
         Err(f) => {
             eprintln!("cagd: {}: {}", f.path, f.message);

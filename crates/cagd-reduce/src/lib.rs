@@ -145,6 +145,23 @@
 //! other direction's control points as a bundle; knot lines keep `C^min(k, m-1)`);
 //! [`reduce_bspline_surface`]: patch-wise; [`reduce_bspline_surface_to_tolerance`]: patch-wise
 //! with uniform knot refinement until the certified bound meets a tolerance.
+//!
+//! ## Rational to polynomial
+//!
+//! [`rational_to_polynomial`] / [`rational_surface_to_polynomial`]: a NURBS curve or tensor
+//! surface to a polynomial B-spline of degree `<= m` (the input's by default; lower drops
+//! the weights and reduces in one pass) within a certified tolerance, keeping
+//! `C^min(p - s, m - 1)` at each knot. Ours, on the global fit's machinery: the degree-`m`
+//! space on the input's breaks, the least-squares fit of `C = A / W` at Gauss nodes (banded
+//! Givens QR; joints where the input is only `C^0` interpolated), per span the certified
+//! bound `max |A - W S| / W` (the degree-`p + m` polynomial `A - W S` by the Bernstein
+//! product, centred on the piece's bounding-box centre, joint subdivision with `W`), knots
+//! placed by error equidistribution until every span is within the tolerance, then
+//! certified knot removal. Weights all equal are recognised exactly (same control points,
+//! no spans added). Measured (unit tests, parametric distance `max_t |C(t) - S(t)|`, which
+//! bounds the geometric one): a quarter / half / full unit circle to cubics within 1e-3
+//! takes 3 / 6 / 12 spans, within 1e-5 8 / 16 / 32 (a `C^1` cubic Hermite fit needs
+//! 3 / 6 / 12 and 9 / 18 / 36); to quadratics 5 / 10 / 20 and 19 / 38 / 76.
 #![forbid(unsafe_code)]
 
 mod bezier;
@@ -152,6 +169,7 @@ mod bspline;
 mod exact;
 mod interval;
 mod patch;
+mod rational_to_polynomial;
 
 pub use bezier::{
     ChebyshevTerms, DEFAULT_MAX_DEPTH, DEFAULT_REL_TOL, ErrorSpace, MAX_PIECES, Method, Operator,
@@ -179,3 +197,10 @@ pub use patch::{
     reduce_tensor_to_tolerance, reduce_triangle, reduce_triangle_to_tolerance,
     tri_perturbation_matrix,
 };
+pub use rational_to_polynomial::{
+    PolynomialReduction, PolynomialReport, PolynomialSurfaceReduction,
+    rational_surface_to_polynomial, rational_to_polynomial,
+};
+
+// Crate-internal items `rational_to_polynomial` builds on (imported through the root).
+use bspline::{BandedLsq, LocalBounds, Raw, SpanBound, order_at, sampled_error};

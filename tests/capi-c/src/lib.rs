@@ -141,6 +141,9 @@ c_tests![
     implicit_subdivision_matrix,
     curve_intersect,
     implicit_bad_input,
+    // c/rational_to_polynomial.c
+    rational_to_polynomial_half_circle,
+    rational_to_polynomial_equal_weights_and_errors,
     // cpp/header_compiles.cpp
     cpp_header,
 ];

@@ -30,3 +30,8 @@ pub use surface::{
     reduce_bspline_surface, reduce_bspline_surface_fit, reduce_bspline_surface_to_tolerance,
 };
 pub use uniform::{Merge, UniformReduction, reduce_uniform_bspline};
+
+// For the rational -> polynomial conversion (`crate::rational_to_polynomial`).
+pub(crate) use fit::{BandedLsq, SpanBound};
+pub(crate) use knots::{LocalBounds, Raw, order_at};
+pub(crate) use surface::sampled_error;

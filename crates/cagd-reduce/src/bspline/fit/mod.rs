@@ -22,7 +22,7 @@ use cagd_core::{BSplineCurve, Result, basis_functions, gauss_legendre};
 mod banded_lsq;
 
 use crate::bezier::{hull_bound, max_norm};
-use banded_lsq::BandedLsq;
+pub(crate) use banded_lsq::BandedLsq;
 
 /// The spline to approximate, as Bézier pieces in working coordinates.
 #[derive(Debug, Clone)]
