@@ -1,0 +1,55 @@
+//! Degree reduction of Wang–Said generalized Ball (WSGB) curves (seed 003, SPEC-reduce §9):
+//! the perturbation method (§9.4), the best uniform approximation (§9.5), every Bézier
+//! reducer through the exact conversion, and reduction to a tolerance with subdivision.
+//!
+//! ## The paper's example (SPEC-reduce §9.6)
+//!
+//! Reproduced exactly (tests `paper_example_*`): the reduced points of the perturbation
+//! method for r(u;7,1) and r(u;6,0) (the degree-6 curve needs the erratum `p_0 = (200,130)`,
+//! printed (220,130)); the printed perturbation "errors" 17.813 / 34.375 / 20.625, which are
+//! the loose bound (11) in the max-abs norm ([`WsgbStep::paper_bound_11`]; the true errors
+//! are 2.1199 / 5.7292 / 3.4375, [`WsgbStep::error_inf`]); the uniform errors 0.139 / 0.537 /
+//! 0.322 (formula (12), equal to the measured maximum); the relative errors (error / largest
+//! coordinate range of the control points, 330 resp. 270); the end points and the middle
+//! point of the uniform reductions.
+//!
+//! NOT reproduced, because the printed values are wrong: the interior points of the
+//! uniform reductions of r(u;7,1) and r(u;6,1). Evaluated as WSGB curves they deviate from
+//! the original by 0.723 and 17.16 (max-abs norm), not the stated 0.139 and 0.322; the
+//! printed degree-7 `Q2`, `Q4` are what one gets with `beta_1` taken as the Wang function
+//! `2u(1-u)^3` (not a partition of unity). Ours deviate by exactly 0.139160 and 0.322266.
+
+mod perturbation;
+mod reduce;
+mod report;
+#[cfg(test)]
+mod tests;
+#[cfg(test)]
+mod tests_paper;
+mod tolerance;
+mod uniform;
+mod via_bezier;
+
+pub use perturbation::{
+    wsgb_paper_bound_11, wsgb_perturbation_error_factor, wsgb_perturbation_step,
+    wsgb_perturbed_points,
+};
+pub use reduce::{reduce_wsgb, wsgb_sampled_error_inf};
+pub use report::{WsgbMethod, WsgbReduction, WsgbReport, WsgbStep};
+pub use tolerance::{WsgbPiece, WsgbPiecewise, reduce_wsgb_to_tolerance};
+pub use uniform::{wsgb_chebyshev_coefficients, wsgb_uniform_points, wsgb_uniform_step_exact};
+
+/// Degree of a flat buffer of `len` values of `dim` coordinates.
+fn degree_of(len: usize, dim: usize) -> cagd_core::Result<usize> {
+    if dim == 0 {
+        return Err(cagd_core::Error::ZeroDimension);
+    }
+    if len == 0 || len % dim != 0 {
+        return Err(cagd_core::Error::LengthMismatch {
+            what: "WSGB points (length must be a positive multiple of dim)",
+            got: len,
+            expected: (len / dim).max(1) * dim,
+        });
+    }
+    Ok(len / dim - 1)
+}

@@ -1,0 +1,223 @@
+//! The WSGB reduction driver: one method repeated from degree `n` to degree `m`, with the
+//! certified bound, the measured errors and the seed's figures per step.
+
+use num_rational::BigRational;
+
+use cagd_core::{
+    BezierCurve, Error, Result, WsgbCurve, check_degree, curve_distance, round_exact_points,
+    to_exact_points, wsgb_elevate_exact, wsgb_lec_difference, wsgb_reduced_order,
+    wsgb_to_bezier_exact,
+};
+
+use super::perturbation::{
+    wsgb_paper_bound_11, wsgb_perturbation_error_factor, wsgb_perturbation_step,
+};
+use super::uniform::uniform_step_f64;
+use super::via_bezier::reduce_via_bezier;
+use super::{WsgbMethod, WsgbReduction, WsgbReport, WsgbStep};
+
+const EPS: f64 = f64::EPSILON;
+
+fn norm2(x: &[f64]) -> f64 {
+    x.iter().map(|v| v * v).sum::<f64>().sqrt()
+}
+
+pub(super) fn norm_inf(x: &[f64]) -> f64 {
+    x.iter().fold(0.0f64, |a, v| a.max(v.abs()))
+}
+
+/// Checks the target degree `m` of a reduction of a degree-`n` curve.
+fn check_target(n: usize, m: usize, method: WsgbMethod) -> Result<()> {
+    check_degree(n)?;
+    if m >= n {
+        return Err(Error::BadDegreePair {
+            from: n,
+            to: m,
+            why: "the target degree must be below the source degree",
+        });
+    }
+    if method == WsgbMethod::Perturbation && m < 1 {
+        return Err(Error::BadDegreePair {
+            from: n,
+            to: m,
+            why: "the WSGB perturbation method needs n >= 2 at every step (target m >= 1)",
+        });
+    }
+    Ok(())
+}
+
+/// Reduces the WSGB(n, L) curve to degree `m < n` with `method`.
+///
+/// [`WsgbMethod::Perturbation`] and [`WsgbMethod::Uniform`] are applied one degree at a time
+/// (`n -> n-1 -> ... -> m`, the order following `L' = min(L, max(floor(k/2) - 1, 0))` at
+/// each degree `k`, SPEC-reduce §9.3); the certified bound is the sum of the steps' bounds.
+/// [`WsgbMethod::Bezier`] converts exactly to Bézier form, runs the Bézier reducer
+/// (multi-degree methods in one go) and converts back to WSGB(m, L').
+///
+/// The report's `error_bound` and `max_error` are on the Euclidean distance between the
+/// curves; the seed's per-coordinate (max-abs) figures are in [`WsgbReport::steps`] and
+/// `max_error_inf`.
+///
+/// ```
+/// use cagd_core::WsgbCurve;
+/// use cagd_reduce::{WsgbMethod, reduce_wsgb};
+/// let p = vec![220., 110., 160., 220., 180., 340., 260., 400., 355., 425., 470., 320.,
+///              490., 200., 420., 100.];
+/// let c = WsgbCurve::new(p, 2, 1)?; // seed 003's degree-7 example
+/// let r = reduce_wsgb(&c, 6, WsgbMethod::Uniform)?;
+/// assert_eq!(r.curve.point(3), &[307.5, 412.5]);
+/// // Seed 003 eq. (12): ||lec||_inf / 2^13 = 1140 / 8192 = 0.139...
+/// assert_eq!(r.report.steps[0].uniform_error_12, 1140.0 / 8192.0);
+/// assert!((r.report.max_error_inf - 1140.0 / 8192.0).abs() < 1e-12);
+/// assert!(r.report.max_error <= r.report.error_bound);
+/// # Ok::<(), cagd_core::Error>(())
+/// ```
+///
+/// # Errors
+/// [`Error::BadDegreePair`] for `m >= n`, or `m < 1` with the perturbation method (it needs
+/// `n >= 2` at every step); the Bézier method's own errors ([`crate::Method::check`]).
+pub fn reduce_wsgb(curve: &WsgbCurve, m: usize, method: WsgbMethod) -> Result<WsgbReduction> {
+    let n = curve.degree();
+    check_target(n, m, method)?;
+    if let WsgbMethod::Bezier(bm) = method {
+        return reduce_via_bezier(curve, m, bm);
+    }
+    let dim = curve.dim();
+    let mut pts = curve.points().to_vec();
+    let mut l = curve.order();
+    let mut steps = Vec::with_capacity(n - m);
+    for k in (m + 1..=n).rev() {
+        let lec = cagd_core::wsgb_leading_coefficient(&pts, dim, l)?;
+        let diff = wsgb_lec_difference(&pts, dim);
+        let scale = norm_inf(&pts);
+        let (q, exact_err2, err_inf, rounding) = match method {
+            WsgbMethod::Perturbation => {
+                let phi = wsgb_perturbation_error_factor(k, l);
+                let q = wsgb_perturbation_step(&pts, dim, l)?;
+                (q, phi * norm2(&diff), phi * norm_inf(&diff), scale)
+            }
+            _ => {
+                let c = 2f64.powi(2 * k as i32 - 1);
+                let (q, gmax) = uniform_step_f64(&pts, dim, l)?;
+                (
+                    q,
+                    norm2(&lec) / c,
+                    norm_inf(&lec) / c,
+                    scale + gmax * norm_inf(&lec) / c,
+                )
+            }
+        };
+        // Rounding allowance: the f64 points before the inverse elevation differ from the
+        // exact degenerate ones by a few ulp of `rounding`; the inverse elevation multiplies
+        // that by at most 3 (coefficient sum), the convex hull carries it to the curve.
+        let allowance = 64.0 * EPS * (dim as f64).sqrt() * (rounding + norm_inf(&q));
+        steps.push(WsgbStep {
+            degree_from: k,
+            order_from: l,
+            error_bound: exact_err2 * (1.0 + 64.0 * EPS) + allowance,
+            error_inf: err_inf,
+            paper_bound_11: wsgb_paper_bound_11(k, l, norm_inf(&diff)),
+            uniform_error_12: norm_inf(&lec) / 2f64.powi(2 * k as i32 - 1),
+            lec,
+        });
+        l = wsgb_reduced_order(k, l);
+        pts = q;
+    }
+    let reduced = WsgbCurve::new(pts, dim, l)?;
+    let (max_error, max_error_inf) = measure(curve, &reduced)?;
+    let error_bound = steps.iter().map(|s| s.error_bound).sum::<f64>() * (1.0 + 8.0 * EPS);
+    Ok(WsgbReduction {
+        report: WsgbReport {
+            method,
+            degree_from: n,
+            degree_to: m,
+            order_from: curve.order(),
+            order_to: l,
+            error_bound,
+            max_error,
+            max_error_inf,
+            steps,
+            bezier: None,
+        },
+        curve: reduced,
+    })
+}
+
+/// The exact difference `p - q` (q elevated to p's degree and order) as a Bézier curve,
+/// rounded once.
+pub(crate) fn difference_bezier(p: &WsgbCurve, q: &WsgbCurve) -> Result<BezierCurve> {
+    let dim = p.dim();
+    let mut qe = to_exact_points(q.points());
+    let mut lq = q.order();
+    for k in q.degree() + 1..=p.degree() {
+        let lk = if k == p.degree() {
+            p.order()
+        } else {
+            lq.min(cagd_core::wsgb_max_l(k))
+        };
+        qe = wsgb_elevate_exact(&qe, dim, lq, lk)?;
+        lq = lk;
+    }
+    let diff: Vec<BigRational> = to_exact_points(p.points())
+        .iter()
+        .zip(&qe)
+        .map(|(a, b)| a - b)
+        .collect();
+    let b = wsgb_to_bezier_exact(&diff, dim, p.order())?;
+    BezierCurve::new(round_exact_points(&b), dim)
+}
+
+/// Measured `max_u ||p(u) - q(u)||` (Euclidean) and `max_u max_k |p_k(u) - q_k(u)|`, on the
+/// exact difference curve (so accurate relative to the error itself).
+pub(crate) fn measure(p: &WsgbCurve, q: &WsgbCurve) -> Result<(f64, f64)> {
+    let diff = difference_bezier(p, q)?;
+    let dim = diff.dim();
+    let zero = BezierCurve::new(vec![0.0; dim], dim)?;
+    let e2 = curve_distance(&diff, &zero)?;
+    let zero1 = BezierCurve::new(vec![0.0], 1)?;
+    let mut einf = 0.0f64;
+    for d in 0..dim {
+        let coord: Vec<f64> = diff.points().iter().skip(d).step_by(dim).copied().collect();
+        einf = einf.max(curve_distance(&BezierCurve::new(coord, 1)?, &zero1)?);
+    }
+    Ok((e2, einf))
+}
+
+/// `max_k max_{j} |p_k(u_j) - q_k(u_j)|` over the grid `u_j = j/(samples-1)` (max-abs
+/// coordinate norm, no refinement): the "sampled" error of SPEC-reduce §0 (4001 points), as
+/// used by the spec vectors' `true_max_error_inf`. Evaluated on the exact difference curve.
+///
+/// # Errors
+/// [`Error::LengthMismatch`] for different dimensions; [`Error::BadParameter`] for
+/// `samples < 2`.
+pub fn wsgb_sampled_error_inf(p: &WsgbCurve, q: &WsgbCurve, samples: usize) -> Result<f64> {
+    if p.dim() != q.dim() {
+        return Err(Error::LengthMismatch {
+            what: "WSGB curve dimensions",
+            got: q.dim(),
+            expected: p.dim(),
+        });
+    }
+    if samples < 2 {
+        return Err(Error::BadParameter {
+            name: "samples",
+            value: samples as f64,
+            why: "a grid needs at least 2 samples",
+        });
+    }
+    let (p, q) = if p.degree() >= q.degree() {
+        (p, q)
+    } else {
+        (q, p)
+    };
+    let diff = difference_bezier(p, q)?;
+    let mut out = vec![0.0; diff.dim()];
+    let mut work = vec![0.0; diff.points().len()];
+    let mut worst = 0.0f64;
+    for j in 0..samples {
+        let u = j as f64 / (samples - 1) as f64;
+        cagd_core::kernel::de_casteljau(diff.points(), diff.dim(), u, &mut work, &mut out);
+        worst = worst.max(norm_inf(&out));
+    }
+    Ok(worst)
+}
