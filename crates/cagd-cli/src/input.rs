@@ -5,6 +5,7 @@
 //! `{"type":"bspline","degree":p,"knots":[...],"points":[...],"weights":[...]}`,
 //! `{"type":"tensor","degree":[m,n],"points":[...]}` (i-major),
 //! `{"type":"triangle","degree":n,"points":[...]}` (i-major),
+//! `{"type":"wsgb","L":l,"points":[...]}` (seed 003; see [`crate::wsgb_cmd`]),
 //! `{"type":"bspline-surface","degree":[p,q],"knots_u":[...],"knots_v":[...],
 //! "points":[[[x,y,...],...],...],"weights":[[...],...]}` (`points[i][j]`: `i` along `u`;
 //! weights optional, nested like the points; see [`crate::input_surface`]).
@@ -69,6 +70,11 @@ pub(crate) enum RawShape {
     },
     Triangle {
         degree: usize,
+        points: PointList,
+    },
+    /// A WSGB(n, L) curve of seed 003 ([`crate::wsgb_cmd`]).
+    Wsgb {
+        l: usize,
         points: PointList,
     },
     /// A B-spline / NURBS surface: points flat and i-major over `counts = (n_u, n_v)`.
@@ -199,6 +205,7 @@ fn parse_shape(obj: &Value, path: &str) -> Result<RawShape, InputError> {
     }
     let points = point_list(field(obj, path, "points")?, &format!("{path}.points"))?;
     match ty {
+        "wsgb" => crate::wsgb_cmd::parse(obj, path, points),
         "bezier" => {
             let weights = optional_weights(obj, path, points.len())?;
             Ok(RawShape::Bezier { points, weights })

@@ -27,6 +27,7 @@ mod spline_cmd;
 mod surface_cmd;
 mod surface_shape;
 mod svg;
+mod wsgb_cmd;
 
 use std::io::{Read, Write};
 use std::path::Path;

@@ -13,6 +13,7 @@ pub(crate) enum Shape {
     Tensor(TensorPatch),
     Triangle(TriPatch),
     BSplineSurface(BSplineSurface),
+    Wsgb(cagd_core::WsgbCurve),
 }
 
 /// Turns a cagd-core validation error into an input error naming the JSON field.
@@ -45,6 +46,7 @@ impl Shape {
                 };
                 Shape::Bezier(c.map_err(|e| locate(path, &e))?)
             }
+            RawShape::Wsgb { l, points } => crate::wsgb_cmd::build(l, points, path)?,
             RawShape::Tensor { degree, points } => Shape::Tensor(
                 TensorPatch::new(points.coords, degree.0, degree.1, points.dim)
                     .map_err(|e| locate(path, &e))?,
@@ -114,6 +116,7 @@ impl Shape {
                 json!({"type": "triangle", "degree": t.degree(), "points": rows(t.points(), t.dim())})
             }
             Shape::BSplineSurface(s) => crate::surface_shape::to_json(s),
+            Shape::Wsgb(c) => crate::wsgb_cmd::to_json(c),
         }
     }
 }

@@ -48,21 +48,24 @@ impl State {
             }
             (Value::Array(g), Value::Array(e)) => {
                 if g.len() != e.len() {
-                    return self.fail(format!(
-                        "{path}: {} entries, expected {}",
-                        g.len(),
-                        e.len()
-                    ));
+                    return self.fail(format!("{path}: {} entries, expected {}", g.len(), e.len()));
                 }
                 for (i, (gv, ev)) in g.iter().zip(e).enumerate() {
                     self.walk(gv, ev, &format!("{path}[{i}]"));
                 }
             }
             (Value::Number(g), Value::Number(e)) => {
-                let (g, e) = (g.as_f64().unwrap_or(f64::NAN), e.as_f64().unwrap_or(f64::NAN));
+                let (g, e) = (
+                    g.as_f64().unwrap_or(f64::NAN),
+                    e.as_f64().unwrap_or(f64::NAN),
+                );
                 let d = (g - e).abs() / e.abs().max(1.0);
                 if d.is_nan() || d > self.tol {
-                    self.max_diff = if d.is_nan() { f64::INFINITY } else { self.max_diff.max(d) };
+                    self.max_diff = if d.is_nan() {
+                        f64::INFINITY
+                    } else {
+                        self.max_diff.max(d)
+                    };
                     self.fail(format!("{path}: got {g}, expected {e}"));
                 } else {
                     self.max_diff = self.max_diff.max(d);

@@ -85,7 +85,9 @@ pub(crate) fn numbers(v: &Value, what: &str) -> Result<Vec<f64>, String> {
 /// A list of points `[[x, y, ...], ...]` as a flat row-major buffer and its dimension
 /// (every point must have the same, non-zero, dimension; an empty list has dimension 0).
 pub(crate) fn points(v: &Value, what: &str) -> Result<(Vec<f64>, usize), String> {
-    let a = v.as_array().ok_or_else(|| format!("{what}: not a list of points"))?;
+    let a = v
+        .as_array()
+        .ok_or_else(|| format!("{what}: not a list of points"))?;
     let mut flat = Vec::new();
     let mut dim = 0;
     for (i, p) in a.iter().enumerate() {
@@ -96,7 +98,10 @@ pub(crate) fn points(v: &Value, what: &str) -> Result<(Vec<f64>, usize), String>
                 return Err(format!("{what}[0]: a point needs a coordinate"));
             }
         } else if p.len() != dim {
-            return Err(format!("{what}[{i}]: {} coordinates, expected {dim}", p.len()));
+            return Err(format!(
+                "{what}[{i}]: {} coordinates, expected {dim}",
+                p.len()
+            ));
         }
         flat.extend(p);
     }
@@ -116,7 +121,14 @@ pub(crate) fn points_json(flat: &[f64], dim: usize) -> Value {
 pub(crate) fn matrix_json(rows: usize, cols: usize, data: &[f64]) -> Value {
     Value::Array(
         (0..rows)
-            .map(|i| Value::Array(data[i * cols..(i + 1) * cols].iter().map(|&x| Value::from(x)).collect()))
+            .map(|i| {
+                Value::Array(
+                    data[i * cols..(i + 1) * cols]
+                        .iter()
+                        .map(|&x| Value::from(x))
+                        .collect(),
+                )
+            })
             .collect(),
     )
 }

@@ -10,6 +10,7 @@
 
 mod compare;
 mod fields;
+mod wsgb;
 
 use std::path::Path;
 
@@ -43,7 +44,7 @@ pub(crate) enum Outcome {
 pub(crate) type Runner = fn(&Vector<'_>) -> Result<Outcome, String>;
 
 /// The dispatch tables, one per spec family.
-const TABLES: &[&[(&str, Runner)]] = &[];
+const TABLES: &[&[(&str, Runner)]] = &[wsgb::TABLE];
 
 /// The runner of `algorithm`, if any table knows it.
 pub(crate) fn lookup(algorithm: &str) -> Option<Runner> {
@@ -103,13 +104,24 @@ pub(crate) fn run_vector(raw: &Value, index: usize) -> Verdict {
     let wants_error = vector.expected.get("error").is_some();
     let (pass, max_diff, detail) = match (wants_error, outcome) {
         (true, Outcome::Refused(msg)) => (true, f64::NAN, format!("refused as expected: {msg}")),
-        (true, _) => (false, f64::NAN, "expected an error, got a result".to_string()),
+        (true, _) => (
+            false,
+            f64::NAN,
+            "expected an error, got a result".to_string(),
+        ),
         (false, Outcome::Refused(msg)) => (false, f64::NAN, format!("refused: {msg}")),
         (false, Outcome::Values(got)) => match compare(&got, vector.expected, vector.tol) {
             Ok(d) => (true, d, String::new()),
             Err((d, why)) => (false, d, why),
         },
-        (false, Outcome::Compared { max_diff, pass, detail }) => (pass, max_diff, detail),
+        (
+            false,
+            Outcome::Compared {
+                max_diff,
+                pass,
+                detail,
+            },
+        ) => (pass, max_diff, detail),
     };
     Verdict {
         id,

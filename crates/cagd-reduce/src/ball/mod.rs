@@ -38,6 +38,7 @@ pub use reduce::{reduce_wsgb, wsgb_sampled_error_inf};
 pub use report::{WsgbMethod, WsgbReduction, WsgbReport, WsgbStep};
 pub use tolerance::{WsgbPiece, WsgbPiecewise, reduce_wsgb_to_tolerance};
 pub use uniform::{wsgb_chebyshev_coefficients, wsgb_uniform_points, wsgb_uniform_step_exact};
+pub use via_bezier::reduce_wsgb_via_bezier;
 
 /// Degree of a flat buffer of `len` values of `dim` coordinates.
 fn degree_of(len: usize, dim: usize) -> cagd_core::Result<usize> {

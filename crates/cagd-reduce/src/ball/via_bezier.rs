@@ -1,11 +1,11 @@
 //! Every Bézier reducer of cagd-reduce applied to a WSGB curve: exact conversion to Bézier
 //! form, the Bézier reduction, exact conversion back to WSGB(m, L').
 
-use cagd_core::{Result, WsgbCurve, wsgb_max_l};
+use cagd_core::{BezierCurve, Error, Result, WsgbCurve, wsgb_max_l};
 
 use super::reduce::{measure, norm_inf};
 use super::{WsgbMethod, WsgbReduction, WsgbReport};
-use crate::{Method, ReduceOptions, reduce_with};
+use crate::{Method, ReduceOptions, Reduction, reduce_with};
 
 /// Reduces through the Bézier form with the Bézier `method` (see [`super::reduce_wsgb`]).
 ///
@@ -17,8 +17,33 @@ pub(super) fn reduce_via_bezier(
     m: usize,
     method: Method,
 ) -> Result<WsgbReduction> {
+    reduce_wsgb_via_bezier(curve, |b| reduce_with(b, &ReduceOptions::new(method, m)))
+}
+
+/// Reduces a WSGB curve with any Bézier reduction `reduce` (e.g. a non-linear one such as
+/// [`crate::reduce_g1_optimal`] repeated): exact conversion to Bézier form, `reduce`, exact
+/// conversion of its curve back to WSGB(m, L'), `L' = min(L, max(floor(m/2) - 1, 0))`, `m`
+/// the degree it returns. The bound is `reduce`'s certified bound plus the conversions'
+/// rounding (see the module docs); the errors are measured on the WSGB curves.
+///
+/// # Errors
+/// `reduce`'s errors; [`cagd_core::Error::ConditionNotMet`] if it returns a rational curve;
+/// [`cagd_core::Error::BadDegreePair`] if it does not lower the degree.
+pub fn reduce_wsgb_via_bezier(
+    curve: &WsgbCurve,
+    reduce: impl FnOnce(&BezierCurve) -> Result<Reduction>,
+) -> Result<WsgbReduction> {
     let bez = curve.to_bezier()?;
-    let red = reduce_with(&bez, &ReduceOptions::new(method, m))?;
+    let red = reduce(&bez)?;
+    let m = red.curve.degree();
+    if m >= curve.degree() {
+        return Err(Error::BadDegreePair {
+            from: curve.degree(),
+            to: m,
+            why: "the Bézier reduction did not lower the degree",
+        });
+    }
+    let method = red.report.method;
     let l = curve.order().min(wsgb_max_l(m));
     let reduced = WsgbCurve::from_bezier(&red.curve, l)?;
     let dim = curve.dim() as f64;
