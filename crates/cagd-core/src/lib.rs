@@ -63,6 +63,7 @@ mod bspline_curve;
 mod bspline_eval;
 mod bspline_merge;
 mod bspline_surface;
+mod degeneracy_exact;
 mod distance;
 mod distance_2d;
 mod error;
@@ -98,6 +99,7 @@ pub use binomial::{
 pub use bspline_basis::basis_functions;
 pub use bspline_curve::BSplineCurve;
 pub use bspline_surface::{BSplineSurface, SurfacePatchPiece};
+pub use degeneracy_exact::{curve_invariant_exact, tensor_invariants_exact, tri_invariants_exact};
 pub use distance::{curve_distance, max_distance_1d};
 pub use distance_2d::{Domain2, max_distance_2d, tensor_patch_distance, tri_patch_distance};
 pub use error::{Error, Result};

@@ -62,25 +62,11 @@ fn self_pow(x: i64) -> Q {
 /// As [`truncation`].
 pub(crate) fn constrained(n: usize, m: usize, r: i32, p: i32) -> Result<(RatMat, Vec<(f64, Row)>)> {
     let (left, right) = end_points(n, m, r, p);
-    let (ni, mi, ri, pi) = (to_i(n), to_i(m), i64::from(r), i64::from(p));
+    let (mi, ri, pi) = (to_i(m), i64::from(r), i64::from(p));
     let mut rows: Vec<Row> = left.clone();
     let mut terms = Vec::new();
     if ri + pi + 1 < mi {
-        let aux = auxiliary(n, m, r, p, &left, &right);
-        let big_n = ni - (ri + pi + 2);
-        let big_m = mi - (ri + pi + 2);
-        // P^II_i = P^I_{r+1+i} C(n, r+1+i) / C(N, i)   (14.5.14)
-        let p2 = RatMat::from_rows(
-            (0..=big_n)
-                .map(|i| {
-                    let f = binom_q(ni, ri + 1 + i) / binom_q(big_n, i);
-                    aux[idx(i)].iter().map(|x| x * &f).collect()
-                })
-                .collect(),
-        );
-        let b2c = bernstein_to_chebyshev(idx(big_n))?;
-        // P^III = (B->Cheb) P^II   (14.5.15)
-        let p3 = b2c.mul(&p2)?;
+        let (p3, big_m) = chebyshev_rows(n, m, r, p, &left, &right)?;
         let kept = RatMat::from_rows((0..=big_m).map(|k| p3.row(idx(k)).to_vec()).collect());
         let rr = chebyshev_to_bernstein(idx(big_m))?.mul(&kept)?;
         // Q_i = R_{i-r-1} C(M, i-r-1) / C(m, i)   (14.5.16)
@@ -88,14 +74,122 @@ pub(crate) fn constrained(n: usize, m: usize, r: i32, p: i32) -> Result<(RatMat,
             let f = binom_q(big_m, i - ri - 1) / binom_q(mi, i);
             rows.push(rr.row(idx(i - ri - 1)).iter().map(|x| x * &f).collect());
         }
-        let factor = self_pow(pi + 1) * self_pow(ri + 1) / self_pow(pi + ri + 2);
-        let coef = up(&factor);
-        for k in (big_m + 1)..=big_n {
-            terms.push((coef, p3.row(idx(k)).to_vec()));
+        let coef = up(&bound_factor(r, p));
+        for k in (idx(big_m) + 1)..p3.nrows() {
+            terms.push((coef, p3.row(k).to_vec()));
         }
     }
     rows.extend(right);
     Ok((RatMat::from_rows(rows), terms))
+}
+
+/// The factor `(p+1)^(p+1) (r+1)^(r+1) / (p+r+2)^(p+r+2)` of Theorem 14.5.2's bound
+/// (`0^0 = 1`), exact.
+fn bound_factor(r: i32, p: i32) -> Q {
+    let (ri, pi) = (i64::from(r), i64::from(p));
+    self_pow(pi + 1) * self_pow(ri + 1) / self_pow(pi + ri + 2)
+}
+
+/// Theorem 14.5.2, eqs. 14.5.14–14.5.15: the exact rows mapping the control points `P` to
+/// the Chebyshev coefficients `P^III_k`, `k = 0..=N`, of the deflated inner polynomial
+/// (`N = n - (r+p+2)`), and `M = m - (r+p+2)`. Requires `r + p + 1 < m`.
+fn chebyshev_rows(
+    n: usize,
+    m: usize,
+    r: i32,
+    p: i32,
+    left: &[Row],
+    right: &[Row],
+) -> Result<(RatMat, i64)> {
+    let (ni, mi, ri, pi) = (to_i(n), to_i(m), i64::from(r), i64::from(p));
+    let aux = auxiliary(n, m, r, p, left, right);
+    let big_n = ni - (ri + pi + 2);
+    let big_m = mi - (ri + pi + 2);
+    // P^II_i = P^I_{r+1+i} C(n, r+1+i) / C(N, i)   (14.5.14)
+    let p2 = RatMat::from_rows(
+        (0..=big_n)
+            .map(|i| {
+                let f = binom_q(ni, ri + 1 + i) / binom_q(big_n, i);
+                aux[idx(i)].iter().map(|x| x * &f).collect()
+            })
+            .collect(),
+    );
+    // P^III = (B->Cheb) P^II   (14.5.15)
+    let p3 = bernstein_to_chebyshev(idx(big_n))?.mul(&p2)?;
+    Ok((p3, big_m))
+}
+
+/// The Chebyshev coefficients of seed 000 Theorem 14.5.2 for one curve (SPEC-reduce §7).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ChebyshevTerms {
+    /// `P^III_k`, `k = 0..=N` (`N = n - (r+p+2)`), flat row-major, `dim` per point
+    /// (eq. 14.5.15).
+    pub coefficients: Vec<f64>,
+    /// How many are kept by the reduction: `M + 1`, `M = m - (r+p+2)`.
+    pub kept: usize,
+    /// The printed error bound of Theorem 14.5.2 (an upper bound, SPEC-reduce §7 erratum):
+    /// `(p+1)^(p+1) (r+1)^(r+1) / (p+r+2)^(p+r+2) * sum_{k=M+1}^{N} ||P^III_k||`, evaluated
+    /// in `f64` from the exactly computed coefficients.
+    pub bound: f64,
+}
+
+/// Seed 000 Theorem 14.5.2 (SPEC-reduce §7): the Chebyshev coefficients `P^III_k` of the
+/// deflated inner polynomial of `curve` for the reduction to degree `m` with `(r, p)`-order
+/// end interpolation (`r, p >= -1`, `r + p + 1 < m < n`), from the exact operator (each
+/// coefficient one exact linear functional of the control points, rounded once), and the
+/// theorem's bound. [`crate::Method::ConstrainedChebyshev`] is the reduction itself.
+///
+/// # Errors
+/// [`cagd_core::Error::BadDegreePair`] / [`cagd_core::Error::TooManyConstraints`] unless
+/// `r + p + 1 < m < n <= 64` (with `r, p >= -1`); rational curves are refused
+/// ([`cagd_core::Error::BadParameter`]).
+pub fn constrained_chebyshev_terms(
+    curve: &cagd_core::BezierCurve,
+    m: usize,
+    r: i32,
+    p: i32,
+) -> Result<ChebyshevTerms> {
+    let n = curve.degree();
+    crate::Method::ConstrainedChebyshev { r, p }.check(n, m)?;
+    if curve.is_rational() {
+        return Err(cagd_core::Error::BadParameter {
+            name: "curve",
+            value: f64::NAN,
+            why: "the Chebyshev terms are defined for polynomial curves",
+        });
+    }
+    if i64::from(r) + i64::from(p) + 1 >= to_i(m) {
+        return Err(cagd_core::Error::BadDegreePair {
+            from: n,
+            to: m,
+            why: "Theorem 14.5.2 needs r + p + 1 < m (m = r + p + 1 is Hermite interpolation)",
+        });
+    }
+    let (left, right) = end_points(n, m, r, p);
+    let (p3, big_m) = chebyshev_rows(n, m, r, p, &left, &right)?;
+    let dim = curve.dim();
+    let ops = p3.to_f64();
+    let cols = n + 1;
+    let mut coefficients = vec![0.0; p3.nrows() * dim];
+    for k in 0..p3.nrows() {
+        for (j, pt) in curve.points().chunks_exact(dim).enumerate() {
+            let a = ops[k * cols + j];
+            for d in 0..dim {
+                coefficients[k * dim + d] += a * pt[d];
+            }
+        }
+    }
+    let factor = up(&bound_factor(r, p));
+    let tail: f64 = coefficients
+        .chunks_exact(dim)
+        .skip(idx(big_m) + 1)
+        .map(|c| c.iter().map(|x| x * x).sum::<f64>().sqrt())
+        .sum();
+    Ok(ChebyshevTerms {
+        coefficients,
+        kept: idx(big_m) + 1,
+        bound: factor * tail,
+    })
 }
 
 #[cfg(test)]

@@ -205,10 +205,12 @@ pub use bspline_surface_reduce::{SurfaceOptions, SurfaceReduction, reduce_bsplin
 pub use bspline_surface_tolerance::{MAX_SURFACE_LEVEL, reduce_bspline_surface_to_tolerance};
 pub use bspline_uniform::{Merge, UniformReduction, reduce_uniform_bspline};
 pub use cagd_core::{Error, Result};
+pub use chebyshev::{ChebyshevTerms, constrained_chebyshev_terms};
 pub use exact_degree::{DEFAULT_REL_TOL, exact_degree, reduce_exact};
 pub use g1::reduce_g1_optimal;
 pub use measure::max_deviation;
 pub use method::Method;
+pub use one_step::eck_lambdas;
 pub use operator::{Operator, operator};
 pub use patch_report::{
     PatchConstraint, PatchOptions, PatchReduction, PatchReport, TensorMethod, TensorPiece,

@@ -117,13 +117,11 @@ pub(crate) fn step(method: Method, k: usize) -> Step {
         Method::Eck => {
             let (fwd, bwd) = recursions(k);
             let ni = to_i(k - 1);
-            let mut acc = Q::zero();
-            let mut rows = Vec::with_capacity(k);
-            for i in 0..k {
-                acc += binom_q(2 * ni + 2, 2 * to_i(i));
-                let lambda = &acc * pow2(-2 * ni - 1);
-                rows.push(lin2(&(Q::one() - &lambda), &fwd[i], &lambda, &bwd[i]));
-            }
+            let rows = eck_lambdas_exact(k - 1)
+                .iter()
+                .enumerate()
+                .map(|(i, lambda)| lin2(&(Q::one() - lambda), &fwd[i], lambda, &bwd[i]))
+                .collect();
             // Error curve 2^(-2n-1) T_{n+1}(2t-1) Delta^{n+1} P_0: max exactly 2^(-2n-1)||F||.
             let terms = vec![(up(&pow2(-2 * ni - 1)), signs(k))];
             Step {
@@ -251,4 +249,33 @@ fn piegl_tiller(k: usize) -> Step {
         op: RatMat::from_rows(rows),
         terms,
     }
+}
+/// Eck's weights (seed 000 ch. 14 introduction, SPEC-reduce §3): the degree-`n` reduction
+/// of a degree-`n+1` curve is `Q_i = (1 - lambda_i) P^I_i + lambda_i P^II_i` with
+/// `lambda_i = 2^(-2n-1) sum_{j=0}^{i} C(2n+2, 2j)`, `i = 0..=n`; exact.
+pub(crate) fn eck_lambdas_exact(n: usize) -> Vec<Q> {
+    let ni = to_i(n);
+    let mut acc = Q::zero();
+    (0..=n)
+        .map(|i| {
+            acc += binom_q(2 * ni + 2, 2 * to_i(i));
+            &acc * pow2(-2 * ni - 1)
+        })
+        .collect()
+}
+
+/// Eck's weights `lambda_i`, `i = 0..=n`, of the reduction from degree `n + 1` to `n`
+/// (SPEC-reduce §3): `lambda_i = 2^(-2n-1) sum_{j=0}^{i} C(2n+2, 2j)`, exact.
+///
+/// ```
+/// let l = cagd_reduce::eck_lambdas(4)?;
+/// assert_eq!(l[1].to_string(), "23/256"); // SPEC-reduce vector eck-lambda
+/// # Ok::<(), cagd_reduce::Error>(())
+/// ```
+///
+/// # Errors
+/// [`cagd_core::Error::DegreeOutOfRange`] for `n + 1 > MAX_DEGREE`.
+pub fn eck_lambdas(n: usize) -> cagd_core::Result<Vec<num_rational::BigRational>> {
+    cagd_core::check_degree(n + 1)?;
+    Ok(eck_lambdas_exact(n))
 }

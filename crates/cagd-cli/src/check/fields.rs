@@ -5,8 +5,6 @@ use serde_json::Value;
 /// One vector of a spec file, its parts borrowed from the parsed JSON.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Vector<'a> {
-    /// The vector's `id`.
-    pub(crate) id: &'a str,
     /// `params` (an empty object when absent).
     pub(crate) params: &'a Value,
     /// `input` (an empty object when absent).
@@ -22,7 +20,6 @@ static EMPTY: Value = Value::Null;
 impl<'a> Vector<'a> {
     /// Reads the fields every vector has.
     pub(crate) fn read(raw: &'a Value) -> Result<Self, String> {
-        let id = raw.get("id").and_then(Value::as_str).unwrap_or("");
         let expected = raw.get("expected").ok_or("no \"expected\"")?;
         let tol = raw
             .get("tol")
@@ -32,7 +29,6 @@ impl<'a> Vector<'a> {
             return Err(format!("tol {tol} is not finite and >= 0"));
         }
         Ok(Vector {
-            id,
             params: raw.get("params").unwrap_or(&EMPTY),
             input: raw.get("input").unwrap_or(&EMPTY),
             expected,

@@ -3,20 +3,22 @@
 //!
 //! Every vector `{id, algorithm, params, input, expected, tol, exact?, note?}` is run through
 //! the library by its `algorithm` field (one dispatch table per spec family, [`lookup`]) and
-//! compared with `expected` by the spec's rule: a number passes when
-//! `|got - expected| <= tol * max(1, |expected|)`; every key of `expected` must be produced;
+//! compared with `expected` by the rule of the spec the algorithm belongs to ([`Rule`]:
+//! SPEC-convert §0 per number, SPEC-reduce §0 per array); every key of `expected` must be
+//! produced;
 //! a vector whose `expected` has `error` passes only when the library refuses the input.
 //! An algorithm no table knows is a failure, never a skip.
 
 mod compare;
 mod fields;
+mod reduce;
 mod wsgb;
 
 use std::path::Path;
 
 use serde_json::Value;
 
-pub(crate) use compare::compare;
+pub(crate) use compare::{Rule, compare};
 pub(crate) use fields::Vector;
 
 /// What a runner says about one vector.
@@ -43,16 +45,21 @@ pub(crate) enum Outcome {
 /// `Err` is a malformed vector (a missing or ill-typed field), reported as a failure.
 pub(crate) type Runner = fn(&Vector<'_>) -> Result<Outcome, String>;
 
-/// The dispatch tables, one per spec family.
-const TABLES: &[&[(&str, Runner)]] = &[wsgb::TABLE];
+/// The dispatch tables, one per family of algorithms, with the tolerance rule of the spec
+/// file the family's vectors belong to.
+const TABLES: &[(&[(&str, Runner)], Rule)] = &[
+    (reduce::TABLE, Rule::PerArray),
+    (wsgb::TABLE, Rule::PerArray),
+];
 
-/// The runner of `algorithm`, if any table knows it.
-pub(crate) fn lookup(algorithm: &str) -> Option<Runner> {
-    TABLES
-        .iter()
-        .flat_map(|t| t.iter())
-        .find(|(name, _)| *name == algorithm)
-        .map(|(_, run)| *run)
+/// The runner of `algorithm` and its comparison rule, if any table knows it.
+pub(crate) fn lookup(algorithm: &str) -> Option<(Runner, Rule)> {
+    TABLES.iter().find_map(|(table, rule)| {
+        table
+            .iter()
+            .find(|(name, _)| *name == algorithm)
+            .map(|(_, run)| (*run, *rule))
+    })
 }
 
 /// The verdict on one vector.
@@ -93,7 +100,7 @@ pub(crate) fn run_vector(raw: &Value, index: usize) -> Verdict {
         Ok(v) => v,
         Err(e) => return fail(format!("malformed vector: {e}")),
     };
-    let Some(runner) = lookup(&algorithm) else {
+    let Some((runner, rule)) = lookup(&algorithm) else {
         return fail(format!("unknown algorithm {algorithm:?}"));
     };
     let outcome = match std::panic::catch_unwind(|| runner(&vector)) {
@@ -110,7 +117,7 @@ pub(crate) fn run_vector(raw: &Value, index: usize) -> Verdict {
             "expected an error, got a result".to_string(),
         ),
         (false, Outcome::Refused(msg)) => (false, f64::NAN, format!("refused: {msg}")),
-        (false, Outcome::Values(got)) => match compare(&got, vector.expected, vector.tol) {
+        (false, Outcome::Values(got)) => match compare(&got, vector.expected, vector.tol, rule) {
             Ok(d) => (true, d, String::new()),
             Err((d, why)) => (false, d, why),
         },
