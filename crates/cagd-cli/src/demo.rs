@@ -184,6 +184,7 @@ pub(crate) fn run(out: &Path) -> Result<(), String> {
     }
     crate::demo_patches::run(out, &mut table)?;
     crate::demo_splines::run(out, &mut table)?;
+    crate::demo_wsgb::run(out, &mut table)?;
     print!("{table}");
     Ok(())
 }

@@ -13,6 +13,7 @@ mod check;
 mod demo;
 mod demo_patches;
 mod demo_splines;
+mod demo_wsgb;
 mod input;
 mod input_beziers;
 mod input_surface;

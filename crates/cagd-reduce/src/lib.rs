@@ -190,9 +190,10 @@ mod wn_table;
 pub use alg_14_2_1::{reduce_to_tolerance_alg_14_2_1, subdivision_levels};
 pub use ball::{
     WsgbMethod, WsgbPiece, WsgbPiecewise, WsgbReduction, WsgbReport, WsgbStep, reduce_wsgb,
-    reduce_wsgb_to_tolerance, reduce_wsgb_via_bezier, wsgb_chebyshev_coefficients,
-    wsgb_paper_bound_11, wsgb_perturbation_error_factor, wsgb_perturbation_step,
-    wsgb_perturbed_points, wsgb_sampled_error_inf, wsgb_uniform_points, wsgb_uniform_step_exact,
+    reduce_wsgb_to_tolerance, reduce_wsgb_via_bezier, reduce_wsgb_with,
+    wsgb_chebyshev_coefficients, wsgb_paper_bound_11, wsgb_perturbation_error_factor,
+    wsgb_perturbation_step, wsgb_perturbed_points, wsgb_sampled_error_inf, wsgb_uniform_points,
+    wsgb_uniform_step_exact,
 };
 pub use batch::reduce_batch;
 pub use bspline_measure::spline_max_deviation;

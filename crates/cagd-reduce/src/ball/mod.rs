@@ -34,7 +34,7 @@ pub use perturbation::{
     wsgb_paper_bound_11, wsgb_perturbation_error_factor, wsgb_perturbation_step,
     wsgb_perturbed_points,
 };
-pub use reduce::{reduce_wsgb, wsgb_sampled_error_inf};
+pub use reduce::{reduce_wsgb, reduce_wsgb_with, wsgb_sampled_error_inf};
 pub use report::{WsgbMethod, WsgbReduction, WsgbReport, WsgbStep};
 pub use tolerance::{WsgbPiece, WsgbPiecewise, reduce_wsgb_to_tolerance};
 pub use uniform::{wsgb_chebyshev_coefficients, wsgb_uniform_points, wsgb_uniform_step_exact};

@@ -74,11 +74,12 @@ pub struct WsgbReport {
     /// error, `f64` rounding included.
     pub error_bound: f64,
     /// The measured `max_u ||r(u) - q(u)||` (Euclidean): dense sampling plus local
-    /// refinement of the exact difference curve ([`cagd_core::curve_distance`]).
-    pub max_error: f64,
+    /// refinement of the exact difference curve ([`cagd_core::curve_distance`]). `None`
+    /// when not asked for ([`crate::reduce_wsgb_with`]).
+    pub max_error: Option<f64>,
     /// The measured maximum of `max_k |r_k(u) - q_k(u)|` (max-abs coordinate norm, the norm
-    /// of seed 003's printed errors).
-    pub max_error_inf: f64,
+    /// of seed 003's printed errors); `None` when not measured.
+    pub max_error_inf: Option<f64>,
     /// The degree steps (perturbation and uniform methods; empty for Bézier methods).
     pub steps: Vec<WsgbStep>,
     /// The Bézier reducer's own report (Bézier methods only).

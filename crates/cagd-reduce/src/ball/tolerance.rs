@@ -96,7 +96,7 @@ pub fn reduce_wsgb_to_tolerance(
     let error_bound = done.iter().map(|p| p.error_bound).fold(0.0, f64::max);
     let max_error = done
         .iter()
-        .map(|p| p.reduction.report.max_error)
+        .filter_map(|p| p.reduction.report.max_error)
         .fold(0.0, f64::max);
     Ok(WsgbPiecewise {
         pieces: done,

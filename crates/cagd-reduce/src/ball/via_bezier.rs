@@ -3,7 +3,7 @@
 
 use cagd_core::{BezierCurve, Error, Result, WsgbCurve, wsgb_max_l};
 
-use super::reduce::{measure, norm_inf};
+use super::reduce::{measured, norm_inf};
 use super::{WsgbMethod, WsgbReduction, WsgbReport};
 use crate::{Method, ReduceOptions, Reduction, reduce_with};
 
@@ -16,8 +16,15 @@ pub(super) fn reduce_via_bezier(
     curve: &WsgbCurve,
     m: usize,
     method: Method,
+    measure: bool,
 ) -> Result<WsgbReduction> {
-    reduce_wsgb_via_bezier(curve, |b| reduce_with(b, &ReduceOptions::new(method, m)))
+    let mut red =
+        reduce_wsgb_via_bezier(curve, |b| reduce_with(b, &ReduceOptions::new(method, m)))?;
+    if !measure {
+        red.report.max_error = None;
+        red.report.max_error_inf = None;
+    }
+    Ok(red)
 }
 
 /// Reduces a WSGB curve with any Bézier reduction `reduce` (e.g. a non-linear one such as
@@ -52,7 +59,7 @@ pub fn reduce_wsgb_via_bezier(
         * dim.sqrt()
         * (norm_inf(bez.points()) + norm_inf(red.curve.points()) + norm_inf(reduced.points()));
     let bound = red.report.error_bound.unwrap_or(f64::INFINITY) + allowance;
-    let (max_error, max_error_inf) = measure(curve, &reduced)?;
+    let (max_error, max_error_inf) = measured(curve, &reduced, true)?;
     Ok(WsgbReduction {
         report: WsgbReport {
             method: WsgbMethod::Bezier(method),
