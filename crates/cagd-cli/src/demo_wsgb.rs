@@ -44,7 +44,10 @@ pub(crate) fn run(out: &Path, table: &mut String) -> Result<(), String> {
         let methods = [
             ("perturbation", WsgbMethod::Perturbation),
             ("uniform", WsgbMethod::Uniform),
-            ("l2 (via Bézier)", WsgbMethod::Bezier(Method::L2 { r: 0, p: 0 })),
+            (
+                "l2 (via Bézier)",
+                WsgbMethod::Bezier(Method::L2 { r: 0, p: 0 }),
+            ),
         ];
         for (label, method) in methods {
             let red = reduce_wsgb(&c, n - 1, method).map_err(err)?;
