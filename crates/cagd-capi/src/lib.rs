@@ -39,6 +39,10 @@
 //! - Operations: evaluation, derivatives, elevation, subdivision, knot insertion, Bézier
 //!   extraction, and its inverse, the exact merge of Bézier segments into one spline
 //!   (`cagd_bspline_from_beziers`, seed 001 §4.1).
+//! - WSGB curves of seed 003 (`CagdWsgbCurve`, a handle of its own): creation,
+//!   evaluation by peeling, exact conversion to and from `CagdCurve`, elevation, leading
+//!   coefficient and degeneracy, and `cagd_wsgb_reduce` (perturbation, best uniform, or any
+//!   Bézier method) with the `CagdWsgbReport` struct.
 //! - Every reduction of cagd-reduce: `cagd_curve_reduce` (twelve methods, with report),
 //!   `cagd_curve_reduce_batch`, `cagd_curve_reduce_to_tolerance` (C^k B-spline) and
 //!   `_stepwise` (seed 000 Algorithm 14.2.1), `cagd_curve_reduce_exact` /
@@ -116,6 +120,10 @@ mod tri_patch;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod tri_patch_ops;
 mod version;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod wsgb;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod wsgb_reduce;
 
 pub use bspline::{
     CagdBSpline, cagd_bspline_degree, cagd_bspline_dim, cagd_bspline_domain, cagd_bspline_free,
@@ -199,3 +207,9 @@ pub use tri_patch_ops::{
     cagd_tripatch_elevate, cagd_tripatch_eval, cagd_tripatch_subdivide_midpoint,
 };
 pub use version::{CAGD_VERSION_MAJOR, CAGD_VERSION_MINOR, CAGD_VERSION_PATCH};
+pub use wsgb::{
+    CagdWsgbCurve, cagd_wsgb_elevate, cagd_wsgb_eval, cagd_wsgb_free, cagd_wsgb_from_bezier,
+    cagd_wsgb_leading_coefficient, cagd_wsgb_new, cagd_wsgb_points, cagd_wsgb_shape,
+    cagd_wsgb_to_bezier,
+};
+pub use wsgb_reduce::{CagdWsgbMethod, CagdWsgbReport, cagd_wsgb_reduce};

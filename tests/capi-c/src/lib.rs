@@ -124,6 +124,9 @@ c_tests![
     tensorpatch_ops,
     tripatch_ops,
     patch_ops_bad_input,
+    // c/wsgb.c
+    wsgb_paper_example,
+    wsgb_bad_input,
     // cpp/header_compiles.cpp
     cpp_header,
 ];
