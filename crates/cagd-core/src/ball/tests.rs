@@ -17,8 +17,8 @@ fn terms_eval(c: &WsgbCurve, u: f64) -> Vec<f64> {
     let t = wsgb_terms(c.degree(), c.order()).unwrap();
     let mut out = vec![0.0; c.dim()];
     for (i, b) in t.iter().enumerate() {
-        for d in 0..c.dim() {
-            out[d] += b.eval(u) * c.point(i)[d];
+        for (o, p) in out.iter_mut().zip(c.point(i)) {
+            *o += b.eval(u) * p;
         }
     }
     out

@@ -1,5 +1,6 @@
 //! The perturbation method of seed 003 §2.1 (SPEC-reduce §9.4): one degree `n -> n-1`.
 
+use cagd_core::kernel::powu;
 use cagd_core::{
     Error, Result, WsgbScalar, binomial, check_wsgb_order, wsgb_inverse_elevation,
     wsgb_lec_difference,
@@ -71,11 +72,11 @@ pub fn wsgb_perturbation_error_factor(n: usize, l: usize) -> f64 {
     let m = n / 2;
     if n % 2 == 1 {
         let mf = m as f64;
-        0.5 * k * (mf / (4.0 * mf + 2.0)).powi(m as i32) / (2.0 * mf + 1.0).sqrt()
+        0.5 * k * powu(mf / (4.0 * mf + 2.0), m) / (2.0 * mf + 1.0).sqrt()
     } else if m == 1 {
         k / 6.0
     } else {
-        k / (3.0 * 4f64.powi(m as i32))
+        k / (3.0 * powu(4.0, m))
     }
 }
 
@@ -83,5 +84,5 @@ pub fn wsgb_perturbation_error_factor(n: usize, l: usize) -> f64 {
 /// floor(n/2)`, given `||D||` in the norm wanted (seed 003 prints it in the max-abs norm).
 pub fn wsgb_paper_bound_11(n: usize, l: usize, d_norm: f64) -> f64 {
     let m = n / 2;
-    (1u128 << l) as f64 * binomial(2 * m - 2 * l, m - l) as f64 * d_norm / 4f64.powi(m as i32)
+    (1u128 << l) as f64 * binomial(2 * m - 2 * l, m - l) as f64 * d_norm / powu(4.0, m)
 }

@@ -3,6 +3,7 @@
 
 use num_rational::BigRational;
 
+use cagd_core::kernel::powu;
 use cagd_core::{
     BezierCurve, Error, Result, WsgbCurve, check_degree, curve_distance, round_exact_points,
     to_exact_points, wsgb_elevate_exact, wsgb_lec_difference, wsgb_reduced_order,
@@ -111,7 +112,7 @@ pub fn reduce_wsgb_with(
                 (q, phi * norm2(&diff), phi * norm_inf(&diff), scale)
             }
             _ => {
-                let c = 2f64.powi(2 * k as i32 - 1);
+                let c = powu(2.0, 2 * k - 1);
                 let (q, gmax) = uniform_step_f64(&pts, dim, l)?;
                 (
                     q,
@@ -131,7 +132,7 @@ pub fn reduce_wsgb_with(
             error_bound: exact_err2 * (1.0 + 64.0 * EPS) + allowance,
             error_inf: err_inf,
             paper_bound_11: wsgb_paper_bound_11(k, l, norm_inf(&diff)),
-            uniform_error_12: norm_inf(&lec) / 2f64.powi(2 * k as i32 - 1),
+            uniform_error_12: norm_inf(&lec) / powu(2.0, 2 * k - 1),
             lec,
         });
         l = wsgb_reduced_order(k, l);

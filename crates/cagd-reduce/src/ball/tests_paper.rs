@@ -23,8 +23,8 @@ fn public_vectors_reproduce() {
     for v in vs {
         let id = v["id"].as_str().unwrap();
         let (n, l) = (
-            v["params"]["n"].as_u64().unwrap() as usize,
-            v["params"]["L"].as_u64().unwrap() as usize,
+            usize::try_from(v["params"]["n"].as_u64().unwrap()).unwrap(),
+            usize::try_from(v["params"]["L"].as_u64().unwrap()).unwrap(),
         );
         let dim = inner_dim(&v["input"]["P"]);
         let c = WsgbCurve::new(flat(&v["input"]["P"]), dim, l).unwrap();
@@ -195,7 +195,7 @@ fn printed_interior_uniform_points_are_not_reproduced() {
     assert!((ours.curve.point(2)[0] - printed[4]).abs() > 1.0);
     let orig = WsgbCurve::new(P7.to_vec(), 2, 1).unwrap();
     let printed_curve = WsgbCurve::new(printed.to_vec(), 2, 1).unwrap();
-    let (_, dev) = super::reduce::measure(&orig, &printed_curve).unwrap();
+    let (_, dev) = reduce::measure(&orig, &printed_curve).unwrap();
     assert!(
         (dev - 0.723).abs() < 1e-3,
         "printed curve deviates by {dev}"
@@ -207,7 +207,7 @@ fn printed_interior_uniform_points_are_not_reproduced() {
     ];
     let orig6 = WsgbCurve::new(P6.to_vec(), 2, 1).unwrap();
     let (_, dev6) =
-        super::reduce::measure(&orig6, &WsgbCurve::new(printed6.to_vec(), 2, 1).unwrap()).unwrap();
+        reduce::measure(&orig6, &WsgbCurve::new(printed6.to_vec(), 2, 1).unwrap()).unwrap();
     assert!(
         (dev6 - 17.16).abs() < 1e-2,
         "printed degree-6 curve deviates by {dev6}"
