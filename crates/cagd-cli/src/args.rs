@@ -30,6 +30,10 @@ reduced patch by patch (l2 or chebyshev, C^K across knot lines with --continuity
 --tol T by the global fit direction by direction (--strategy fit, default; knots added and
 removed as for curves) or, with --strategy segments (the default when --method is given),
 patch by patch with every knot span split until the certified bound is within T.
+A WSGB curve ({\"type\":\"wsgb\",\"L\":L,\"points\":[...]}, seed 003) is reduced by --method
+perturbation or uniform (seed 003's methods) or any Bézier method through the exact
+conversion (bezier-perturbation: seed 000's perturbation), and written in WSGB form; with
+--tol T as \"wsgb-pieces\".
 
 merge reads one object {\"type\":\"beziers\",\"segments\":[[[x,y,...],...],...]} (optional
 \"weights\": one list or null per segment; optional \"breaks\": count + 1 increasing values,
