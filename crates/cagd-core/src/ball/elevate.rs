@@ -58,7 +58,10 @@ impl WsgbCurve {
     /// let e = c.elevate(1)?; // WSGB(5, 1)
     /// assert_eq!((e.degree(), e.order()), (5, 1));
     /// assert!(e.is_degenerate());
-    /// assert_eq!(e.inverse_elevate()?, c);
+    /// // Back to degree 4 with L' = min(1, max(floor(4/2) - 1, 0)) = 1, i.e. WSGB(4, 1):
+    /// let back = e.inverse_elevate()?;
+    /// assert_eq!(back.order(), 1);
+    /// assert_eq!(back.with_order(0)?, c);
     /// # Ok::<(), cagd_core::Error>(())
     /// ```
     ///
