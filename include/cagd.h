@@ -557,6 +557,14 @@ typedef struct CagdTriPatchList CagdTriPatchList;
 typedef struct CagdWsgbCurve CagdWsgbCurve;
 
 /**
+ * Opaque handle to the pieces of a WSGB reduction to a tolerance: piece `i` is a
+ * WSGB(m, L') curve on `[0, 1]` approximating the original on `[a_i, b_i]`
+ * (`piece_i(s) ~ whole(a_i + s (b_i - a_i))`) within its certified bound. Immutable;
+ * release with `cagd_wsgblist_free`.
+ */
+typedef struct CagdWsgbCurveList CagdWsgbCurveList;
+
+/**
  * How to reduce: a plain struct the caller owns. Fill it with
  * `cagd_reduce_options_init`, then change the fields you need.
  *
@@ -3955,6 +3963,92 @@ CagdStatus cagd_wsgb_leading_coefficient(const struct CagdWsgbCurve *curve,
                                          size_t out_cap,
                                          size_t *out_needed,
                                          bool *degenerate_out);
+
+/**
+ * Reduces a WSGB curve to degree `opts->target` so that every piece's certified
+ * Euclidean error is at most `opts->tolerance`, splitting at parameter midpoints (at most 30
+ * levels; `opts->max_depth` is not used). The pieces join continuously only when the method
+ * interpolates the end points (perturbation for target `>= 2`, Bézier methods with ends);
+ * the uniform method does not.
+ *
+ * Parameters:
+ * - `curve` (in): the curve.
+ * - `method` (in): a `CagdWsgbMethod` value.
+ * - `opts` (in): `target`, `tolerance` and, for `CAGD_WSGB_BEZIER`, `method`, `r`, `p`,
+ *   `l1`, `l2`. Borrowed.
+ * - `list_out` (out): on `CAGD_OK`, the pieces, owned by the caller (release with
+ *   `cagd_wsgblist_free`). Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*list_out` holds the pieces.
+ * - `CAGD_ERR_NULL_POINTER`: `curve`, `opts` or `list_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `method` not a `CagdWsgbMethod`, `opts->tolerance` not
+ *   finite and `> 0`, `opts->struct_size` too small, an invalid Bézier method code, or a
+ *   pointer is misaligned.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS`: as `cagd_wsgb_reduce`.
+ * - `CAGD_ERR_NO_CONVERGENCE`: the depth limit was reached before the tolerance.
+ * - `CAGD_ERR_NON_FINITE`: a coordinate overflows to infinity.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live WSGB handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; `list_out` NULL or writable.
+ */
+CagdStatus cagd_wsgb_reduce_to_tolerance(const struct CagdWsgbCurve *curve,
+                                         int32_t method,
+                                         const struct CagdReduceOptions *opts,
+                                         struct CagdWsgbCurveList **list_out);
+
+/**
+ * Releases a WSGB piece list (not the curves obtained from it). NULL is accepted and
+ * ignored; a non-NULL handle must be released exactly once. Does not change
+ * `cagd_last_error_message()`.
+ *
+ * # Safety
+ * `list` must be NULL or a live handle created by cagd that is not used afterwards.
+ */
+void cagd_wsgblist_free(struct CagdWsgbCurveList *list);
+
+/**
+ * Reads the number of pieces (`>= 1`).
+ *
+ * Returns:
+ * - `CAGD_OK`: `*count_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `count_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; `count_out` NULL or writable.
+ */
+CagdStatus cagd_wsgblist_count(const struct CagdWsgbCurveList *list, size_t *count_out);
+
+/**
+ * Reads piece `index`: a new handle to its curve, its interval `[start, end]` and its
+ * certified Euclidean error bound.
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `index` (in): `0 <= index < count`.
+ * - `curve_out` (out): on `CAGD_OK`, a new WSGB handle owned by the caller (release with
+ *   `cagd_wsgb_free`).
+ * - `start_out`, `end_out`, `bound_out` (out): on `CAGD_OK`, the interval and the bound.
+ *
+ * Returns:
+ * - `CAGD_OK`: the outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: an argument is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `index >= count`, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_wsgblist_get(const struct CagdWsgbCurveList *list,
+                             size_t index,
+                             struct CagdWsgbCurve **curve_out,
+                             double *start_out,
+                             double *end_out,
+                             double *bound_out);
 
 /**
  * Reduces a WSGB(n, L) curve to degree `opts->target` (order `L' = min(L, max(floor(m/2)

@@ -42,7 +42,8 @@
 //! - WSGB curves of seed 003 (`CagdWsgbCurve`, a handle of its own): creation,
 //!   evaluation by peeling, exact conversion to and from `CagdCurve`, elevation, leading
 //!   coefficient and degeneracy, and `cagd_wsgb_reduce` (perturbation, best uniform, or any
-//!   Bézier method) with the `CagdWsgbReport` struct.
+//!   Bézier method) with the `CagdWsgbReport` struct, `cagd_wsgb_reduce_to_tolerance`
+//!   (pieces in a `CagdWsgbCurveList`).
 //! - Every reduction of cagd-reduce: `cagd_curve_reduce` (twelve methods, with report),
 //!   `cagd_curve_reduce_batch`, `cagd_curve_reduce_to_tolerance` (C^k B-spline) and
 //!   `_stepwise` (seed 000 Algorithm 14.2.1), `cagd_curve_reduce_exact` /
@@ -122,6 +123,8 @@ mod tri_patch_ops;
 mod version;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod wsgb;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod wsgb_list;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod wsgb_reduce;
 
@@ -211,5 +214,9 @@ pub use wsgb::{
     CagdWsgbCurve, cagd_wsgb_elevate, cagd_wsgb_eval, cagd_wsgb_free, cagd_wsgb_from_bezier,
     cagd_wsgb_leading_coefficient, cagd_wsgb_new, cagd_wsgb_points, cagd_wsgb_shape,
     cagd_wsgb_to_bezier,
+};
+pub use wsgb_list::{
+    CagdWsgbCurveList, cagd_wsgb_reduce_to_tolerance, cagd_wsgblist_count, cagd_wsgblist_free,
+    cagd_wsgblist_get,
 };
 pub use wsgb_reduce::{CagdWsgbMethod, CagdWsgbReport, cagd_wsgb_reduce};

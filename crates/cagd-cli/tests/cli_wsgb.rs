@@ -47,7 +47,10 @@ fn check_passes_independent_vectors_of_unseen_forms() {
     // Other n, L, dimensions (n = 2..12, 1-D to 3-D, L up to the Wang–Ball order), made by
     // tests/data/wsgb_reference.py from the spec's formulas in Python fractions (its own
     // basis, matrix solve, inverse elevation and 4001-point grid).
-    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/wsgb_independent.json");
+    let file = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/wsgb_independent.json"
+    );
     let out = cagd(&["check", file], "");
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success(), "{text}");

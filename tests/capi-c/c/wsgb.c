@@ -153,3 +153,51 @@ cleanup:
     cagd_wsgb_free(c);
     return rc;
 }
+
+int cagd_ctest_wsgb_reduce_to_tolerance(void) {
+    int rc = 1;
+    CagdWsgbCurve *c = NULL, *piece = NULL;
+    CagdWsgbCurveList *list = NULL;
+    CagdReduceOptions o;
+    double start = -1, end = -1, bound = -1, prev_end = 0.0, x[2], y[2];
+    size_t count = 0, i, k, needed = 0, n = 0, l = 0, dim = 0;
+
+    CHECK_OK(cagd_wsgb_new(P7, 8, 2, 1, &c));
+    CHECK_OK(cagd_reduce_options_init(&o));
+    o.target = 4;
+    o.tolerance = 0.5;
+    CHECK_OK(cagd_wsgb_reduce_to_tolerance(c, CAGD_WSGB_PERTURBATION, &o, &list));
+    CHECK_OK(cagd_wsgblist_count(list, &count));
+    CHECK(count > 1);
+    for (i = 0; i < count; ++i) {
+        CHECK_OK(cagd_wsgblist_get(list, i, &piece, &start, &end, &bound));
+        CHECK(start == prev_end && end > start && bound <= 0.5);
+        CHECK_OK(cagd_wsgb_shape(piece, &n, &l, &dim));
+        CHECK(n == 4 && l == 1 && dim == 2);
+        /* independent check: the piece against the original at its own parameters */
+        for (k = 0; k <= 20; ++k) {
+            double s = (double)k / 20.0;
+            CHECK_OK(cagd_wsgb_eval(piece, s, x, 2, &needed));
+            CHECK_OK(cagd_wsgb_eval(c, start + s * (end - start), y, 2, &needed));
+            CHECK(hypot(x[0] - y[0], x[1] - y[1]) <= bound + 1e-9);
+        }
+        prev_end = end;
+        cagd_wsgb_free(piece);
+        piece = NULL;
+    }
+    CHECK(prev_end == 1.0);
+    CHECK_STATUS(cagd_wsgblist_get(list, count, &piece, &start, &end, &bound),
+                 CAGD_ERR_INVALID_ARGUMENT);
+    o.tolerance = 0.0;
+    cagd_wsgblist_free(list);
+    list = NULL;
+    CHECK_STATUS(cagd_wsgb_reduce_to_tolerance(c, CAGD_WSGB_UNIFORM, &o, &list),
+                 CAGD_ERR_INVALID_ARGUMENT);
+    CHECK(list == NULL);
+    rc = 0;
+cleanup:
+    cagd_wsgb_free(piece);
+    cagd_wsgblist_free(list);
+    cagd_wsgb_free(c);
+    return rc;
+}

@@ -127,6 +127,7 @@ c_tests![
     // c/wsgb.c
     wsgb_paper_example,
     wsgb_bad_input,
+    wsgb_reduce_to_tolerance,
     // cpp/header_compiles.cpp
     cpp_header,
 ];
