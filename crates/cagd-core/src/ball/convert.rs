@@ -2,8 +2,13 @@
 //! `K u^a (1-u)^b = sum_{k=a}^{n-b} K C(n-a-b, k-a) / C(n, k) B_k^n`), on exact rationals
 //! and, for `f64` points, exactly with one rounding at the end.
 
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex, OnceLock};
+
+use num_bigint::BigInt;
+use num_integer::Integer;
 use num_rational::BigRational;
-use num_traits::Zero;
+use num_traits::{One, Zero};
 
 use super::scalar::{round_exact_points, to_exact_points};
 use super::{WsgbCurve, check_wsgb_order};
@@ -12,20 +17,73 @@ use crate::{
     to_bernstein_exact,
 };
 
-/// `out_i = sum_j m_ij p_j` for every coordinate, exactly.
-fn apply(m: &ExactMatrix, pts: &[BigRational], dim: usize) -> Vec<BigRational> {
-    let mut out = vec![BigRational::zero(); m.nrows() * dim];
+/// A basis-change matrix with each row over one common denominator: row `i` is
+/// `num[i][j] / den[i]`, integers, so that a product with integer vectors needs no fraction
+/// arithmetic until the end.
+struct IntRows {
+    num: Vec<Vec<BigInt>>,
+    den: Vec<BigInt>,
+}
+
+fn int_rows(m: &ExactMatrix) -> IntRows {
+    let mut num = Vec::with_capacity(m.nrows());
+    let mut den = Vec::with_capacity(m.nrows());
     for i in 0..m.nrows() {
-        for (j, a) in m.row(i).iter().enumerate() {
-            if a.is_zero() {
-                continue;
-            }
-            for d in 0..dim {
-                let p = &pts[j * dim + d];
-                if !p.is_zero() {
-                    out[i * dim + d] += a * p;
+        let row = m.row(i);
+        let l = row.iter().fold(BigInt::one(), |acc, x| acc.lcm(x.denom()));
+        num.push(row.iter().map(|x| x.numer() * (&l / x.denom())).collect());
+        den.push(l);
+    }
+    IntRows { num, den }
+}
+
+/// The integer-row form of the WSGB(n, l) <-> Bernstein matrices, cached per
+/// `(n, l, to_bezier)`.
+fn cached_rows(n: usize, l: usize, to_bezier: bool) -> Result<Arc<IntRows>> {
+    type Cache = OnceLock<Mutex<HashMap<(usize, usize, bool), Arc<IntRows>>>>;
+    static CACHE: Cache = OnceLock::new();
+    let cache = CACHE.get_or_init(Default::default);
+    let key = (n, l, to_bezier);
+    if let Some(r) = cache
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+        .get(&key)
+    {
+        return Ok(Arc::clone(r));
+    }
+    let m = if to_bezier {
+        to_bernstein_exact(Basis::Wsgb { l }, n)?
+    } else {
+        from_bernstein_exact(Basis::Wsgb { l }, n)?
+    };
+    let rows = Arc::new(int_rows(&m));
+    cache
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+        .insert(key, Arc::clone(&rows));
+    Ok(rows)
+}
+
+/// `out_i = sum_j m_ij p_j` for every coordinate, exactly: per coordinate the points over
+/// one common denominator, integer dot products, one fraction per output.
+fn apply(m: &IntRows, pts: &[BigRational], dim: usize) -> Vec<BigRational> {
+    let np = pts.len() / dim;
+    let mut out = vec![BigRational::zero(); m.num.len() * dim];
+    for d in 0..dim {
+        let col: Vec<&BigRational> = (0..np).map(|j| &pts[j * dim + d]).collect();
+        let cden = col.iter().fold(BigInt::one(), |acc, x| acc.lcm(x.denom()));
+        let ints: Vec<BigInt> = col
+            .iter()
+            .map(|x| x.numer() * (&cden / x.denom()))
+            .collect();
+        for (i, (row, rden)) in m.num.iter().zip(&m.den).enumerate() {
+            let mut s = BigInt::zero();
+            for (a, p) in row.iter().zip(&ints) {
+                if !a.is_zero() && !p.is_zero() {
+                    s += a * p;
                 }
             }
+            out[i * dim + d] = BigRational::new(s, rden * &cden);
         }
     }
     out
@@ -60,8 +118,8 @@ pub fn wsgb_to_bezier_exact(
     l: usize,
 ) -> Result<Vec<BigRational>> {
     let np = exact_count(points, dim, l)?;
-    let m = to_bernstein_exact(Basis::Wsgb { l }, np - 1)?;
-    Ok(apply(&m, points, dim))
+    let rows = cached_rows(np - 1, l, true)?;
+    Ok(apply(&rows, points, dim))
 }
 
 /// The WSGB(n, L) points of the Bézier curve with exact points `points`: `p = D^-1 b`
@@ -75,8 +133,8 @@ pub fn bezier_to_wsgb_exact(
     l: usize,
 ) -> Result<Vec<BigRational>> {
     let np = exact_count(points, dim, l)?;
-    let m = from_bernstein_exact(Basis::Wsgb { l }, np - 1)?;
-    Ok(apply(&m, points, dim))
+    let rows = cached_rows(np - 1, l, false)?;
+    Ok(apply(&rows, points, dim))
 }
 
 impl WsgbCurve {
