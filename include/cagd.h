@@ -4012,6 +4012,10 @@ void cagd_wsgblist_free(struct CagdWsgbCurveList *list);
 /**
  * Reads the number of pieces (`>= 1`).
  *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `count_out` (out): on `CAGD_OK`, the number of pieces.
+ *
  * Returns:
  * - `CAGD_OK`: `*count_out` is written.
  * - `CAGD_ERR_NULL_POINTER`: `list` or `count_out` is NULL.

@@ -8,8 +8,8 @@ use cagd_core::{curve_distance, tensor_patch_distance, tri_patch_distance};
 use crate::boundary::{Failure, OUT, OutNames, boundary, disjoint, handle_ref, out_ref, slice_out};
 use crate::curve::CagdCurve;
 use crate::status::CagdStatus;
-use crate::tensor_patch::CagdTensorPatch;
-use crate::tri_patch::CagdTriPatch;
+use crate::tensorpatch::CagdTensorPatch;
+use crate::tripatch::CagdTriPatch;
 
 /// The forward difference `Delta^n P_0 = sum_{i=0..n} (-1)^(n-i) C(n,i) P_i` of a degree-`n`
 /// curve (seed 000 eq. 14.1.1): the curve has degree `< n` exactly when it is zero, and it is

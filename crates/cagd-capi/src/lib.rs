@@ -64,21 +64,7 @@ mod boundary;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod bspline;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
-mod bspline_arrays;
-#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
-mod bspline_merge;
-#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
-mod bspline_ops;
-#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
-mod bspline_reduce;
-#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
-mod bspline_surface;
-#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod curve;
-#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
-mod curve_list;
-#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
-mod curve_ops;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod invariants;
 #[allow(
@@ -88,72 +74,46 @@ mod invariants;
 mod last_error;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod matrices;
+#[allow(
+    unsafe_code,
+    reason = "reads the caller's options through a raw pointer"
+)]
+mod options;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
-mod patch_list;
-#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
-mod patch_reduce;
+mod patch;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod reduce;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
-mod reduce_extra;
-#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
-mod reduce_options;
-#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
-mod reduce_tolerance;
-#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod report;
-#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
-mod report_piecewise;
-#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
-mod report_spline;
-mod spline_strategy;
 #[allow(
     unsafe_code,
     reason = "C entry points (no_mangle) returning static strings"
 )]
 mod status;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
-mod tensor_patch;
+mod tensorpatch;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
-mod tensor_patch_ops;
-#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
-mod tri_patch;
-#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
-mod tri_patch_ops;
+mod tripatch;
 mod version;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod wsgb;
-#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
-mod wsgb_list;
-#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
-mod wsgb_reduce;
 
 pub use bspline::{
-    CagdBSpline, cagd_bspline_degree, cagd_bspline_dim, cagd_bspline_domain, cagd_bspline_free,
-    cagd_bspline_is_rational, cagd_bspline_n_points, cagd_bspline_new, cagd_bspline_new_rational,
-};
-pub use bspline_arrays::{cagd_bspline_knots, cagd_bspline_points, cagd_bspline_weights};
-pub use bspline_merge::cagd_bspline_from_beziers;
-pub use bspline_ops::{
-    cagd_bspline_derivatives, cagd_bspline_eval, cagd_bspline_insert_knot, cagd_bspline_to_beziers,
-};
-pub use bspline_reduce::{cagd_bspline_reduce, cagd_bspline_reduce_uniform};
-pub use bspline_surface::{
-    CagdBSplineSurface, cagd_bsplinesurface_array, cagd_bsplinesurface_eval,
+    CagdBSpline, CagdBSplineSurface, cagd_bspline_degree, cagd_bspline_derivatives,
+    cagd_bspline_dim, cagd_bspline_domain, cagd_bspline_eval, cagd_bspline_free,
+    cagd_bspline_from_beziers, cagd_bspline_insert_knot, cagd_bspline_is_rational,
+    cagd_bspline_knots, cagd_bspline_n_points, cagd_bspline_new, cagd_bspline_new_rational,
+    cagd_bspline_points, cagd_bspline_reduce, cagd_bspline_reduce_uniform, cagd_bspline_to_beziers,
+    cagd_bspline_weights, cagd_bsplinesurface_array, cagd_bsplinesurface_eval,
     cagd_bsplinesurface_free, cagd_bsplinesurface_new, cagd_bsplinesurface_reduce,
     cagd_bsplinesurface_reduce_to_tolerance, cagd_bsplinesurface_shape,
 };
 pub use curve::{
-    CagdCurve, cagd_curve_degree, cagd_curve_dim, cagd_curve_free, cagd_curve_is_rational,
-    cagd_curve_new, cagd_curve_new_rational, cagd_curve_points, cagd_curve_weights,
-};
-pub use curve_list::{
-    CagdCurveList, cagd_curvelist_bound, cagd_curvelist_count, cagd_curvelist_free,
+    CagdCurve, CagdCurveList, cagd_curve_degree, cagd_curve_dim, cagd_curve_elevate,
+    cagd_curve_eval, cagd_curve_eval_many, cagd_curve_free, cagd_curve_is_rational, cagd_curve_new,
+    cagd_curve_new_rational, cagd_curve_points, cagd_curve_segment, cagd_curve_subdivide,
+    cagd_curve_weights, cagd_curvelist_bound, cagd_curvelist_count, cagd_curvelist_free,
     cagd_curvelist_get, cagd_curvelist_interval,
-};
-pub use curve_ops::{
-    cagd_curve_elevate, cagd_curve_eval, cagd_curve_eval_many, cagd_curve_segment,
-    cagd_curve_subdivide,
 };
 pub use invariants::{
     cagd_curve_distance, cagd_curve_forward_difference, cagd_tensorpatch_degeneracy,
@@ -164,59 +124,42 @@ pub use matrices::{
     CagdBasis, cagd_basis_matrix, cagd_perturbation_error_factor, cagd_subdivision_levels,
     cagd_uniform_bspline_matrix,
 };
-pub use patch_list::{
-    CagdTensorPatchList, CagdTriPatchList, cagd_tensorpatchlist_count, cagd_tensorpatchlist_free,
-    cagd_tensorpatchlist_get, cagd_tripatchlist_count, cagd_tripatchlist_free,
-    cagd_tripatchlist_get,
-};
-pub use patch_reduce::{
-    cagd_report_patch, cagd_tensorpatch_reduce, cagd_tensorpatch_reduce_to_tolerance,
-    cagd_tripatch_reduce, cagd_tripatch_reduce_to_tolerance,
-};
-pub use reduce::{cagd_curve_reduce, cagd_curve_reduce_batch};
-pub use reduce_extra::{
-    CAGD_EXACT_DEGREE_REL_TOL, cagd_curve_exact_degree, cagd_curve_reduce_exact,
-    cagd_curve_reduce_g1_optimal, cagd_reduce_operator, cagd_report_method_params,
-};
-pub use reduce_options::{
+pub use options::{
     CagdErrorSpace, CagdMerge, CagdPatchConstraint, CagdPatchMethod, CagdReduceMethod,
-    CagdReduceOptions, cagd_reduce_options_init,
+    CagdReduceOptions, CagdSplineStrategy,
 };
-pub use reduce_tolerance::{
-    cagd_curve_reduce_to_tolerance, cagd_curve_reduce_to_tolerance_stepwise,
+pub use patch::{
+    CagdTensorPatchList, CagdTriPatchList, cagd_report_patch, cagd_tensorpatch_reduce,
+    cagd_tensorpatch_reduce_to_tolerance, cagd_tensorpatchlist_count, cagd_tensorpatchlist_free,
+    cagd_tensorpatchlist_get, cagd_tripatch_reduce, cagd_tripatch_reduce_to_tolerance,
+    cagd_tripatchlist_count, cagd_tripatchlist_free, cagd_tripatchlist_get,
+};
+pub use reduce::{
+    CAGD_EXACT_DEGREE_REL_TOL, cagd_curve_exact_degree, cagd_curve_reduce, cagd_curve_reduce_batch,
+    cagd_curve_reduce_exact, cagd_curve_reduce_g1_optimal, cagd_curve_reduce_to_tolerance,
+    cagd_curve_reduce_to_tolerance_stepwise, cagd_reduce_operator, cagd_reduce_options_init,
+    cagd_report_method_params,
 };
 pub use report::{
     CagdReport, cagd_report_bound, cagd_report_free, cagd_report_max_error, cagd_report_method,
-    cagd_report_space,
+    cagd_report_pieces, cagd_report_piecewise, cagd_report_space, cagd_report_spline,
+    cagd_report_spline_continuity, cagd_report_spline_strategy, cagd_report_step_bounds,
 };
-pub use report_piecewise::{cagd_report_pieces, cagd_report_piecewise, cagd_report_step_bounds};
-pub use report_spline::{
-    cagd_report_spline, cagd_report_spline_continuity, cagd_report_spline_strategy,
-};
-pub use spline_strategy::CagdSplineStrategy;
 pub use status::{CagdStatus, cagd_status_name, status_of_core};
-pub use tensor_patch::{
-    CagdTensorPatch, cagd_tensorpatch_free, cagd_tensorpatch_new, cagd_tensorpatch_points,
-    cagd_tensorpatch_shape,
+pub use tensorpatch::{
+    CagdTensorPatch, cagd_tensorpatch_elevate, cagd_tensorpatch_eval, cagd_tensorpatch_free,
+    cagd_tensorpatch_new, cagd_tensorpatch_points, cagd_tensorpatch_shape,
+    cagd_tensorpatch_subdivide_u, cagd_tensorpatch_subdivide_v,
 };
-pub use tensor_patch_ops::{
-    cagd_tensorpatch_elevate, cagd_tensorpatch_eval, cagd_tensorpatch_subdivide_u,
-    cagd_tensorpatch_subdivide_v,
-};
-pub use tri_patch::{
-    CagdTriPatch, cagd_tripatch_free, cagd_tripatch_new, cagd_tripatch_points, cagd_tripatch_shape,
-};
-pub use tri_patch_ops::{
-    cagd_tripatch_elevate, cagd_tripatch_eval, cagd_tripatch_subdivide_midpoint,
+pub use tripatch::{
+    CagdTriPatch, cagd_tripatch_elevate, cagd_tripatch_eval, cagd_tripatch_free, cagd_tripatch_new,
+    cagd_tripatch_points, cagd_tripatch_shape, cagd_tripatch_subdivide_midpoint,
 };
 pub use version::{CAGD_VERSION_MAJOR, CAGD_VERSION_MINOR, CAGD_VERSION_PATCH};
 pub use wsgb::{
-    CagdWsgbCurve, cagd_wsgb_elevate, cagd_wsgb_eval, cagd_wsgb_free, cagd_wsgb_from_bezier,
-    cagd_wsgb_leading_coefficient, cagd_wsgb_new, cagd_wsgb_points, cagd_wsgb_shape,
-    cagd_wsgb_to_bezier,
-};
-pub use wsgb_list::{
-    CagdWsgbCurveList, cagd_wsgb_reduce_to_tolerance, cagd_wsgblist_count, cagd_wsgblist_free,
+    CagdWsgbCurve, CagdWsgbCurveList, CagdWsgbMethod, CagdWsgbReport, cagd_wsgb_elevate,
+    cagd_wsgb_eval, cagd_wsgb_free, cagd_wsgb_from_bezier, cagd_wsgb_leading_coefficient,
+    cagd_wsgb_new, cagd_wsgb_points, cagd_wsgb_reduce, cagd_wsgb_reduce_to_tolerance,
+    cagd_wsgb_shape, cagd_wsgb_to_bezier, cagd_wsgblist_count, cagd_wsgblist_free,
     cagd_wsgblist_get,
 };
-pub use wsgb_reduce::{CagdWsgbMethod, CagdWsgbReport, cagd_wsgb_reduce};

@@ -8,11 +8,11 @@
 
 use std::fmt::Write as _;
 use std::path::Path;
+use std::time::Instant;
 
 use cagd_core::WsgbCurve;
 use cagd_reduce::{Method, WsgbMethod, reduce_wsgb, reduce_wsgb_with};
 
-use crate::demo::time_us;
 use crate::picture::panels;
 use crate::shape::Shape;
 use crate::svg;
@@ -23,6 +23,20 @@ const P7: [f64; 16] = [
 const P6: [f64; 14] = [
     200., 130., 160., 220., 220., 340., 300., 400., 370., 350., 420., 200., 400., 160.,
 ];
+
+/// Median time of `reps` runs of `f`, in microseconds (kept here so that this module does
+/// not import `demo`, which calls it).
+fn time_us(reps: usize, mut f: impl FnMut()) -> f64 {
+    let mut t: Vec<f64> = (0..reps)
+        .map(|_| {
+            let s = Instant::now();
+            f();
+            s.elapsed().as_secs_f64() * 1e6
+        })
+        .collect();
+    t.sort_by(f64::total_cmp);
+    t[t.len() / 2]
+}
 
 /// Appends the WSGB rows to `table` and writes `wsgb.svg` into `out`.
 pub(crate) fn run(out: &Path, table: &mut String) -> Result<(), String> {

@@ -205,7 +205,17 @@ fn parse_shape(obj: &Value, path: &str) -> Result<RawShape, InputError> {
     }
     let points = point_list(field(obj, path, "points")?, &format!("{path}.points"))?;
     match ty {
-        "wsgb" => crate::wsgb_cmd::parse(obj, path, points),
+        "wsgb" => {
+            // Seed 003's curves are polynomial (see crate::wsgb_cmd).
+            if obj.get("weights").is_some() {
+                return Err(InputError::new(
+                    format!("{path}.weights"),
+                    "rational WSGB curves are not supported (seed 003 has none)",
+                ));
+            }
+            let l = count(field(obj, path, "L")?, &format!("{path}.L"))?;
+            Ok(RawShape::Wsgb { l, points })
+        }
         "bezier" => {
             let weights = optional_weights(obj, path, points.len())?;
             Ok(RawShape::Bezier { points, weights })

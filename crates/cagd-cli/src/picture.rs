@@ -63,8 +63,9 @@ pub(crate) fn curve_panels(
 pub(crate) fn panels(title: &str, input: &Shape, output: &Shape) -> Vec<Panel> {
     match (input, output) {
         (Shape::Bezier(a), Shape::Bezier(b)) => curve_panels(title, a, b).to_vec(),
-        (Shape::Wsgb(a), Shape::Wsgb(b)) => crate::wsgb_cmd::bezier(a)
-            .zip(crate::wsgb_cmd::bezier(b))
+        (Shape::Wsgb(a), Shape::Wsgb(b)) => a
+            .to_bezier()
+            .and_then(|a| Ok((a, b.to_bezier()?)))
             .map(|(a, b)| curve_panels(title, &a, &b).to_vec())
             .unwrap_or_default(),
         (Shape::Bezier(a), Shape::BSpline(b)) => {

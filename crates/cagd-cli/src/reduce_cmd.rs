@@ -217,7 +217,16 @@ pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<O
                     pair: result.map(|r| (shape.clone(), r)),
                 });
             }
-            Shape::Wsgb(c) => out.push(crate::wsgb_cmd::reduce(c, args, name, path)?),
+            Shape::Wsgb(c) => {
+                let (json, pair) =
+                    crate::wsgb_cmd::reduce(c, args, name, reduce_curve, report_json).map_err(
+                        |(at, message)| Failure {
+                            path: at.unwrap_or_else(|| path.clone()),
+                            message,
+                        },
+                    )?;
+                out.push(Output { json, pair });
+            }
             Shape::BSplineSurface(s) => {
                 let (json, result) = crate::surface_cmd::reduce(s, args, path)?;
                 out.push(Output {

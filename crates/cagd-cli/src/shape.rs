@@ -46,7 +46,14 @@ impl Shape {
                 };
                 Shape::Bezier(c.map_err(|e| locate(path, &e))?)
             }
-            RawShape::Wsgb { l, points } => crate::wsgb_cmd::build(l, points, path)?,
+            RawShape::Wsgb { l, points } => Shape::Wsgb(
+                cagd_core::WsgbCurve::new(points.coords, points.dim, l).map_err(|e| match e {
+                    Error::BadParameter { name: "L", .. } => {
+                        InputError::new(format!("{path}.L"), e.to_string())
+                    }
+                    _ => locate(path, &e),
+                })?,
+            ),
             RawShape::Tensor { degree, points } => Shape::Tensor(
                 TensorPatch::new(points.coords, degree.0, degree.1, points.dim)
                     .map_err(|e| locate(path, &e))?,
@@ -116,7 +123,9 @@ impl Shape {
                 json!({"type": "triangle", "degree": t.degree(), "points": rows(t.points(), t.dim())})
             }
             Shape::BSplineSurface(s) => crate::surface_shape::to_json(s),
-            Shape::Wsgb(c) => crate::wsgb_cmd::to_json(c),
+            Shape::Wsgb(c) => {
+                json!({"type": "wsgb", "L": c.order(), "points": rows(c.points(), c.dim())})
+            }
         }
     }
 }

@@ -14,54 +14,32 @@
 
 use cagd_core::{BezierCurve, WsgbCurve};
 use cagd_reduce::{
-    WsgbMethod, WsgbReduction, WsgbReport, reduce_wsgb, reduce_wsgb_to_tolerance,
-    reduce_wsgb_via_bezier,
+    Reduction, Report, WsgbMethod, WsgbReduction, WsgbReport, reduce_wsgb,
+    reduce_wsgb_to_tolerance, reduce_wsgb_via_bezier,
 };
 use serde_json::{Value, json};
 
 use crate::args::ReduceArgs;
-use crate::input::{InputError, PointList, RawShape, count, field};
 use crate::methods::{Plan, plan};
-use crate::reduce_cmd::{Failure, Output, report_json};
-use crate::shape::{Shape, locate, rows};
+use crate::shape::{Shape, rows};
 
-/// Parses the fields of a `wsgb` object after its points.
-pub(crate) fn parse(obj: &Value, path: &str, points: PointList) -> Result<RawShape, InputError> {
-    if obj.get("weights").is_some() {
-        return Err(InputError::new(
-            format!("{path}.weights"),
-            "rational WSGB curves are not supported (seed 003 has none)",
-        ));
-    }
-    let l = count(field(obj, path, "L")?, &format!("{path}.L"))?;
-    Ok(RawShape::Wsgb { l, points })
-}
+/// `reduce_cmd`'s Bézier reduction by a plan (passed in, so that this module does not
+/// import `reduce_cmd`, which calls it).
+pub(crate) type ReduceCurve = fn(&BezierCurve, usize, Plan, bool) -> cagd_reduce::Result<Reduction>;
 
-/// Validates a WSGB curve with cagd-core.
-pub(crate) fn build(l: usize, points: PointList, path: &str) -> Result<Shape, InputError> {
-    WsgbCurve::new(points.coords, points.dim, l)
-        .map(Shape::Wsgb)
-        .map_err(|e| match e {
-            cagd_core::Error::BadParameter { name: "L", .. } => {
-                InputError::new(format!("{path}.L"), e.to_string())
-            }
-            _ => locate(path, &e),
-        })
-}
+/// `reduce_cmd`'s report JSON of a Bézier reduction (passed in likewise).
+pub(crate) type ReportJson = fn(&Report) -> Value;
+
+/// A failure: the argument or JSON path at fault (`None`: the input object) and the message.
+pub(crate) type WsgbFailure = (Option<String>, String);
 
 /// The curve in the input JSON form.
-pub(crate) fn to_json(c: &WsgbCurve) -> Value {
+fn to_json(c: &WsgbCurve) -> Value {
     json!({"type": "wsgb", "L": c.order(), "points": rows(c.points(), c.dim())})
 }
 
-/// The Bézier form for pictures (the curve itself if the conversion fails, which it cannot
-/// for a valid curve).
-pub(crate) fn bezier(c: &WsgbCurve) -> Option<BezierCurve> {
-    c.to_bezier().ok()
-}
-
 /// The report in the JSON form of the command.
-fn wsgb_report_json(r: &WsgbReport) -> Value {
+fn wsgb_report_json(r: &WsgbReport, report_json: ReportJson) -> Value {
     let steps: Vec<Value> = r
         .steps
         .iter()
@@ -97,7 +75,7 @@ fn wsgb_report_json(r: &WsgbReport) -> Value {
     }
     if let Some(b) = &r.bezier {
         v["bezier_report"] = report_json(b);
-        v["method_params"] = crate::reduce_cmd::method_params(&b.method);
+        v["method_params"] = v["bezier_report"]["method_params"].clone();
     }
     v
 }
@@ -132,49 +110,46 @@ fn wsgb_plan(name: &str, args: &ReduceArgs) -> Result<WsgbPlan, String> {
 }
 
 /// One reduction to degree `m`.
-fn reduce_to(c: &WsgbCurve, m: usize, how: &WsgbPlan) -> cagd_reduce::Result<WsgbReduction> {
+fn reduce_to(
+    c: &WsgbCurve,
+    m: usize,
+    how: &WsgbPlan,
+    reduce_curve: ReduceCurve,
+) -> cagd_reduce::Result<WsgbReduction> {
     match *how {
         WsgbPlan::Seed(method) => reduce_wsgb(c, m, method),
         WsgbPlan::Bezier(Plan::Linear(method)) => reduce_wsgb(c, m, WsgbMethod::Bezier(method)),
         WsgbPlan::Bezier(p @ Plan::PerturbationG1) => {
-            reduce_wsgb_via_bezier(c, |b| crate::reduce_cmd::reduce_curve(b, m, p, false))
+            reduce_wsgb_via_bezier(c, |b| reduce_curve(b, m, p, false))
         }
     }
 }
 
-/// `cagd reduce` on a WSGB curve (`path` names it in errors).
+/// `cagd reduce` on a WSGB curve: the output JSON and, for pictures, the input and result.
 pub(crate) fn reduce(
     c: &WsgbCurve,
     args: &ReduceArgs,
     name: &str,
-    path: &str,
-) -> Result<Output, Failure> {
-    let usage = |message: String| Failure {
-        path: "--method".into(),
-        message,
-    };
-    let fail = |e: cagd_reduce::Error| Failure {
-        path: path.to_string(),
-        message: e.to_string(),
-    };
+    reduce_curve: ReduceCurve,
+    report_json: ReportJson,
+) -> Result<(Value, Option<(Shape, Shape)>), WsgbFailure> {
+    let usage = |message: String| (Some("--method".to_string()), message);
+    let fail = |e: cagd_reduce::Error| (None, e.to_string());
     if args.to.1.is_some() {
-        return Err(Failure {
-            path: "--to".into(),
-            message: "a WSGB curve has one degree: give --to M".into(),
-        });
+        return Err((
+            Some("--to".into()),
+            "a WSGB curve has one degree: give --to M".into(),
+        ));
     }
     let how = wsgb_plan(name, args).map_err(usage)?;
     let m = args.to.0;
     let input = Shape::Wsgb(c.clone());
     let Some(tol) = args.tol else {
-        let red = reduce_to(c, m, &how).map_err(fail)?;
+        let red = reduce_to(c, m, &how, reduce_curve).map_err(fail)?;
         let result = Shape::Wsgb(red.curve.clone());
         let mut v = to_json(&red.curve);
-        v["report"] = wsgb_report_json(&red.report);
-        return Ok(Output {
-            json: v,
-            pair: Some((input, result)),
-        });
+        v["report"] = wsgb_report_json(&red.report, report_json);
+        return Ok((v, Some((input, result))));
     };
     let method = match how {
         WsgbPlan::Seed(m) => m,
@@ -213,5 +188,5 @@ pub(crate) fn reduce(
             "space": "euclidean",
         },
     });
-    Ok(Output { json, pair: None })
+    Ok((json, None))
 }

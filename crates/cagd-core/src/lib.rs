@@ -52,33 +52,15 @@
 
 mod ball;
 mod basis;
-mod basis_ball;
-mod basis_closed;
-mod bezier_curve;
-mod bezier_extract;
-mod bezier_ops;
+mod bezier;
 mod binomial;
-mod bspline_basis;
-mod bspline_curve;
-mod bspline_eval;
-mod bspline_merge;
-mod bspline_surface;
-mod degeneracy_exact;
+mod bspline;
 mod distance;
-mod distance_2d;
 mod error;
 mod exact;
 pub mod kernel;
-mod knot_insert;
-mod knot_removal;
-mod knots;
+mod patch;
 mod quadrature;
-mod tensor_ops;
-mod tensor_patch;
-mod tri_ops;
-mod tri_patch;
-mod tri_subdivide;
-mod uniform_bspline;
 mod validate;
 
 pub use ball::{
@@ -87,27 +69,27 @@ pub use ball::{
     wsgb_lec_difference, wsgb_lec_factor, wsgb_reduced_order, wsgb_to_bezier_exact,
 };
 pub use basis::{
-    Basis, convert_points, from_bernstein, from_bernstein_exact, to_bernstein, to_bernstein_exact,
+    BallTerm, Basis, convert_points, from_bernstein, from_bernstein_exact, to_bernstein,
+    to_bernstein_exact, wsgb_max_l, wsgb_terms,
 };
-pub use basis_ball::{BallTerm, wsgb_max_l, wsgb_terms};
-pub use bezier_curve::BezierCurve;
-pub use bezier_extract::BezierSegment;
+pub use bezier::BezierCurve;
 pub use binomial::{
     MAX_BINOMIAL_N, MAX_DEGREE, binomial, binomial_f64, check_degree, sign_binomial_f64,
     try_binomial,
 };
-pub use bspline_basis::basis_functions;
-pub use bspline_curve::BSplineCurve;
-pub use bspline_surface::{BSplineSurface, SurfacePatchPiece};
-pub use degeneracy_exact::{curve_invariant_exact, tensor_invariants_exact, tri_invariants_exact};
-pub use distance::{curve_distance, max_distance_1d};
-pub use distance_2d::{Domain2, max_distance_2d, tensor_patch_distance, tri_patch_distance};
+pub use bspline::{
+    BSplineCurve, BSplineSurface, BezierSegment, KnotRemoval, SurfacePatchPiece, basis_functions,
+    check_knots, find_span, knot_multiplicity, s_matrix, s_matrix_exact, s_matrix_inverse,
+    s_matrix_inverse_exact,
+};
+pub use distance::{
+    Domain2, curve_distance, max_distance_1d, max_distance_2d, tensor_patch_distance,
+    tri_patch_distance,
+};
 pub use error::{Error, Result};
-pub use exact::ExactMatrix;
-pub use knot_removal::KnotRemoval;
-pub use knots::{check_knots, find_span, knot_multiplicity};
+pub use exact::{
+    ExactMatrix, curve_invariant_exact, tensor_invariants_exact, tri_invariants_exact,
+};
+pub use patch::{TensorPatch, TriPatch, tri_count, tri_index};
 pub use quadrature::{MAX_GAUSS_NODES, gauss_legendre};
-pub use tensor_patch::TensorPatch;
-pub use tri_patch::{TriPatch, tri_count, tri_index};
-pub use uniform_bspline::{s_matrix, s_matrix_exact, s_matrix_inverse, s_matrix_inverse_exact};
 pub use validate::{check_finite_param, check_points, check_tolerance, check_weights};

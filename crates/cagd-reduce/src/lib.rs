@@ -147,47 +147,12 @@
 //! with uniform knot refinement until the certified bound meets a tolerance.
 #![forbid(unsafe_code)]
 
-mod alg_14_2_1;
 mod ball;
-mod banded_lsq;
-mod batch;
-mod bspline_fit;
-mod bspline_global;
-mod bspline_knots;
-mod bspline_measure;
-mod bspline_piegl_tiller;
-mod bspline_reduce;
-mod bspline_segments;
-mod bspline_surface_fit;
-mod bspline_surface_reduce;
-mod bspline_surface_tolerance;
-mod bspline_uniform;
-mod chebyshev;
-mod ends;
+mod bezier;
+mod bspline;
 mod exact;
-mod exact_degree;
-mod g1;
-mod hull;
-mod least_squares;
-mod measure;
-mod method;
-mod one_step;
-mod operator;
-mod patch_exact;
-mod patch_report;
-mod patch_tensor;
-mod patch_tensor_curves;
-mod patch_tolerance;
-mod patch_tri;
-mod patch_tri_l2;
-mod piecewise;
-mod reduce;
-mod tolerance;
-#[cfg(test)]
-mod tolerance_tests;
-mod wn_table;
+mod patch;
 
-pub use alg_14_2_1::{reduce_to_tolerance_alg_14_2_1, subdivision_levels};
 pub use ball::{
     WsgbMethod, WsgbPiece, WsgbPiecewise, WsgbReduction, WsgbReport, WsgbStep, reduce_wsgb,
     reduce_wsgb_to_tolerance, reduce_wsgb_via_bezier, reduce_wsgb_with,
@@ -195,34 +160,24 @@ pub use ball::{
     wsgb_perturbation_step, wsgb_perturbed_points, wsgb_sampled_error_inf, wsgb_uniform_points,
     wsgb_uniform_step_exact,
 };
-pub use batch::reduce_batch;
-pub use bspline_measure::spline_max_deviation;
-pub use bspline_piegl_tiller::reduce_bspline_piegl_tiller;
-pub use bspline_reduce::{
-    BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy, reduce_bspline,
+pub use bezier::{
+    ChebyshevTerms, DEFAULT_MAX_DEPTH, DEFAULT_REL_TOL, ErrorSpace, MAX_PIECES, Method, Operator,
+    PiecewiseReduction, PiecewiseReport, ReduceOptions, ReducedPiece, Reduction, Report,
+    ToleranceOptions, constrained_chebyshev_terms, eck_lambdas, exact_degree, max_deviation,
+    operator, perturbation_error_factor, reduce, reduce_batch, reduce_exact, reduce_g1_optimal,
+    reduce_to_tolerance, reduce_to_tolerance_alg_14_2_1, reduce_with, subdivision_levels,
 };
-pub use bspline_surface_fit::{SurfaceFitOptions, SurfaceFitReduction, reduce_bspline_surface_fit};
-pub use bspline_surface_reduce::{SurfaceOptions, SurfaceReduction, reduce_bspline_surface};
-pub use bspline_surface_tolerance::{MAX_SURFACE_LEVEL, reduce_bspline_surface_to_tolerance};
-pub use bspline_uniform::{Merge, UniformReduction, reduce_uniform_bspline};
+pub use bspline::{
+    BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy, MAX_SURFACE_LEVEL, Merge,
+    SurfaceFitOptions, SurfaceFitReduction, SurfaceOptions, SurfaceReduction, UniformReduction,
+    reduce_bspline, reduce_bspline_piegl_tiller, reduce_bspline_surface,
+    reduce_bspline_surface_fit, reduce_bspline_surface_to_tolerance, reduce_uniform_bspline,
+    spline_max_deviation,
+};
 pub use cagd_core::{Error, Result};
-pub use chebyshev::{ChebyshevTerms, constrained_chebyshev_terms};
-pub use exact_degree::{DEFAULT_REL_TOL, exact_degree, reduce_exact};
-pub use g1::reduce_g1_optimal;
-pub use measure::max_deviation;
-pub use method::Method;
-pub use one_step::eck_lambdas;
-pub use operator::{Operator, operator};
-pub use patch_report::{
-    PatchConstraint, PatchOptions, PatchReduction, PatchReport, TensorMethod, TensorPiece,
-    TriMethod, TriOptions, TriPiece, TriReduction,
+pub use patch::{
+    MAX_SUBDIVISION_LEVEL, PatchConstraint, PatchOptions, PatchReduction, PatchReport,
+    TensorMethod, TensorPiece, TriMethod, TriOptions, TriPiece, TriReduction, reduce_tensor,
+    reduce_tensor_to_tolerance, reduce_triangle, reduce_triangle_to_tolerance,
+    tri_perturbation_matrix,
 };
-pub use patch_tensor::reduce_tensor;
-pub use patch_tolerance::{
-    MAX_SUBDIVISION_LEVEL, reduce_tensor_to_tolerance, reduce_triangle_to_tolerance,
-};
-pub use patch_tri::{reduce_triangle, tri_perturbation_matrix};
-pub use piecewise::{PiecewiseReduction, PiecewiseReport, ReducedPiece};
-pub use reduce::{ErrorSpace, ReduceOptions, Reduction, Report, reduce, reduce_with};
-pub use tolerance::{DEFAULT_MAX_DEPTH, MAX_PIECES, ToleranceOptions, reduce_to_tolerance};
-pub use wn_table::perturbation_error_factor;

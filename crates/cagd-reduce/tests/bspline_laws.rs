@@ -1,5 +1,5 @@
 //! Property laws of the B-spline / NURBS curve degree reduction [`reduce_bspline`], on
-//! the inputs the unit tests of `bspline_reduce_tests.rs` (clamped, `[0, 1]`, coordinates
+//! the inputs the unit tests of `src/bspline/tests.rs` (clamped, `[0, 1]`, coordinates
 //! in `[-10, 10]`, `m >= 2`, tolerance `>= 1e-4`) leave out.
 //!
 //! Inputs: degrees 2..=6, 1..=5 spans, 2-D or 3-D; clamped or unclamped at either end

@@ -118,7 +118,7 @@ proptest! {
         let c = curve(n, l, 2, seed);
         let u = reduce_wsgb(&c, n - 1, WsgbMethod::Uniform).unwrap();
         let e = reduce_wsgb(&c, n - 1, WsgbMethod::Bezier(Method::Eck)).unwrap();
-        let (d, _) = reduce::measure(&u.curve, &e.curve).unwrap();
+        let (d, _) = measure::measure(&u.curve, &e.curve).unwrap();
         prop_assert!(d <= 1e-12 * 10.0, "n {} L {}: {}", n, l, d);
         prop_assert!(e.report.max_error.unwrap() <= e.report.error_bound);
     }
@@ -154,7 +154,7 @@ fn every_bezier_method_applies() {
     // L2 without constraints = the generalized inverse (both the L2-best curve).
     let a = reduce_wsgb(&c, 5, WsgbMethod::Bezier(Method::L2 { r: -1, p: -1 })).unwrap();
     let b = reduce_wsgb(&c, 5, WsgbMethod::Bezier(Method::GeneralizedInverse)).unwrap();
-    let (d, _) = reduce::measure(&a.curve, &b.curve).unwrap();
+    let (d, _) = measure::measure(&a.curve, &b.curve).unwrap();
     assert!(d < 1e-10, "{d}");
 }
 

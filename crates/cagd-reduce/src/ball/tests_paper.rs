@@ -195,7 +195,7 @@ fn printed_interior_uniform_points_are_not_reproduced() {
     assert!((ours.curve.point(2)[0] - printed[4]).abs() > 1.0);
     let orig = WsgbCurve::new(P7.to_vec(), 2, 1).unwrap();
     let printed_curve = WsgbCurve::new(printed.to_vec(), 2, 1).unwrap();
-    let (_, dev) = reduce::measure(&orig, &printed_curve).unwrap();
+    let (_, dev) = measure::measure(&orig, &printed_curve).unwrap();
     assert!(
         (dev - 0.723).abs() < 1e-3,
         "printed curve deviates by {dev}"
@@ -207,7 +207,7 @@ fn printed_interior_uniform_points_are_not_reproduced() {
     ];
     let orig6 = WsgbCurve::new(P6.to_vec(), 2, 1).unwrap();
     let (_, dev6) =
-        reduce::measure(&orig6, &WsgbCurve::new(printed6.to_vec(), 2, 1).unwrap()).unwrap();
+        measure::measure(&orig6, &WsgbCurve::new(printed6.to_vec(), 2, 1).unwrap()).unwrap();
     assert!(
         (dev6 - 17.16).abs() < 1e-2,
         "printed degree-6 curve deviates by {dev6}"

@@ -4,7 +4,7 @@
 
 use cagd_core::{Error, Result, WsgbCurve, check_tolerance};
 
-use super::reduce::norm_inf;
+use super::measure::norm_inf;
 use super::{WsgbMethod, WsgbReduction, reduce_wsgb};
 use crate::{DEFAULT_MAX_DEPTH, MAX_PIECES};
 

@@ -3,7 +3,7 @@
 
 use cagd_core::{BezierCurve, Error, Result, WsgbCurve, wsgb_max_l};
 
-use super::reduce::{measured, norm_inf};
+use super::measure::{measured, norm_inf};
 use super::{WsgbMethod, WsgbReduction, WsgbReport};
 use crate::{Method, ReduceOptions, Reduction, reduce_with};
 
@@ -40,6 +40,15 @@ pub fn reduce_wsgb_via_bezier(
     curve: &WsgbCurve,
     reduce: impl FnOnce(&BezierCurve) -> Result<Reduction>,
 ) -> Result<WsgbReduction> {
+    via_bezier(curve, reduce, true)
+}
+
+/// [`reduce_wsgb_via_bezier`], measuring only when asked.
+fn via_bezier(
+    curve: &WsgbCurve,
+    reduce: impl FnOnce(&BezierCurve) -> Result<Reduction>,
+    measure: bool,
+) -> Result<WsgbReduction> {
     let bez = curve.to_bezier()?;
     let red = reduce(&bez)?;
     let m = red.curve.degree();
@@ -59,7 +68,7 @@ pub fn reduce_wsgb_via_bezier(
         * dim.sqrt()
         * (norm_inf(bez.points()) + norm_inf(red.curve.points()) + norm_inf(reduced.points()));
     let bound = red.report.error_bound.unwrap_or(f64::INFINITY) + allowance;
-    let (max_error, max_error_inf) = measured(curve, &reduced, true)?;
+    let (max_error, max_error_inf) = measured(curve, &reduced, measure)?;
     Ok(WsgbReduction {
         report: WsgbReport {
             method: WsgbMethod::Bezier(method),

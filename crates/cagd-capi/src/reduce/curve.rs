@@ -1,0 +1,166 @@
+//! Degree reduction from C: one curve with a report (`cagd_curve_reduce`), or many curves
+//! of one degree through one cached operator (`cagd_curve_reduce_batch`).
+
+use cagd_core::{Error, check_points};
+use cagd_reduce::{operator, reduce_batch, reduce_with};
+
+use crate::boundary::{
+    Failure, OUT, boundary, checked_len, handle_ref, into_handle, nonnull, out_ref, points_in,
+    slice_out,
+};
+use crate::curve::CagdCurve;
+use crate::options::{CagdReduceOptions, read_options};
+use crate::report::{CagdReport, ReportKind};
+use crate::status::CagdStatus;
+
+/// Reduces a curve of degree `n` to degree `opts->target` with `opts->method`, returning
+/// the reduced curve and a report with the certified error bound (and, with
+/// `opts->measure`, the measured error). Rational curves are reduced in homogeneous
+/// coordinates and stay rational. The operator of each `(method, n, m)` is computed once
+/// in exact rational arithmetic and cached process-wide (thread-safe).
+///
+/// Parameters:
+/// - `curve` (in): the curve, degree `n`.
+/// - `opts` (in): the options (see `CagdReduceOptions`; start from
+///   `cagd_reduce_options_init`). Borrowed for the call.
+/// - `curve_out` (out): on `CAGD_OK`, the reduced curve of degree `opts->target`
+///   (`(target + 1) * dim` doubles read back with `cagd_curve_points`), owned by the
+///   caller: release with `cagd_curve_free`.
+/// - `report_out` (out): on `CAGD_OK`, the report, owned by the caller: release with
+///   `cagd_report_free`. Neither output is written on failure.
+///
+/// Returns:
+/// - `CAGD_OK`: both outputs are written.
+/// - `CAGD_ERR_NULL_POINTER`: `curve`, `opts`, `curve_out` or `report_out` is NULL.
+/// - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` is below
+///   `sizeof(CagdReduceOptions)` (options not made by `cagd_reduce_options_init`),
+///   `opts->method` or `opts->space` is not a valid code,
+///   `l1` / `l2` of `CAGD_METHOD_PERTURB_G1` are not finite or not `> -1`,
+///   `curve_out` and `report_out` are the same address, or a pointer is misaligned.
+/// - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n`, or `target` below the method's minimum
+///   (1 for FARIN, PERTURB, GENERALIZED_INVERSE_ENDS; 3 for PERTURB_G1).
+/// - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target`, or `r` or `p` below -1
+///   (CONSTRAINED_CHEBYSHEV, L2).
+/// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational curve is not positive.
+/// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+///
+/// # Safety
+/// `curve` must be NULL or a live curve handle; `opts` NULL or a readable
+/// `CagdReduceOptions` of `opts->struct_size` bytes; `curve_out` and `report_out` NULL
+/// or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cagd_curve_reduce(
+    curve: *const CagdCurve,
+    opts: *const CagdReduceOptions,
+    curve_out: *mut *mut CagdCurve,
+    report_out: *mut *mut CagdReport,
+) -> CagdStatus {
+    boundary(|| {
+        // SAFETY: the caller's contract (see # Safety).
+        let c = unsafe { handle_ref(curve, "curve") }?;
+        // SAFETY: as above.
+        let o = unsafe { read_options(opts) }?;
+        nonnull(curve_out, "curve_out")?;
+        nonnull(report_out, "report_out")?;
+        if curve_out.addr() == report_out.addr() {
+            return Err(Failure::invalid(
+                "`curve_out` and `report_out` are the same address",
+            ));
+        }
+        // SAFETY: as above; the two outputs do not overlap.
+        let (c_out, r_out) = unsafe {
+            (
+                out_ref(curve_out, "curve_out")?,
+                out_ref(report_out, "report_out")?,
+            )
+        };
+        let red = reduce_with(&c.0, &o.rust_options()?)?;
+        *c_out = into_handle(CagdCurve(red.curve));
+        *r_out = into_handle(CagdReport {
+            kind: ReportKind::Single(red.report),
+            method: o.method,
+        });
+        Ok(())
+    })
+}
+
+/// Reduces `n_curves` polynomial curves of one degree `n` to degree `opts->target` with
+/// one cached operator and no per-curve allocation — the fast path for many curves. Only
+/// `opts->method`, `target`, `r`, `p`, `l1`, `l2` are used (no report: call
+/// `cagd_curve_reduce` for a certified bound per curve). Rational curves: pass their
+/// homogeneous points `(w_i P_i, w_i)` as polynomial curves of dimension `dim + 1`.
+///
+/// Parameters:
+/// - `points` (in): `n_curves * (n + 1) * dim` doubles, curve after curve, row-major inside
+///   a curve: coordinate k of point j of curve c at `points[(c * (n + 1) + j) * dim + k]`.
+///   Borrowed for the call.
+/// - `n_curves` (in): number of curves; 0 is allowed (`*out_needed = 0`).
+/// - `degree` (in): the common source degree `n`, `0..=64`.
+/// - `dim` (in): coordinates per point, `>= 1`.
+/// - `opts` (in): the options. Borrowed for the call.
+/// - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
+///   `n_curves * (target + 1) * dim` doubles hold the reduced curves in the same layout.
+///   May be NULL only when `out_cap == 0`. Not written on failure.
+/// - `out_cap` (in): capacity of `out` in doubles.
+/// - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
+///   `n_curves * (target + 1) * dim`.
+///
+/// Returns:
+/// - `CAGD_OK`: the reduced curves are in `out`.
+/// - `CAGD_ERR_NULL_POINTER`: `points`, `opts` or `out_needed` is NULL, or `out` is NULL
+///   with `out_cap > 0`.
+/// - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a size formula overflows,
+///   `opts->struct_size` below `sizeof(CagdReduceOptions)`, an invalid `opts->method` code
+///   or `l1` / `l2`, or a pointer is misaligned.
+/// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
+/// - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
+/// - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
+/// - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message gives
+///   the point index counted over the whole batch).
+/// - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
+///   written.
+/// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+///
+/// # Safety
+/// `points` must be NULL or point to `n_curves * (degree + 1) * dim` readable doubles;
+/// `opts` NULL or readable; `out` NULL or `out_cap` writable doubles not overlapping
+/// `points`; `out_needed` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cagd_curve_reduce_batch(
+    points: *const f64,
+    n_curves: usize,
+    degree: usize,
+    dim: usize,
+    opts: *const CagdReduceOptions,
+    out: *mut f64,
+    out_cap: usize,
+    out_needed: *mut usize,
+) -> CagdStatus {
+    boundary(|| {
+        nonnull(points, "points")?;
+        // SAFETY: the caller's contract (see # Safety).
+        let o = unsafe { read_options(opts) }?;
+        // SAFETY: as above.
+        let dst = unsafe { slice_out(out, out_cap, out_needed, &OUT) }?;
+        cagd_core::check_degree(degree)?;
+        let n_points = checked_len(n_curves, degree + 1, "n_curves * (degree + 1)")?;
+        // SAFETY: as above.
+        let input = unsafe { points_in(points, n_points, dim, "points") }?;
+        let op = operator(o.method()?, degree, o.target)?;
+        let per_out = checked_len(o.target + 1, dim, "(target + 1) * dim")?;
+        let needed = checked_len(n_curves, per_out, "n_curves * (target + 1) * dim")?;
+        // Validate before writing: the caller's buffer receives output only on success.
+        if n_curves > 0 {
+            check_points(input, dim)?;
+        }
+        let dst = dst.take(needed)?;
+        reduce_batch(&op, input, dim, dst).map_err(|e| match e {
+            // Unreachable after the checks above; reported rather than hidden.
+            Error::NonFinite { .. } | Error::LengthMismatch { .. } => Failure::new(
+                CagdStatus::ERR_PANIC,
+                format!("internal error: batch failed after validation: {e}"),
+            ),
+            other => other.into(),
+        })
+    })
+}

@@ -1,0 +1,9 @@
+//! Parametric distances `max ||a - b||` between two shapes of one kind: curves over `[0, 1]`
+//! (`curve/`, with the 1-D maximiser the others build on) and patches over the unit square or
+//! triangle (`patch/`).
+
+mod curve;
+mod patch;
+
+pub use curve::{curve_distance, max_distance_1d};
+pub use patch::{Domain2, max_distance_2d, tensor_patch_distance, tri_patch_distance};

@@ -1,0 +1,178 @@
+//! The result of a reduction to a tolerance: reduced Bézier pieces on sub-intervals of
+//! `[0, 1]`, merged into one degree-`m` B-spline whose interior knots have multiplicity
+//! `m - k` (the `C^k` joins are explicit), with a certified bound of the whole.
+
+use cagd_core::{BSplineCurve, BezierCurve, Error, Result, max_distance_1d};
+
+use crate::bezier::method::Method;
+use crate::bezier::operator::max_norm;
+
+/// One reduced piece: `curve(s)` approximates the original on `[start, end]`,
+/// `s = (t - start) / (end - start)`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ReducedPiece {
+    /// Start of the parameter interval (in the original curve's parameter).
+    pub start: f64,
+    /// End of the parameter interval (`> start`).
+    pub end: f64,
+    /// The reduced piece, degree `m`, on `[0, 1]` (rational if the original is).
+    pub curve: BezierCurve,
+    /// Certified bound of `max_s ||original(start + s (end - start)) - curve(s)||`
+    /// (Euclidean), as [`crate::Report::error_bound`] of the piece's reduction.
+    pub error_bound: f64,
+}
+
+/// What a reduction to a tolerance did.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PiecewiseReport {
+    /// The method used on every piece.
+    pub method: Method,
+    /// Degree `n` of the original curve.
+    pub degree_from: usize,
+    /// Degree `m` of the pieces and of the spline.
+    pub degree_to: usize,
+    /// Continuity order `k` of the joins (interior knot multiplicity `m - k`).
+    pub continuity: usize,
+    /// The tolerance `delta` that was asked for.
+    pub tolerance: f64,
+    /// Number of pieces.
+    pub pieces: usize,
+    /// Deepest midpoint-subdivision level used (`0`: the curve was not split).
+    pub depth: usize,
+    /// Largest certified bound of the pieces ([`ReducedPiece::error_bound`]).
+    pub pieces_bound: f64,
+    /// Certified bound of `max_t ||original(t) - spline(t)||` (Euclidean): `pieces_bound`
+    /// plus what merging the pieces into the spline moved (`<= tolerance`).
+    pub error_bound: f64,
+    /// The measured `max_t ||original(t) - spline(t)||` (on request): [`max_distance_1d`]
+    /// on every piece's interval.
+    pub max_error: Option<f64>,
+    /// For the stepwise [`crate::reduce_to_tolerance_alg_14_2_1`]: the largest bound of
+    /// each one-degree step, `n -> n-1` first (their sum is the seed's certified total).
+    /// Empty for [`crate::reduce_to_tolerance`].
+    pub step_bounds: Vec<f64>,
+}
+
+/// The pieces, the spline made of them and the report.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PiecewiseReduction {
+    /// The reduced curve as one degree-`m` B-spline (NURBS if the original is rational)
+    /// on `[0, 1]`, interior knots at the piece breaks with multiplicity `m - k`.
+    pub spline: BSplineCurve,
+    /// The reduced pieces, in parameter order, before merging.
+    pub pieces: Vec<ReducedPiece>,
+    /// What was done.
+    pub report: PiecewiseReport,
+}
+
+/// Share of the tolerance given to the pieces; the rest (at least `1/64`) absorbs the
+/// merge.
+pub(crate) const PIECE_SHARE: f64 = 63.0 / 64.0;
+
+/// Merges `pieces` into a `C^k` spline and certifies it: the returned bound is
+/// `max_i (bound_i + mu_i)`, `mu_i` the distance between piece `i` and the spline's Bézier
+/// segment on its interval (control-point distance, a convex-hull bound, plus an allowance
+/// for the rounding of the extraction).
+pub(crate) fn assemble(
+    pieces: Vec<ReducedPiece>,
+    k: usize,
+    tolerance: f64,
+) -> Result<(BSplineCurve, Vec<ReducedPiece>, f64)> {
+    let curves: Vec<BezierCurve> = pieces.iter().map(|p| p.curve.clone()).collect();
+    let mut breaks: Vec<f64> = pieces.iter().map(|p| p.start).collect();
+    breaks.push(pieces.last().map_or(1.0, |p| p.end));
+    // What the merge may move: the slack left by the pieces (at least delta / 64). Each
+    // interior knot is removed `k` times with that budget (a C^k check, not a sum over the
+    // knots as in `from_beziers`): what the merge really moved is measured below, piece by
+    // piece, and added to the piece's bound.
+    let pieces_bound = pieces.iter().map(|p| p.error_bound).fold(0.0, f64::max);
+    let slack = (tolerance - pieces_bound).max((1.0 - PIECE_SHARE) * tolerance);
+    let mut spline = BSplineCurve::from_beziers(&curves, &breaks, 0, slack)?;
+    if k > 0 {
+        for &b in &breaks[1..breaks.len() - 1] {
+            let r = spline.remove_knot(b, k, slack)?;
+            if r.removed != k {
+                return Err(Error::ConditionNotMet {
+                    eq: "001 §4.1",
+                    why: "the reduced pieces do not join C^k within the tolerance (rounding \
+                          of the joins above the tolerance)",
+                });
+            }
+            spline = r.curve;
+        }
+    }
+    let segments = spline.to_beziers()?;
+    if segments.len() != pieces.len() {
+        return Err(Error::LengthMismatch {
+            what: "spline segments (one per piece)",
+            got: segments.len(),
+            expected: pieces.len(),
+        });
+    }
+    let mut bound = 0.0f64;
+    for (seg, piece) in segments.iter().zip(&pieces) {
+        bound = bound.max(piece.error_bound + hull_distance(&piece.curve, &seg.curve));
+    }
+    Ok((spline, pieces, bound))
+}
+
+/// A certified bound of `max_s ||a(s) - b(s)||` for two curves of the same degree and kind:
+/// the largest control-point distance (homogeneous for rational curves, converted to model
+/// units as in [`crate::reduce_with`]), plus a rounding allowance.
+fn hull_distance(a: &BezierCurve, b: &BezierCurve) -> f64 {
+    let (pa, pb, d) = match (a.weights(), b.weights()) {
+        (Some(_), Some(_)) => (a.homogeneous_points(), b.homogeneous_points(), a.dim() + 1),
+        _ => (a.points().to_vec(), b.points().to_vec(), a.dim()),
+    };
+    let m = (pa.len() / d) as f64;
+    let dist = pa
+        .chunks_exact(d)
+        .zip(pb.chunks_exact(d))
+        .map(|(x, y)| {
+            x.iter()
+                .zip(y)
+                .map(|(u, v)| (u - v) * (u - v))
+                .sum::<f64>()
+                .sqrt()
+        })
+        .fold(0.0, f64::max);
+    let h = dist * (1.0 + 4.0 * f64::EPSILON)
+        + 4.0 * (m + 2.0) * f64::EPSILON * (max_norm(&pa, d) + max_norm(&pb, d));
+    match a.weights() {
+        None => h,
+        Some(w) => {
+            // A/W - A'/W' = ((A - A') + C'(W' - W)) / W, |C'| <= max |C'_i|, W >= min w_i.
+            let wmin = w.iter().copied().fold(f64::INFINITY, f64::min);
+            h * (1.0 + max_norm(b.points(), b.dim())) / wmin * (1.0 + 8.0 * f64::EPSILON)
+        }
+    }
+}
+
+/// `max_t ||original(t) - spline(t)||` measured by [`max_distance_1d`] on every piece's
+/// interval (`8 (n + m) + 64` sample intervals each, Brent refinement of local maxima).
+///
+/// # Errors
+/// [`Error::NonFinite`] if an evaluation fails (not expected for valid inputs).
+pub(crate) fn measure(
+    original: &BezierCurve,
+    spline: &BSplineCurve,
+    pieces: &[ReducedPiece],
+) -> Result<f64> {
+    let samples = 8 * (original.degree() + spline.degree()) + 64;
+    let mut worst = 0.0f64;
+    for p in pieces {
+        let d = max_distance_1d(
+            |t, o| match spline.eval(t) {
+                Ok(v) => o.copy_from_slice(&v),
+                Err(_) => o.fill(f64::NAN),
+            },
+            |t, o| original.eval_into(t, o),
+            original.dim(),
+            p.start,
+            p.end,
+            samples,
+        )?;
+        worst = worst.max(d);
+    }
+    Ok(worst)
+}

@@ -1,0 +1,306 @@
+//! The global least-squares fit behind [`crate::reduce_bspline`]: the degree-`p` input
+//! spline `C` is approximated by the degree-`m` spline `S` on a given knot vector that
+//! minimises `int ||C(t) - S(t)||^2 dt` over the domain (parameter L2 norm, seed 000
+//! §14.4's criterion applied to the whole spline space instead of one segment), with the
+//! end points kept (`S(a) = C(a)`, `S(b) = C(b)`).
+//!
+//! Every knot of `S` is a break of `C`'s pieces or lies inside one, so on each span of `S`
+//! the integrand is a polynomial of degree `2 max(p, m)`; the `(p + 1)`-point Gauss–Legendre
+//! rule of each span integrates it exactly. The integral is therefore the squared norm of
+//! the residual of a weighted collocation system with one row per (span, node) — weight
+//! `sqrt(w_q h)` — and the fit is that system's least-squares solution, computed by
+//! banded Givens QR ([`banded_lsq`]). No normal equations are formed.
+//!
+//! NURBS are fitted in homogeneous coordinates. The points may also be *bundles* of
+//! `blocks` curves side by side (the rows of a tensor-product surface, fitted in one
+//! direction with one knot vector); the bound of a span is then the largest over the
+//! blocks, which bounds the surface by the partition of unity in the other direction.
+
+use cagd_core::kernel::{de_casteljau, subdivide};
+use cagd_core::{BSplineCurve, Result, basis_functions, gauss_legendre};
+
+mod banded_lsq;
+
+use crate::bezier::{hull_bound, max_norm};
+use banded_lsq::BandedLsq;
+
+/// The spline to approximate, as Bézier pieces in working coordinates.
+#[derive(Debug, Clone)]
+pub(crate) struct Source {
+    pub(crate) degree: usize,
+    /// Coordinates of one curve of the bundle (`dim + 1` when rational).
+    pub(crate) block: usize,
+    /// Coordinates of a point: `blocks * block`.
+    pub(crate) pdim: usize,
+    pub(crate) rational: bool,
+    /// The piece breaks (`pieces + 1` increasing values).
+    pub(crate) breaks: Vec<f64>,
+    /// `(degree + 1) * pdim` Bézier coordinates per piece.
+    points: Vec<f64>,
+}
+
+impl Source {
+    /// The pieces of the polynomial spline `work` whose points are bundles of curves with
+    /// `block` coordinates each (the last one a weight when `rational`).
+    pub(crate) fn new(work: &BSplineCurve, block: usize, rational: bool) -> Result<Self> {
+        let segs = work.to_beziers()?;
+        let (p, pdim) = (work.degree(), work.dim());
+        let mut breaks = Vec::with_capacity(segs.len() + 1);
+        let mut points = Vec::with_capacity(segs.len() * (p + 1) * pdim);
+        for s in &segs {
+            if breaks.is_empty() {
+                breaks.push(s.start);
+            }
+            breaks.push(s.end);
+            points.extend_from_slice(s.curve.points());
+        }
+        Ok(Self {
+            degree: p,
+            block,
+            pdim,
+            rational,
+            breaks,
+            points,
+        })
+    }
+
+    /// The Bézier points of piece `k`.
+    pub(crate) fn piece(&self, k: usize) -> &[f64] {
+        let len = (self.degree + 1) * self.pdim;
+        &self.points[k * len..(k + 1) * len]
+    }
+
+    /// The index of the piece containing the span `[a, b]` (`a < b`).
+    fn piece_of(&self, a: f64, b: f64) -> usize {
+        let mid = 0.5 * (a + b);
+        self.breaks[1..]
+            .partition_point(|x| *x <= mid)
+            .min(self.breaks.len() - 2)
+    }
+
+    fn first_point(&self) -> &[f64] {
+        &self.points[..self.pdim]
+    }
+
+    fn last_point(&self) -> &[f64] {
+        &self.points[self.points.len() - self.pdim..]
+    }
+}
+
+/// The L2-best degree-`m` spline on the clamped knot vector `knots` (domain and every break
+/// of `src` among its knots) with the end points of `src`: its control points
+/// (`knots.len() - m - 1` points of `src.pdim` coordinates).
+///
+/// # Errors
+/// [`cagd_core::Error::Singular`] if the system is rank-deficient (cannot happen for a
+/// valid knot vector: `p + 1 >= m + 1` nodes per span determine the span's polynomial).
+pub(crate) fn fit(src: &Source, m: usize, knots: &[f64]) -> Result<Vec<f64>> {
+    let (p, d) = (src.degree, src.pdim);
+    let n = knots.len() - m - 1;
+    let mut out = vec![0.0; n * d];
+    out[..d].copy_from_slice(src.first_point());
+    out[(n - 1) * d..].copy_from_slice(src.last_point());
+    if n <= 2 {
+        return Ok(out);
+    }
+    let (nodes, weights) = gauss_legendre(p + 1)?;
+    let mut lsq = BandedLsq::new(n - 2, m + 1, d);
+    let (mut basis, mut scratch) = (vec![0.0; m + 1], vec![0.0; 2 * m + 2]);
+    let (mut value, mut work) = (vec![0.0; d], vec![0.0; (p + 1) * d]);
+    for s in m..n {
+        let (a, b) = (knots[s], knots[s + 1]);
+        if a >= b {
+            continue;
+        }
+        let k = src.piece_of(a, b);
+        let (pa, pb) = (src.breaks[k], src.breaks[k + 1]);
+        for (x, w) in nodes.iter().zip(&weights) {
+            let t = a + (b - a) * x;
+            let sw = (w * (b - a)).sqrt();
+            basis_functions(knots, s, m, t, &mut basis, &mut scratch);
+            de_casteljau(src.piece(k), d, (t - pa) / (pb - pa), &mut work, &mut value);
+            // Columns s-m..=s; the first and last control points are fixed.
+            let mut lo = s - m;
+            let mut vals = &basis[..];
+            if lo == 0 {
+                for (v, e) in value.iter_mut().zip(src.first_point()) {
+                    *v -= basis[0] * e;
+                }
+                vals = &vals[1..];
+                lo = 1;
+            }
+            if s == n - 1 {
+                for (v, e) in value.iter_mut().zip(src.last_point()) {
+                    *v -= basis[m] * e;
+                }
+                vals = &vals[..vals.len() - 1];
+            }
+            let row: Vec<f64> = vals.iter().map(|v| sw * v).collect();
+            let rhs: Vec<f64> = value.iter().map(|v| sw * v).collect();
+            lsq.add_row(lo - 1, &row, &rhs);
+        }
+    }
+    let x = lsq.solve()?;
+    out[d..(n - 1) * d].copy_from_slice(&x);
+    Ok(out)
+}
+
+/// One span of a fitted spline with its certified bound.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct SpanBound {
+    pub(crate) a: f64,
+    pub(crate) b: f64,
+    /// Certified bound of `max ||C - S||` on `[a, b]` (model space).
+    pub(crate) bound: f64,
+    /// The part of `bound` that is the rounding allowance: no fit can get below it, so a
+    /// span whose tolerance is below it cannot be helped by refinement.
+    pub(crate) floor: f64,
+}
+
+/// The spans `[a, b]` of the degree-`m` spline `(knots, points)` (working coordinates of
+/// `src`) with a certified bound of `max ||C - S||` on each (Euclidean, model space): per
+/// span, the piece of `C` restricted to it minus `S` elevated to degree `p`, bounded by the
+/// refined convex hull ([`crate::bezier::hull_bound`], rounding included), the largest
+/// over the blocks; for NURBS by [`rational_bound`] (centred, in model space). A span on
+/// which a control weight of `S` is not positive gets an infinite bound.
+pub(crate) fn span_bounds(
+    src: &Source,
+    m: usize,
+    knots: &[f64],
+    points: &[f64],
+) -> Result<Vec<SpanBound>> {
+    let (p, d, blk) = (src.degree, src.pdim, src.block);
+    let target = BSplineCurve::new(m, knots.to_vec(), points.to_vec(), d)?;
+    let pieces = target.to_beziers()?;
+    let n = points.len() / d;
+    let mut out = Vec::with_capacity(pieces.len());
+    let (mut left, mut right) = (vec![0.0; (p + 1) * d], vec![0.0; (p + 1) * d]);
+    let (mut sb, mut tb) = (vec![0.0; (p + 1) * blk], vec![0.0; (m + 1) * blk]);
+    let mut s = m;
+    for piece in &pieces {
+        let (a, b) = (piece.start, piece.end);
+        while s + 1 < n && knots[s + 1] <= a {
+            s += 1;
+        }
+        let k = src.piece_of(a, b);
+        let (pa, pb) = (src.breaks[k], src.breaks[k + 1]);
+        let (s0, s1) = ((a - pa) / (pb - pa), (b - pa) / (pb - pa));
+        // The source piece on [s0, s1]: split at s1, then the left part at s0 / s1.
+        let sub: &[f64] = if s1 < 1.0 {
+            subdivide(src.piece(k), d, s1, &mut left, &mut right);
+            &left
+        } else {
+            src.piece(k)
+        };
+        let sub = if s0 > 0.0 {
+            let owned = sub.to_vec();
+            subdivide(&owned, d, s0 / s1, &mut left, &mut right);
+            right.clone()
+        } else {
+            sub.to_vec()
+        };
+        let (bound, floor) = if src.rational {
+            let span_points = &points[(s - m) * d..(s + 1) * d];
+            let vmin = span_points
+                .chunks_exact(blk)
+                .map(|q| q[blk - 1])
+                .fold(f64::INFINITY, f64::min);
+            rational_bound(&sub, piece.curve.points(), (d, blk, p), vmin)
+        } else {
+            let (mut eps, mut floor): (f64, f64) = (0.0, 0.0);
+            for j in 0..d / blk {
+                copy_block(&sub, d, j, blk, &mut sb);
+                copy_block(piece.curve.points(), d, j, blk, &mut tb);
+                eps = eps.max(hull_bound(&sb, &tb, blk));
+                floor = floor.max(2.0 * (p as f64 + 3.0) * f64::EPSILON * max_norm(&sb, blk));
+            }
+            (eps, floor)
+        };
+        out.push(SpanBound { a, b, bound, floor });
+    }
+    Ok(out)
+}
+
+/// `(bound, floor)` of one span of a rational bundle: `sub` the input's Bézier points on
+/// the span (`p + 1` points of `d` homogeneous coordinates, blocks of `blk`), `tgt` the
+/// fit's (`m + 1` points), `vmin` the smallest control weight of the fit on the span.
+///
+/// With a centre `c` (of the input's model-space points on the span) and `R = max ||P_i -
+/// c||`, `C - S = ((C - c)(W' - W) + (A_c - A'_c)) / W'` where `A_c = A - c W`: the input
+/// curve lies in the hull of its points, so `||C - c|| <= R`, and with `h_A` the refined
+/// hull bound of `A_c - A'_c` and `h_W` that of `W - W'` (the largest over the blocks:
+/// the bundle combines them convexly), `||C - S|| <= (h_A + R h_W) / v`,
+/// `v = max(vmin, min w - h_W)`. Centring makes the bound independent of where the model
+/// sits (the form `(1 + max ||P||)` of the Bézier reducer's conversion grows with the
+/// distance from the origin). The translation's rounding is added to `h_A`.
+fn rational_bound(
+    sub: &[f64],
+    tgt: &[f64],
+    (d, blk, p): (usize, usize, usize),
+    vmin: f64,
+) -> (f64, f64) {
+    let dim = blk - 1;
+    let eps = f64::EPSILON;
+    let (mut lo, mut hi) = (vec![f64::INFINITY; dim], vec![f64::NEG_INFINITY; dim]);
+    let mut wmin = f64::INFINITY;
+    for q in sub.chunks_exact(blk) {
+        let w = q[dim];
+        wmin = wmin.min(w);
+        for c in 0..dim {
+            lo[c] = lo[c].min(q[c] / w);
+            hi[c] = hi[c].max(q[c] / w);
+        }
+    }
+    let centre: Vec<f64> = lo.iter().zip(&hi).map(|(a, b)| 0.5 * (a + b)).collect();
+    let cnorm = centre.iter().map(|x| x * x).sum::<f64>().sqrt();
+    let radius = sub
+        .chunks_exact(blk)
+        .map(|q| {
+            let w = q[dim];
+            (0..dim)
+                .map(|c| (q[c] / w - centre[c]).powi(2))
+                .sum::<f64>()
+                .sqrt()
+        })
+        .fold(0.0, f64::max)
+        * (1.0 + 4.0 * eps);
+    let split = |from: &[f64], j: usize, a: &mut Vec<f64>, w: &mut Vec<f64>| {
+        a.clear();
+        w.clear();
+        for q in from.chunks_exact(d) {
+            let b = &q[j * blk..(j + 1) * blk];
+            a.extend((0..dim).map(|c| b[c] - centre[c] * b[dim]));
+            w.push(b[dim]);
+        }
+    };
+    let (mut sa, mut sw, mut ta, mut tw) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let (mut ha, mut hw, mut size): (f64, f64, f64) = (0.0, 0.0, 0.0);
+    for j in 0..d / blk {
+        split(sub, j, &mut sa, &mut sw);
+        split(tgt, j, &mut ta, &mut tw);
+        ha = ha.max(hull_bound(&sa, &ta, dim));
+        hw = hw.max(hull_bound(&sw, &tw, 1));
+        let wmax = sw.iter().chain(&tw).fold(0.0f64, |m, x| m.max(x.abs()));
+        let amax = max_norm(&sa, dim).max(max_norm(&ta, dim));
+        size = size.max(amax + cnorm * wmax);
+    }
+    // Each translated coordinate is off by ~2 eps of |x| + |c| w, for both curves.
+    ha += 4.0 * eps * size;
+    let floor = 2.0 * (p as f64 + 3.0) * eps * size / wmin;
+    let v = vmin.max(wmin - hw);
+    if vmin <= 0.0 || v <= 0.0 {
+        return (f64::INFINITY, floor);
+    }
+    ((ha + radius * hw) / v * (1.0 + 8.0 * eps), floor)
+}
+
+/// Copies coordinates `j * blk .. (j + 1) * blk` of every point of `from` (points of `d`
+/// coordinates) to `to`.
+fn copy_block(from: &[f64], d: usize, j: usize, blk: usize, to: &mut [f64]) {
+    for (dst, src) in to.chunks_exact_mut(blk).zip(from.chunks_exact(d)) {
+        dst.copy_from_slice(&src[j * blk..(j + 1) * blk]);
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,112 @@
+//! Tests of the global fit: the residual is orthogonal to the spline space (the defining
+//! property of the L2-best fit, checked by an independent quadrature), a spline of the
+//! target space is reproduced, span bounds cover sampled errors, unclamped input.
+
+use super::*;
+use cagd_core::find_span;
+
+/// A clamped degree-5 planar spline with uneven spans and a double knot.
+fn quintic() -> BSplineCurve {
+    let knots = vec![
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.1, 0.35, 0.35, 0.6, 0.8, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0,
+    ];
+    let n = knots.len() - 6;
+    let pts: Vec<f64> = (0..2 * n)
+        .map(|i| ((i * 37 % 11) as f64 - 5.0) / 2.0)
+        .collect();
+    BSplineCurve::new(5, knots, pts, 2).unwrap()
+}
+
+/// Cubic knots: the quintic's breaks (simple) plus an extra knot at 0.2.
+fn cubic_knots() -> Vec<f64> {
+    vec![
+        0.0, 0.0, 0.0, 0.0, 0.1, 0.2, 0.35, 0.6, 0.8, 1.0, 1.0, 1.0, 1.0,
+    ]
+}
+
+#[test]
+fn residual_is_orthogonal_to_the_spline_space() {
+    let c = quintic();
+    let src = Source::new(&c, 2, false).unwrap();
+    let knots = cubic_knots();
+    let pts = fit(&src, 3, &knots).unwrap();
+    let s = BSplineCurve::new(3, knots.clone(), pts, 2).unwrap();
+    let n = knots.len() - 4;
+    // Composite Simpson with 4 000 panels per knot span (independent of the Gauss rule).
+    let mut inner = vec![[0.0f64; 2]; n];
+    let (mut basis, mut scratch) = ([0.0; 4], [0.0; 8]);
+    let panels = 4000;
+    for w in knots.windows(2).filter(|w| w[0] < w[1]) {
+        let h = (w[1] - w[0]) / f64::from(panels);
+        for i in 0..=2 * panels {
+            let t = w[0] + h * f64::from(i) / 2.0;
+            let weight = if i == 0 || i == 2 * panels {
+                1.0
+            } else if i % 2 == 1 {
+                4.0
+            } else {
+                2.0
+            } * h
+                / 6.0;
+            let (a, b) = (c.eval(t).unwrap(), s.eval(t).unwrap());
+            let span = find_span(&knots, 3, n, t.min(w[1] - 1e-15));
+            basis_functions(&knots, span, 3, t, &mut basis, &mut scratch);
+            for (k, nk) in basis.iter().enumerate() {
+                for d in 0..2 {
+                    inner[span - 3 + k][d] += weight * nk * (a[d] - b[d]);
+                }
+            }
+        }
+    }
+    // The end points are fixed, so only the interior functions are orthogonal.
+    for (j, v) in inner.iter().enumerate().take(n - 1).skip(1) {
+        assert!(v[0].abs() < 1e-11 && v[1].abs() < 1e-11, "N_{j}: {v:?}");
+    }
+    // ... and the fixed ends do carry a residual (the test can tell the difference).
+    assert!(inner[0][0].abs() + inner[0][1].abs() > 1e-8);
+}
+
+#[test]
+fn reproduces_a_spline_of_the_target_space_and_bounds_cover_samples() {
+    // A cubic written as a quintic (each piece elevated; merged C0 is enough here).
+    let knots = cubic_knots();
+    let n = knots.len() - 4;
+    let pts: Vec<f64> = (0..2 * n).map(|i| (i as f64 * 0.7).sin()).collect();
+    let cubic = BSplineCurve::new(3, knots.clone(), pts.clone(), 2).unwrap();
+    let pieces = cubic.to_beziers().unwrap();
+    let mut breaks: Vec<f64> = pieces.iter().map(|x| x.start).collect();
+    breaks.push(1.0);
+    let segs: Vec<_> = pieces.iter().map(|x| x.curve.elevate(2).unwrap()).collect();
+    let elevated = BSplineCurve::from_beziers(&segs, &breaks, 0, 1e-12).unwrap();
+    let src = Source::new(&elevated, 2, false).unwrap();
+    let got = fit(&src, 3, &knots).unwrap();
+    for (a, b) in got.iter().zip(&pts) {
+        assert!((a - b).abs() < 1e-13, "{a} vs {b}");
+    }
+    // A genuine fit: every span's certified bound covers the sampled error on the span.
+    let c = quintic();
+    let src = Source::new(&c, 2, false).unwrap();
+    let fitted = fit(&src, 3, &knots).unwrap();
+    let s = BSplineCurve::new(3, knots.clone(), fitted.clone(), 2).unwrap();
+    for sb in span_bounds(&src, 3, &knots, &fitted).unwrap() {
+        let mut worst: f64 = 0.0;
+        for i in 0..=200 {
+            let t = sb.a + (sb.b - sb.a) * f64::from(i) / 200.0;
+            let (p, q) = (c.eval(t).unwrap(), s.eval(t).unwrap());
+            worst = worst.max(((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)).sqrt());
+        }
+        assert!(
+            worst <= sb.bound,
+            "[{}, {}]: {worst} > {}",
+            sb.a,
+            sb.b,
+            sb.bound
+        );
+        assert!(
+            sb.bound <= 1.5 * worst + 1e-12,
+            "loose: {} vs {worst}",
+            sb.bound
+        );
+        assert!(sb.floor < 1e-13);
+    }
+}

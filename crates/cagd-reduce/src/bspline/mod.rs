@@ -1,0 +1,32 @@
+//! Degree reduction of B-spline / NURBS curves and surfaces (seed 001 and Piegl & Tiller).
+//!
+//! Curves to a tolerance, [`reduce_bspline`] (`reduce.rs`, its options and report in
+//! `options.rs`), by one of three strategies: the global least-squares fit on the input's
+//! knots (`global.rs` over `fit/`, default), per-segment Hermite reductions (`segments.rs`),
+//! or Piegl & Tiller 1995 (`piegl_tiller/`); the knot bookkeeping they share (`knots.rs`:
+//! certified per-span bounds, knot removal, merge, continuity orders) and the sampled error
+//! (`measure.rs`). Uniform B-splines by seed 001's matrix product (`uniform/`). Surfaces
+//! (`surface/`): patch-wise, to a tolerance, and by the global fit.
+
+mod fit;
+mod global;
+mod knots;
+mod measure;
+mod options;
+mod piegl_tiller;
+mod reduce;
+mod segments;
+mod surface;
+#[cfg(test)]
+mod tests;
+mod uniform;
+
+pub use measure::spline_max_deviation;
+pub use options::{BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy};
+pub use piegl_tiller::reduce_bspline_piegl_tiller;
+pub use reduce::reduce_bspline;
+pub use surface::{
+    MAX_SURFACE_LEVEL, SurfaceFitOptions, SurfaceFitReduction, SurfaceOptions, SurfaceReduction,
+    reduce_bspline_surface, reduce_bspline_surface_fit, reduce_bspline_surface_to_tolerance,
+};
+pub use uniform::{Merge, UniformReduction, reduce_uniform_bspline};

@@ -1,0 +1,148 @@
+//! B-spline / NURBS surfaces reduced to a tolerance: uniform knot refinement around the
+//! patch-wise reduction of [`crate::reduce_bspline_surface`].
+//!
+//! At level `L` every non-empty knot span of both directions is split into `2^L` equal
+//! spans (knot insertion, exact), so the refined surface has one tensor-product structure
+//! (no T-junctions); its Bézier patches are reduced and merged back. The first level whose
+//! certified bound meets the tolerance is returned. The bound of a patch shrinks like
+//! `2^-(m+1)` per level for a smooth surface, so few levels are needed.
+
+use cagd_core::{BSplineSurface, Error, Result, check_tolerance};
+
+use super::patchwise::{SurfaceOptions, SurfaceReduction, reduce_bspline_surface};
+
+/// Deepest uniform refinement tried by [`reduce_bspline_surface_to_tolerance`]: `2^6 = 64`
+/// spans per input span and direction.
+pub const MAX_SURFACE_LEVEL: usize = 6;
+
+/// The distinct interior values to insert so that every non-empty span of `knots` (on the
+/// domain `[knots[p], knots[len - p - 1]]`) is split into `parts` equal spans.
+fn midpoints(knots: &[f64], p: usize, parts: usize) -> Vec<f64> {
+    let (lo, hi) = (knots[p], knots[knots.len() - p - 1]);
+    let mut breaks: Vec<f64> = knots
+        .iter()
+        .copied()
+        .filter(|k| *k >= lo && *k <= hi)
+        .collect();
+    breaks.dedup();
+    let mut out = Vec::new();
+    for w in breaks.windows(2) {
+        for j in 1..parts {
+            out.push(w[0] + (w[1] - w[0]) * j as f64 / parts as f64);
+        }
+    }
+    out
+}
+
+fn refine(s: &BSplineSurface, level: usize) -> Result<BSplineSurface> {
+    let parts = 1usize << level;
+    let (p, q) = s.degrees();
+    let mut r = s.clone();
+    for t in midpoints(s.knots_u(), p, parts) {
+        r = r.insert_knot_u(t, 1)?;
+    }
+    for t in midpoints(s.knots_v(), q, parts) {
+        r = r.insert_knot_v(t, 1)?;
+    }
+    Ok(r)
+}
+
+/// Reduces a B-spline / NURBS surface to degrees `opts.target` with a certified error
+/// bound `<= tolerance` (Euclidean, model space): the smallest uniform refinement level
+/// `L <= MAX_SURFACE_LEVEL` at which [`reduce_bspline_surface`] meets the tolerance (see
+/// the module docs). Continuity across knot lines is as [`reduce_bspline_surface`] keeps it.
+///
+/// # Errors
+/// [`Error::BadTolerance`]; the errors of [`reduce_bspline_surface`];
+/// [`Error::NoConvergence`] when level [`MAX_SURFACE_LEVEL`] is not enough (with the best
+/// bound reached).
+pub fn reduce_bspline_surface_to_tolerance(
+    s: &BSplineSurface,
+    opts: &SurfaceOptions,
+    tolerance: f64,
+) -> Result<SurfaceReduction> {
+    check_tolerance(tolerance)?;
+    let mut best = f64::INFINITY;
+    for level in 0..=MAX_SURFACE_LEVEL {
+        let refined = refine(s, level)?;
+        let red = reduce_bspline_surface(&refined, opts)?;
+        if red.error_bound <= tolerance {
+            return Ok(red);
+        }
+        best = best.min(red.error_bound);
+    }
+    Err(Error::NoConvergence {
+        tolerance,
+        achieved: best,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A bicubic height field with a real cubic term in both directions.
+    fn surface() -> BSplineSurface {
+        let k = vec![0.0, 0.0, 0.0, 0.0, 0.4, 1.0, 1.0, 1.0, 1.0];
+        let mut pts = Vec::new();
+        for i in 0..5 {
+            for j in 0..5 {
+                let (x, y) = (f64::from(i) / 4.0, f64::from(j) / 4.0);
+                pts.extend([x, y, (3.0 * x).sin() * (2.0 * y).cos() + x * y * y]);
+            }
+        }
+        BSplineSurface::new((3, 3), k.clone(), k, pts, (5, 5), 3).unwrap()
+    }
+
+    #[test]
+    fn meets_tolerances_with_sampled_check() {
+        let s = surface();
+        for tol in [1e-2, 1e-3, 1e-4] {
+            let opts = SurfaceOptions {
+                measure: true,
+                ..SurfaceOptions::new((2, 2))
+            };
+            let red = reduce_bspline_surface_to_tolerance(&s, &opts, tol).unwrap();
+            assert_eq!(red.surface.degrees(), (2, 2));
+            assert!(red.error_bound <= tol, "{tol}: bound {}", red.error_bound);
+            // Independent check on a grid that is not the one the reducer samples.
+            let mut worst: f64 = 0.0;
+            for i in 0..=37 {
+                for j in 0..=37 {
+                    let (u, v) = (f64::from(i) / 37.0, f64::from(j) / 37.0);
+                    let (a, b) = (s.eval(u, v).unwrap(), red.surface.eval(u, v).unwrap());
+                    let d = a
+                        .iter()
+                        .zip(&b)
+                        .map(|(x, y)| (x - y) * (x - y))
+                        .sum::<f64>();
+                    worst = worst.max(d.sqrt());
+                }
+            }
+            assert!(worst <= red.error_bound, "{tol}: sampled {worst} > bound");
+        }
+    }
+
+    #[test]
+    fn bad_tolerance_and_unreachable() {
+        let s = surface();
+        let opts = SurfaceOptions::new((2, 2));
+        for bad in [0.0, -1.0, f64::NAN] {
+            assert!(matches!(
+                reduce_bspline_surface_to_tolerance(&s, &opts, bad),
+                Err(Error::BadTolerance { .. })
+            ));
+        }
+        assert!(matches!(
+            reduce_bspline_surface_to_tolerance(&s, &opts, 1e-300),
+            Err(Error::NoConvergence { .. })
+        ));
+    }
+
+    #[test]
+    fn midpoints_split_every_span() {
+        let k = [0.0, 0.0, 0.0, 0.5, 0.5, 1.0, 1.0, 1.0];
+        assert_eq!(midpoints(&k, 2, 2), vec![0.25, 0.75]);
+        assert_eq!(midpoints(&k, 2, 1), Vec::<f64>::new());
+    }
+}
