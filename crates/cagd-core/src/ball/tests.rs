@@ -207,8 +207,7 @@ proptest! {
     /// Bézier -> WSGB -> Bézier within 1e-13 relative (to the larger coordinate of the two
     /// representations) on the points; WSGB -> Bézier -> WSGB within 1e-13 relative as
     /// curves (the WSGB points themselves carry the rounding of the Bézier points times the
-    /// conditioning of Bézier -> WSGB, up to ~1e4 for Wang–Ball at n = 30, see the docs of
-    /// `Basis`). n <= 30, every L.
+    /// conditioning of Bézier -> WSGB, see the docs of `Basis`). n <= 30, every L.
     #[test]
     fn round_trips((n, l) in degree_and_order(), dim in 1usize..=3, seed in any::<u64>()) {
         let pts = pseudo_points(n, dim, seed);

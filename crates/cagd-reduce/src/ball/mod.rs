@@ -2,6 +2,27 @@
 //! the perturbation method (§9.4), the best uniform approximation (§9.5), every Bézier
 //! reducer through the exact conversion, and reduction to a tolerance with subdivision.
 //!
+//! Every reduction ([`reduce_wsgb`]) returns the WSGB(m, L') curve,
+//! `L' = min(L, max(floor(m/2) - 1, 0))`, with a certified bound of the Euclidean distance
+//! `max_u ||r(u) - q(u)||` (closed forms of SPEC-reduce §9.4 / §9.5 per step, summed over
+//! the steps, plus a rounding allowance; the Bézier reducer's bound plus the conversions'
+//! rounding) and the measured distance; the seed's per-coordinate figures (bound (11),
+//! formula (12), the exact max-abs error) are separate, named fields of [`WsgbStep`].
+//!
+//! ## Supported range, accuracy and cost
+//!
+//! Degrees up to 64, every order, any dimension; the perturbation method needs `n >= 2`
+//! at every step (target `m >= 1`). The exact routes ([`wsgb_perturbation_step`],
+//! [`wsgb_uniform_step_exact`] on `BigRational`) reproduce the spec's `Q_exact`; the `f64`
+//! results equal them to a few ulp. Measured by the tests (n <= 30, every L): measured error
+//! <= certified bound; the uniform error equals `||lec|| / 2^(2n-1)` within `1e-12` relative
+//! (above the floor `8 eps max |p_i|` of the rounded points), the perturbation error its
+//! closed form; an elevated curve reduces back exactly. Release build, 3-D, one degree,
+//! measurement off (`cargo bench -p cagd-reduce --bench wsgb`): perturbation 0.44 / 0.35 /
+//! 0.45 µs per curve at n = 5 / 10 / 20, uniform 0.31 / 0.44 / 0.56 µs; the L2 method
+//! through the exact Bézier conversion 0.35 / 0.64 / 6.9 ms (the exact rational conversions
+//! dominate).
+//!
 //! ## The paper's example (SPEC-reduce §9.6)
 //!
 //! Reproduced exactly (tests `paper_example_*`): the reduced points of the perturbation
