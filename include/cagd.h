@@ -478,6 +478,38 @@ typedef int32_t CagdMerge;
 #endif // __cplusplus
 
 /**
+ * The WSGB reduction method of `cagd_wsgb_reduce`.
+ *
+ */
+enum CagdWsgbMethod
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : int32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  /**
+   * Seed 003 §2.1, SPEC-reduce §9.4: least perturbation of the middle points, then the
+   * exact inverse elevation. One degree per step; needs `n >= 2` at every step.
+   */
+  CAGD_WSGB_PERTURBATION = 0,
+  /**
+   * Seed 003 §2.2, SPEC-reduce §9.5: best uniform approximation, one degree per step.
+   */
+  CAGD_WSGB_UNIFORM = 1,
+  /**
+   * The Bézier method of `opts->method` (with `r`, `p`, `l1`, `l2`) through the exact
+   * conversion to Bézier form and back.
+   */
+  CAGD_WSGB_BEZIER = 2,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum CagdWsgbMethod CagdWsgbMethod;
+#else
+typedef int32_t CagdWsgbMethod;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
  * How `cagd_bspline_reduce` builds the degree-`target` spline from a degree-`p` one
  * (`CagdReduceOptions.spline_strategy`, an `int32_t`; cagd-reduce `BSplineStrategy`).
  * Each keeps, at every interior knot of the input that is still a knot of the result,
@@ -665,6 +697,22 @@ typedef struct CagdTriPatch CagdTriPatch;
 typedef struct CagdTriPatchList CagdTriPatchList;
 
 /**
+ * Opaque handle to a WSGB(n, L) curve: `n + 1` control points of `dim` coordinates
+ * (`0 <= n <= 64`, `dim >= 1`) and the order `0 <= L <= max(floor(n/2) - 1, 0)` (`L = 0`:
+ * Said–Ball, `L = floor(n/2) - 1`: Wang–Ball). Polynomial only. Immutable; release with
+ * `cagd_wsgb_free`.
+ */
+typedef struct CagdWsgbCurve CagdWsgbCurve;
+
+/**
+ * Opaque handle to the pieces of a WSGB reduction to a tolerance: piece `i` is a
+ * WSGB(m, L') curve on `[0, 1]` approximating the original on `[a_i, b_i]`
+ * (`piece_i(s) ~ whole(a_i + s (b_i - a_i))`) within its certified bound. Immutable;
+ * release with `cagd_wsgblist_free`.
+ */
+typedef struct CagdWsgbCurveList CagdWsgbCurveList;
+
+/**
  * How to reduce: a plain struct the caller owns. Fill it with
  * `cagd_reduce_options_init`, then change the fields you need.
  *
@@ -827,6 +875,62 @@ typedef struct CagdIntervalReport {
    */
   double objective_decoupled;
 } CagdIntervalReport;
+
+/**
+ * What `cagd_wsgb_reduce` did. The caller sets `struct_size = sizeof(CagdWsgbReport)`;
+ * the library writes the fields that fit in `struct_size` bytes (later versions only
+ * append fields). Numbers that were not computed are NaN, as documented per field.
+ */
+typedef struct CagdWsgbReport {
+  /**
+   * `sizeof(CagdWsgbReport)`, set by the caller (at least the size of this version).
+   */
+  size_t struct_size;
+  /**
+   * Source degree `n`.
+   */
+  size_t degree_from;
+  /**
+   * Target degree `m`.
+   */
+  size_t degree_to;
+  /**
+   * Source order `L`.
+   */
+  size_t order_from;
+  /**
+   * Order `L'` of the result.
+   */
+  size_t order_to;
+  /**
+   * Certified upper bound of `max_u ||r(u) - q(u)||` (Euclidean), rounding included.
+   */
+  double error_bound;
+  /**
+   * Measured `max_u ||r(u) - q(u)||` (Euclidean); NaN when `opts->measure` is false.
+   */
+  double max_error;
+  /**
+   * Measured `max_u max_k |r_k(u) - q_k(u)|` (the max-abs norm of seed 003); NaN when
+   * `opts->measure` is false.
+   */
+  double max_error_inf;
+  /**
+   * Seed 003's bound (11) summed over the steps (max-abs norm; what the seed prints as
+   * the perturbation "error"); NaN for `CAGD_WSGB_BEZIER`.
+   */
+  double paper_bound_11;
+  /**
+   * Seed 003's formula (12), `||lec||_inf / 2^(2n-1)`, summed over the steps; NaN for
+   * `CAGD_WSGB_BEZIER`.
+   */
+  double uniform_error_12;
+  /**
+   * The exact max-abs error of each step by its closed form (SPEC-reduce §9.4/§9.5),
+   * summed over the steps; NaN for `CAGD_WSGB_BEZIER`.
+   */
+  double paper_true_error_inf;
+} CagdWsgbReport;
 
 #ifdef __cplusplus
 extern "C" {
@@ -5026,6 +5130,354 @@ CagdStatus cagd_tripatch_elevate(const struct CagdTriPatch *patch,
  */
 CagdStatus cagd_tripatch_subdivide_midpoint(const struct CagdTriPatch *patch,
                                             struct CagdTriPatch **pieces_out);
+
+/**
+ * Creates a WSGB(n_points - 1, order) curve.
+ *
+ * Parameters:
+ * - `points` (in): `n_points * dim` doubles, row-major (`points[i * dim + k]`). Borrowed
+ *   and copied.
+ * - `n_points` (in): number of control points, `1..=65`.
+ * - `dim` (in): coordinates per point, `>= 1`.
+ * - `order` (in): the order `L`, `0 <= L <= max(floor(n/2) - 1, 0)`.
+ * - `curve_out` (out): on `CAGD_OK`, a new handle owned by the caller (release with
+ *   `cagd_wsgb_free`). Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*curve_out` holds the new curve.
+ * - `CAGD_ERR_NULL_POINTER`: `points` or `curve_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, `order` out of range (the message gives it),
+ *   `n_points * dim` overflows, or a pointer is misaligned.
+ * - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_points == 0`.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n_points > 65`.
+ * - `CAGD_ERR_NON_FINITE`: a coordinate is NaN or infinite.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `points` must be NULL or point to `n_points * dim` readable doubles; `curve_out` NULL
+ * or a writable `CagdWsgbCurve *`.
+ */
+CagdStatus cagd_wsgb_new(const double *points,
+                         size_t n_points,
+                         size_t dim,
+                         size_t order,
+                         struct CagdWsgbCurve **curve_out);
+
+/**
+ * Releases a WSGB curve. NULL is accepted and ignored; a non-NULL handle must be released
+ * exactly once. Does not change `cagd_last_error_message()`.
+ *
+ * # Safety
+ * `curve` must be NULL or a live handle created by cagd that is not used afterwards.
+ */
+void cagd_wsgb_free(struct CagdWsgbCurve *curve);
+
+/**
+ * Reads the degree `n`, the order `L` and the dimension of a WSGB curve.
+ *
+ * Parameters:
+ * - `curve` (in): the curve.
+ * - `degree_out`, `order_out`, `dim_out` (out): on `CAGD_OK`, `n`, `L` and `dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the three outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: an argument is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live WSGB handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_wsgb_shape(const struct CagdWsgbCurve *curve,
+                           size_t *degree_out,
+                           size_t *order_out,
+                           size_t *dim_out);
+
+/**
+ * Copies the control points of a WSGB curve.
+ *
+ * Parameters:
+ * - `curve` (in): the curve.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `(n + 1) * dim`
+ *   doubles hold the points, row-major. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, `(n + 1) * dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the points are in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `curve` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is too small; only `*out_needed` is written.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live WSGB handle; `out` NULL or `out_cap` writable doubles;
+ * `out_needed` NULL or writable.
+ */
+CagdStatus cagd_wsgb_points(const struct CagdWsgbCurve *curve,
+                            double *out,
+                            size_t out_cap,
+                            size_t *out_needed);
+
+/**
+ * Evaluates a WSGB curve at `u` by the WSGB peeling algorithm (SPEC-reduce §9.1;
+ * `O(n dim)`, faster than de Casteljau on the Bézier form). `u` outside `[0, 1]`
+ * extrapolates.
+ *
+ * Parameters:
+ * - `curve` (in): the curve.
+ * - `u` (in): the parameter, finite.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `dim` doubles hold
+ *   the point. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out`.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, `dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the point is in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `curve` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `u` is NaN or infinite, or a pointer is misaligned.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live WSGB handle; `out` NULL or `out_cap` writable doubles;
+ * `out_needed` NULL or writable.
+ */
+CagdStatus cagd_wsgb_eval(const struct CagdWsgbCurve *curve,
+                          double u,
+                          double *out,
+                          size_t out_cap,
+                          size_t *out_needed);
+
+/**
+ * The same curve in Bézier form: exact conversion (SPEC-reduce §9.1), each point rounded
+ * once.
+ *
+ * Parameters:
+ * - `curve` (in): the WSGB curve.
+ * - `bezier_out` (out): on `CAGD_OK`, a new `CagdCurve` of the same degree, owned by the
+ *   caller (release with `cagd_curve_free`). Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*bezier_out` holds the curve.
+ * - `CAGD_ERR_NULL_POINTER`: `curve` or `bezier_out` is NULL.
+ * - `CAGD_ERR_NON_FINITE`: a converted coordinate overflows to infinity (inputs near the
+ *   largest double).
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live WSGB handle; `bezier_out` NULL or writable.
+ */
+CagdStatus cagd_wsgb_to_bezier(const struct CagdWsgbCurve *curve, struct CagdCurve **bezier_out);
+
+/**
+ * The WSGB(n, `order`) form of a polynomial Bézier curve of degree `n` (exact conversion,
+ * rounded once).
+ *
+ * Parameters:
+ * - `bezier` (in): a polynomial Bézier curve.
+ * - `order` (in): the order `L` of the result, `0 <= L <= max(floor(n/2) - 1, 0)`.
+ * - `curve_out` (out): on `CAGD_OK`, a new WSGB handle owned by the caller (release with
+ *   `cagd_wsgb_free`). Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*curve_out` holds the curve.
+ * - `CAGD_ERR_NULL_POINTER`: `bezier` or `curve_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `order` out of range, or a pointer is misaligned.
+ * - `CAGD_ERR_CONDITION_NOT_MET`: `bezier` is rational (WSGB curves are polynomial).
+ * - `CAGD_ERR_NON_FINITE`: a converted coordinate overflows to infinity.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `bezier` must be NULL or a live curve handle; `curve_out` NULL or writable.
+ */
+CagdStatus cagd_wsgb_from_bezier(const struct CagdCurve *bezier,
+                                 size_t order,
+                                 struct CagdWsgbCurve **curve_out);
+
+/**
+ * Degree elevation WSGB(n, L) -> WSGB(n + 1, `order`), exact and rounded once.
+ *
+ * Parameters:
+ * - `curve` (in): the curve, degree `n <= 63`.
+ * - `order` (in): the order of the result, `0 <= order <= max(floor((n+1)/2) - 1, 0)`.
+ * - `curve_out` (out): on `CAGD_OK`, a new WSGB handle owned by the caller.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*curve_out` holds the elevated curve.
+ * - `CAGD_ERR_NULL_POINTER`: `curve` or `curve_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `order` out of range, or a pointer is misaligned.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n + 1 > 64`.
+ * - `CAGD_ERR_NON_FINITE`: a coordinate overflows to infinity.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live WSGB handle; `curve_out` NULL or writable.
+ */
+CagdStatus cagd_wsgb_elevate(const struct CagdWsgbCurve *curve,
+                             size_t order,
+                             struct CagdWsgbCurve **curve_out);
+
+/**
+ * The leading coefficient (coefficient of `u^n`, SPEC-reduce §9.2) and whether the curve
+ * is exactly degenerate (of degree `< n`; tested in exact arithmetic on the stored
+ * doubles; a degree-0 curve is not degenerate).
+ *
+ * Parameters:
+ * - `curve` (in): the curve.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first `dim` doubles hold
+ *   the leading coefficient. May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out`.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, `dim`.
+ * - `degenerate_out` (out): on `CAGD_OK`, whether the curve is degenerate.
+ *
+ * Returns:
+ * - `CAGD_OK`: the outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `curve`, `out_needed` or `degenerate_out` is NULL, or `out`
+ *   is NULL with `out_cap > 0`.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live WSGB handle; `out` NULL or `out_cap` writable doubles;
+ * `out_needed` and `degenerate_out` NULL or writable.
+ */
+CagdStatus cagd_wsgb_leading_coefficient(const struct CagdWsgbCurve *curve,
+                                         double *out,
+                                         size_t out_cap,
+                                         size_t *out_needed,
+                                         bool *degenerate_out);
+
+/**
+ * Reduces a WSGB curve to degree `opts->target` so that every piece's certified
+ * Euclidean error is at most `opts->tolerance`, splitting at parameter midpoints (at most 30
+ * levels; `opts->max_depth` is not used). The pieces join continuously only when the method
+ * interpolates the end points (perturbation for target `>= 2`, Bézier methods with ends);
+ * the uniform method does not.
+ *
+ * Parameters:
+ * - `curve` (in): the curve.
+ * - `method` (in): a `CagdWsgbMethod` value.
+ * - `opts` (in): `target`, `tolerance` and, for `CAGD_WSGB_BEZIER`, `method`, `r`, `p`,
+ *   `l1`, `l2`. Borrowed.
+ * - `list_out` (out): on `CAGD_OK`, the pieces, owned by the caller (release with
+ *   `cagd_wsgblist_free`). Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*list_out` holds the pieces.
+ * - `CAGD_ERR_NULL_POINTER`: `curve`, `opts` or `list_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `method` not a `CagdWsgbMethod`, `opts->tolerance` not
+ *   finite and `> 0`, `opts->struct_size` too small, an invalid Bézier method code, or a
+ *   pointer is misaligned.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS`: as `cagd_wsgb_reduce`.
+ * - `CAGD_ERR_NO_CONVERGENCE`: the depth limit was reached before the tolerance.
+ * - `CAGD_ERR_NON_FINITE`: a coordinate overflows to infinity.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live WSGB handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; `list_out` NULL or writable.
+ */
+CagdStatus cagd_wsgb_reduce_to_tolerance(const struct CagdWsgbCurve *curve,
+                                         int32_t method,
+                                         const struct CagdReduceOptions *opts,
+                                         struct CagdWsgbCurveList **list_out);
+
+/**
+ * Releases a WSGB piece list (not the curves obtained from it). NULL is accepted and
+ * ignored; a non-NULL handle must be released exactly once. Does not change
+ * `cagd_last_error_message()`.
+ *
+ * # Safety
+ * `list` must be NULL or a live handle created by cagd that is not used afterwards.
+ */
+void cagd_wsgblist_free(struct CagdWsgbCurveList *list);
+
+/**
+ * Reads the number of pieces (`>= 1`).
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `count_out` (out): on `CAGD_OK`, the number of pieces.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*count_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `count_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; `count_out` NULL or writable.
+ */
+CagdStatus cagd_wsgblist_count(const struct CagdWsgbCurveList *list, size_t *count_out);
+
+/**
+ * Reads piece `index`: a new handle to its curve, its interval `[start, end]` and its
+ * certified Euclidean error bound.
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `index` (in): `0 <= index < count`.
+ * - `curve_out` (out): on `CAGD_OK`, a new WSGB handle owned by the caller (release with
+ *   `cagd_wsgb_free`).
+ * - `start_out`, `end_out`, `bound_out` (out): on `CAGD_OK`, the interval and the bound.
+ *
+ * Returns:
+ * - `CAGD_OK`: the outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: an argument is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `index >= count`, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; the outputs NULL or writable.
+ */
+CagdStatus cagd_wsgblist_get(const struct CagdWsgbCurveList *list,
+                             size_t index,
+                             struct CagdWsgbCurve **curve_out,
+                             double *start_out,
+                             double *end_out,
+                             double *bound_out);
+
+/**
+ * Reduces a WSGB(n, L) curve to degree `opts->target` (order `L' = min(L, max(floor(m/2)
+ * - 1, 0))`) with a certified Euclidean error bound.
+ *
+ * Parameters:
+ * - `curve` (in): the curve.
+ * - `method` (in): a `CagdWsgbMethod` value.
+ * - `opts` (in): the options (start from `cagd_reduce_options_init`): `target` and
+ *   `measure` always; `method`, `r`, `p`, `l1`, `l2` for `CAGD_WSGB_BEZIER`. Borrowed.
+ * - `curve_out` (out): on `CAGD_OK`, the reduced curve, owned by the caller (release with
+ *   `cagd_wsgb_free`). Not written on failure.
+ * - `report_out` (out, may be NULL): on `CAGD_OK`, filled with the report up to its
+ *   `struct_size` (which the caller sets to `sizeof(CagdWsgbReport)`).
+ *
+ * Returns:
+ * - `CAGD_OK`: the outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `curve`, `opts` or `curve_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `method` is not a `CagdWsgbMethod`, `opts->struct_size`
+ *   is below `sizeof(CagdReduceOptions)`, an invalid Bézier method code or `l1`/`l2`,
+ *   `report_out->struct_size` below `sizeof(size_t)`, or a pointer is misaligned.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n`; the perturbation method with `target < 1`
+ *   (it needs `n >= 2` at every step); a target below the Bézier method's minimum.
+ * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` (Bézier methods with ends).
+ * - `CAGD_ERR_NON_FINITE`: a reduced coordinate overflows to infinity.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `curve` must be NULL or a live WSGB handle; `opts` NULL or a readable
+ * `CagdReduceOptions` of `opts->struct_size` bytes; `curve_out` NULL or writable;
+ * `report_out` NULL or `report_out->struct_size` writable bytes.
+ */
+CagdStatus cagd_wsgb_reduce(const struct CagdWsgbCurve *curve,
+                            int32_t method,
+                            const struct CagdReduceOptions *opts,
+                            struct CagdWsgbCurve **curve_out,
+                            struct CagdWsgbReport *report_out);
 
 #ifdef __cplusplus
 }  // extern "C"

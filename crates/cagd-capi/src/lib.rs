@@ -46,6 +46,11 @@
 //!   (`cagd_bspline_to_bezier_pieces`, `cagd_curvelist_to_bspline`) and the standard form
 //!   (`cagd_curve_standard_form`); a failed inverse condition is
 //!   `CAGD_ERR_CONVERSION_CONDITION`.
+//! - WSGB curves of seed 003 (`CagdWsgbCurve`, a handle of its own): creation,
+//!   evaluation by peeling, exact conversion to and from `CagdCurve`, elevation, leading
+//!   coefficient and degeneracy, and `cagd_wsgb_reduce` (perturbation, best uniform, or any
+//!   Bézier method) with the `CagdWsgbReport` struct, `cagd_wsgb_reduce_to_tolerance`
+//!   (pieces in a `CagdWsgbCurveList`).
 //! - Every reduction of cagd-reduce: `cagd_curve_reduce` (twelve methods, with report),
 //!   `cagd_curve_reduce_batch`, `cagd_curve_reduce_to_tolerance` (C^k B-spline) and
 //!   `_stepwise` (seed 000 Algorithm 14.2.1), `cagd_curve_reduce_exact` /
@@ -118,6 +123,8 @@ mod tensorpatch;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod tripatch;
 mod version;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod wsgb;
 
 pub use bspline::{
     CagdBSpline, CagdBSplineSurface, cagd_bspline_degree, cagd_bspline_derivatives,
@@ -203,3 +210,10 @@ pub use tripatch::{
     cagd_tripatch_points, cagd_tripatch_shape, cagd_tripatch_subdivide_midpoint,
 };
 pub use version::{CAGD_VERSION_MAJOR, CAGD_VERSION_MINOR, CAGD_VERSION_PATCH};
+pub use wsgb::{
+    CagdWsgbCurve, CagdWsgbCurveList, CagdWsgbMethod, CagdWsgbReport, cagd_wsgb_elevate,
+    cagd_wsgb_eval, cagd_wsgb_free, cagd_wsgb_from_bezier, cagd_wsgb_leading_coefficient,
+    cagd_wsgb_new, cagd_wsgb_points, cagd_wsgb_reduce, cagd_wsgb_reduce_to_tolerance,
+    cagd_wsgb_shape, cagd_wsgb_to_bezier, cagd_wsgblist_count, cagd_wsgblist_free,
+    cagd_wsgblist_get,
+};

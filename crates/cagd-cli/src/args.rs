@@ -50,6 +50,11 @@ certified bound T, keeping the continuity the input has at each knot (C^min(k, M
 it is C^k); output: a \"bspline\" / \"bspline-surface\" without weights. Equal weights are
 recognised exactly (the same control points, no spans added).
 
+A WSGB curve ({\"type\":\"wsgb\",\"L\":L,\"points\":[...]}, seed 003) is reduced by --method
+perturbation or uniform (seed 003's methods) or any Bézier method through the exact
+conversion (bezier-perturbation: seed 000's perturbation), and written in WSGB form; with
+--tol T as \"wsgb-pieces\".
+
 merge reads one object {\"type\":\"beziers\",\"segments\":[[[x,y,...],...],...]} (optional
 \"weights\": one list or null per segment; optional \"breaks\": count + 1 increasing values,
 default 0, 1, ..., count) and merges the segments exactly into one \"bspline\" (seed 001

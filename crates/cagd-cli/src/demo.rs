@@ -188,6 +188,7 @@ pub(crate) fn run(out: &Path) -> Result<(), String> {
     crate::demo_convert::run(out, &mut table)?;
     crate::demo_implicit::run(out, &mut table)?;
     crate::demo_interval::run(out, &mut table)?;
+    crate::demo_wsgb::run(out, &mut table)?;
     print!("{table}");
     Ok(())
 }

@@ -5,6 +5,7 @@
 //! `{"type":"bspline","degree":p,"knots":[...],"points":[...],"weights":[...]}`,
 //! `{"type":"tensor","degree":[m,n],"points":[...]}` (i-major),
 //! `{"type":"triangle","degree":n,"points":[...]}` (i-major),
+//! `{"type":"wsgb","L":l,"points":[...]}` (seed 003; see [`crate::wsgb_cmd`]),
 //! `{"type":"bspline-surface","degree":[p,q],"knots_u":[...],"knots_v":[...],
 //! "points":[[[x,y,...],...],...],"weights":[[...],...]}` (`points[i][j]`: `i` along `u`;
 //! weights optional, nested like the points; see [`crate::input_surface`]),
@@ -78,6 +79,11 @@ pub(crate) enum RawShape {
         degree: usize,
         lo: PointList,
         hi: PointList,
+    },
+    /// A WSGB(n, L) curve of seed 003 ([`crate::wsgb_cmd`]).
+    Wsgb {
+        l: usize,
+        points: PointList,
     },
     /// A B-spline / NURBS surface: points flat and i-major over `counts = (n_u, n_v)`.
     BSplineSurface {
@@ -237,6 +243,17 @@ fn parse_shape(obj: &Value, path: &str) -> Result<RawShape, InputError> {
     }
     let points = point_list(field(obj, path, "points")?, &format!("{path}.points"))?;
     match ty {
+        "wsgb" => {
+            // Seed 003's curves are polynomial (see crate::wsgb_cmd).
+            if obj.get("weights").is_some() {
+                return Err(InputError::new(
+                    format!("{path}.weights"),
+                    "rational WSGB curves are not supported (seed 003 has none)",
+                ));
+            }
+            let l = count(field(obj, path, "L")?, &format!("{path}.L"))?;
+            Ok(RawShape::Wsgb { l, points })
+        }
         "bezier" => {
             let weights = optional_weights(obj, path, points.len())?;
             Ok(RawShape::Bezier { points, weights })

@@ -24,6 +24,7 @@ mod demo_implicit;
 mod demo_interval;
 mod demo_patches;
 mod demo_splines;
+mod demo_wsgb;
 mod implicit_cmd;
 mod implicit_svg;
 mod input;
@@ -43,6 +44,7 @@ mod spline_cmd;
 mod surface_cmd;
 mod surface_shape;
 mod svg;
+mod wsgb_cmd;
 
 use std::io::{Read, Write};
 use std::path::Path;

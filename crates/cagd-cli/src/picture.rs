@@ -63,6 +63,11 @@ pub(crate) fn curve_panels(
 pub(crate) fn panels(title: &str, input: &Shape, output: &Shape) -> Vec<Panel> {
     match (input, output) {
         (Shape::Bezier(a), Shape::Bezier(b)) => curve_panels(title, a, b).to_vec(),
+        (Shape::Wsgb(a), Shape::Wsgb(b)) => a
+            .to_bezier()
+            .and_then(|a| Ok((a, b.to_bezier()?)))
+            .map(|(a, b)| curve_panels(title, &a, &b).to_vec())
+            .unwrap_or_default(),
         (Shape::Bezier(a), Shape::BSpline(b)) => {
             spline_panels(title, &|t| a.eval(t), polygon(a), a.degree(), b).to_vec()
         }

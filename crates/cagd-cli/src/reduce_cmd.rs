@@ -116,10 +116,17 @@ pub(crate) struct Output {
 /// Runs `cagd reduce` on validated shapes; returns one output per input object.
 pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<Output>, Failure> {
     let name = args.method.as_deref().unwrap_or(DEFAULT_METHOD);
-    let how = plan(name, args.r, args.p).map_err(|message| Failure {
-        path: "--method".into(),
-        message,
-    })?;
+    let how = match plan(name, args.r, args.p) {
+        Ok(how) => how,
+        // Names only WSGB curves know (seed 003): fine when every input is one.
+        Err(_) if crate::wsgb_cmd::applies_to_all(name, shapes) => Plan::Linear(Method::Eck),
+        Err(message) => {
+            return Err(Failure {
+                path: "--method".into(),
+                message,
+            });
+        }
+    };
     // With a tolerance the pieces must join with C^k: the end orders of chebyshev / l2
     // default to the continuity K instead of 0.
     let k = args
@@ -234,6 +241,16 @@ pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<O
                     json,
                     pair: Some((shape.clone(), Shape::IntervalTriangle(result))),
                 });
+            }
+            Shape::Wsgb(c) => {
+                let (json, pair) =
+                    crate::wsgb_cmd::reduce(c, args, name, reduce_curve, report_json).map_err(
+                        |(at, message)| Failure {
+                            path: at.unwrap_or_else(|| path.clone()),
+                            message,
+                        },
+                    )?;
+                out.push(Output { json, pair });
             }
             Shape::BSplineSurface(s) => {
                 let (json, result) = crate::surface_cmd::reduce(s, args, path)?;

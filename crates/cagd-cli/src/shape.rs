@@ -15,6 +15,7 @@ pub(crate) enum Shape {
     Triangle(TriPatch),
     BSplineSurface(BSplineSurface),
     IntervalTriangle(IntervalTriPatch),
+    Wsgb(cagd_core::WsgbCurve),
 }
 
 /// Turns a cagd-core validation error into an input error naming the JSON field.
@@ -47,6 +48,14 @@ impl Shape {
                 };
                 Shape::Bezier(c.map_err(|e| locate(path, &e))?)
             }
+            RawShape::Wsgb { l, points } => Shape::Wsgb(
+                cagd_core::WsgbCurve::new(points.coords, points.dim, l).map_err(|e| match e {
+                    Error::BadParameter { name: "L", .. } => {
+                        InputError::new(format!("{path}.L"), e.to_string())
+                    }
+                    _ => locate(path, &e),
+                })?,
+            ),
             RawShape::Tensor { degree, points } => Shape::Tensor(
                 TensorPatch::new(points.coords, degree.0, degree.1, points.dim)
                     .map_err(|e| locate(path, &e))?,
@@ -120,6 +129,9 @@ impl Shape {
             }
             Shape::BSplineSurface(s) => crate::surface_shape::to_json(s),
             Shape::IntervalTriangle(t) => crate::interval_cmd::to_json(t),
+            Shape::Wsgb(c) => {
+                json!({"type": "wsgb", "L": c.order(), "points": rows(c.points(), c.dim())})
+            }
         }
     }
 }

@@ -50,6 +50,7 @@
 //! relative); knot removal returns a certified error bound.
 #![forbid(unsafe_code)]
 
+mod ball;
 mod basis;
 mod bezier;
 mod binomial;
@@ -62,6 +63,11 @@ mod patch;
 mod quadrature;
 mod validate;
 
+pub use ball::{
+    WsgbCurve, WsgbScalar, bezier_to_wsgb_exact, check_wsgb_order, round_exact_points,
+    to_exact_points, wsgb_elevate_exact, wsgb_inverse_elevation, wsgb_leading_coefficient,
+    wsgb_lec_difference, wsgb_lec_factor, wsgb_reduced_order, wsgb_to_bezier_exact,
+};
 pub use basis::{
     BallTerm, Basis, convert_points, from_bernstein, from_bernstein_exact, to_bernstein,
     to_bernstein_exact, wsgb_max_l, wsgb_terms,

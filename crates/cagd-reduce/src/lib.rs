@@ -164,6 +164,7 @@
 //! 3 / 6 / 12 and 9 / 18 / 36); to quadratics 5 / 10 / 20 and 19 / 38 / 76.
 #![forbid(unsafe_code)]
 
+mod ball;
 mod bezier;
 mod bspline;
 mod exact;
@@ -171,6 +172,13 @@ mod interval;
 mod patch;
 mod rational_to_polynomial;
 
+pub use ball::{
+    WsgbMethod, WsgbPiece, WsgbPiecewise, WsgbReduction, WsgbReport, WsgbStep, reduce_wsgb,
+    reduce_wsgb_to_tolerance, reduce_wsgb_via_bezier, reduce_wsgb_with,
+    wsgb_chebyshev_coefficients, wsgb_paper_bound_11, wsgb_perturbation_error_factor,
+    wsgb_perturbation_step, wsgb_perturbed_points, wsgb_sampled_error_inf, wsgb_uniform_points,
+    wsgb_uniform_step_exact,
+};
 pub use bezier::{
     ChebyshevTerms, DEFAULT_MAX_DEPTH, DEFAULT_REL_TOL, ErrorSpace, MAX_PIECES, Method, Operator,
     PiecewiseReduction, PiecewiseReport, ReduceOptions, ReducedPiece, Reduction, Report,

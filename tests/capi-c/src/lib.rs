@@ -144,6 +144,10 @@ c_tests![
     // c/rational_to_polynomial.c
     rational_to_polynomial_half_circle,
     rational_to_polynomial_equal_weights_and_errors,
+    // c/wsgb.c
+    wsgb_paper_example,
+    wsgb_bad_input,
+    wsgb_reduce_to_tolerance,
     // cpp/header_compiles.cpp
     cpp_header,
 ];

@@ -16,6 +16,7 @@ mod fields;
 mod implicit;
 mod interval;
 mod reduce;
+mod wsgb;
 
 use std::path::Path;
 
@@ -56,6 +57,7 @@ const TABLES: &[(&[(&str, Runner)], Rule)] = &[
     (convert_patch::TABLE, Rule::Elementwise),
     (implicit::TABLE, Rule::Elementwise),
     (interval::TABLE, Rule::Elementwise),
+    (wsgb::TABLE, Rule::PerArray),
 ];
 
 /// The runner of `algorithm` and its comparison rule, if any table knows it.

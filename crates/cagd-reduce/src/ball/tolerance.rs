@@ -1,0 +1,107 @@
+//! Reduction of a WSGB curve to a tolerance with midpoint subdivision (seed 003 §3: "if the
+//! perturbation method does not reach the required error, subdivide the curve and reduce
+//! piece by piece"; the same scheme as [`crate::reduce_to_tolerance`] for Bézier curves).
+
+use cagd_core::{Error, Result, WsgbCurve, check_tolerance};
+
+use super::measure::norm_inf;
+use super::{WsgbMethod, WsgbReduction, reduce_wsgb};
+use crate::{DEFAULT_MAX_DEPTH, MAX_PIECES};
+
+/// One reduced piece of a WSGB curve.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WsgbPiece {
+    /// Start of the parameter interval of the original curve.
+    pub start: f64,
+    /// End of the parameter interval (`> start`).
+    pub end: f64,
+    /// The reduced piece, WSGB(m, L') on `[0, 1]`: it approximates the original at
+    /// `start + s (end - start)`.
+    pub reduction: WsgbReduction,
+    /// Certified bound of `max_s ||original(start + s (end - start)) - piece(s)||`
+    /// (Euclidean): the piece's reduction bound plus the subdivision rounding.
+    pub error_bound: f64,
+}
+
+/// The pieces of a reduction to a tolerance.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WsgbPiecewise {
+    /// The pieces in parameter order.
+    pub pieces: Vec<WsgbPiece>,
+    /// Largest certified bound of the pieces (`<= tolerance`).
+    pub error_bound: f64,
+    /// Largest measured error of the pieces (against the subdivided original pieces).
+    pub max_error: f64,
+    /// Deepest midpoint-subdivision level used.
+    pub depth: usize,
+}
+
+/// Reduces `curve` to degree `m` with `method` so that the certified Euclidean error of
+/// every piece is at most `tolerance`, splitting at parameter midpoints (through the exact
+/// Bézier form: de Casteljau subdivision, exact conversion back) as often as needed, at most
+/// [`DEFAULT_MAX_DEPTH`] levels and [`MAX_PIECES`] pieces.
+///
+/// The pieces join continuously (`C^0`) only when the method interpolates the end points
+/// (perturbation for `m >= 2`, Bézier methods with `end_orders >= 0`); the uniform method
+/// does not.
+///
+/// # Errors
+/// [`Error::BadTolerance`]; the errors of [`reduce_wsgb`]; [`Error::NoConvergence`] when
+/// the depth or piece limit is reached.
+pub fn reduce_wsgb_to_tolerance(
+    curve: &WsgbCurve,
+    m: usize,
+    method: WsgbMethod,
+    tolerance: f64,
+) -> Result<WsgbPiecewise> {
+    check_tolerance(tolerance)?;
+    let n = curve.degree();
+    let l = curve.order();
+    let mut stack = vec![(0.0f64, 1.0f64, 0usize, curve.clone())];
+    let mut done: Vec<WsgbPiece> = Vec::new();
+    let mut depth_used = 0;
+    while let Some((a, b, depth, piece)) = stack.pop() {
+        let red = reduce_wsgb(&piece, m, method)?;
+        // Rounding of the subdivision (de Casteljau, a few n ulp per level) and of the two
+        // exact conversions, relative to the points' size, carried by the convex hull.
+        let size = norm_inf(piece.points()).max(norm_inf(curve.points()));
+        let sub = (depth as f64 + 1.0)
+            * 4.0
+            * (n as f64 + 2.0)
+            * f64::EPSILON
+            * (piece.dim() as f64).sqrt()
+            * size;
+        let e = red.report.error_bound + if depth > 0 { sub } else { 0.0 };
+        if e <= tolerance {
+            depth_used = depth_used.max(depth);
+            done.push(WsgbPiece {
+                start: a,
+                end: b,
+                reduction: red,
+                error_bound: e,
+            });
+            continue;
+        }
+        if depth >= DEFAULT_MAX_DEPTH || done.len() + stack.len() + 2 > MAX_PIECES {
+            return Err(Error::NoConvergence {
+                tolerance,
+                achieved: e,
+            });
+        }
+        let (left, right) = piece.to_bezier()?.subdivide(0.5)?;
+        let mid = 0.5 * (a + b);
+        stack.push((mid, b, depth + 1, WsgbCurve::from_bezier(&right, l)?));
+        stack.push((a, mid, depth + 1, WsgbCurve::from_bezier(&left, l)?));
+    }
+    let error_bound = done.iter().map(|p| p.error_bound).fold(0.0, f64::max);
+    let max_error = done
+        .iter()
+        .filter_map(|p| p.reduction.report.max_error)
+        .fold(0.0, f64::max);
+    Ok(WsgbPiecewise {
+        pieces: done,
+        error_bound,
+        max_error,
+        depth: depth_used,
+    })
+}
