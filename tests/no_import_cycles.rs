@@ -14,22 +14,10 @@
 use std::collections::{BTreeMap, BTreeSet, HashMap, HashSet};
 use std::path::{Path, PathBuf};
 
-/// Known circles of cagd-cli, allowed until the session that reorganises the CLI removes
-/// them (issue 15; the CLI layout is being changed by other work): `(parent module, from,
-/// to)`, `""` = the crate root. Every other cycle fails; an entry that no longer occurs is
-/// only reported (delete it).
-const ALLOWED: &[(&str, &str, &str, &str)] = &[
-    ("cagd-cli", "", "demo", "demo_patches"),
-    ("cagd-cli", "", "demo_patches", "demo"),
-    ("cagd-cli", "", "demo", "demo_splines"),
-    ("cagd-cli", "", "demo_splines", "demo"),
-    ("cagd-cli", "", "input", "input_surface"),
-    ("cagd-cli", "", "input_surface", "input"),
-    ("cagd-cli", "", "reduce_cmd", "surface_cmd"),
-    ("cagd-cli", "", "surface_cmd", "reduce_cmd"),
-    ("cagd-cli", "", "shape", "surface_shape"),
-    ("cagd-cli", "", "surface_shape", "shape"),
-];
+/// Known circles, allowed until removed: `(crate, parent module, from, to)`, `""` = the
+/// crate root. None are left (issue 15); every cycle fails. An entry that no longer occurs
+/// is only reported (delete it).
+const ALLOWED: &[(&str, &str, &str, &str)] = &[];
 
 type ModPath = Vec<String>;
 

@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use crate::implicit_cmd::{ImplicitizeArgs, IntersectArgs};
+use crate::commands::implicit::{ImplicitizeArgs, IntersectArgs};
 
 /// Usage text printed by `cagd --help` and after a usage error.
 pub(crate) const USAGE: &str = "\

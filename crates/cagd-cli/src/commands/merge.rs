@@ -2,12 +2,14 @@
 //! 001 §4.1, `BSplineCurve::from_beziers`), written in the command's B-spline shape.
 
 use cagd_core::{BSplineCurve, BezierCurve, Error};
+use std::process::ExitCode;
+
 use serde_json::{Value, json};
 
-use crate::args::MergeArgs;
+use crate::commands::args::MergeArgs;
 use crate::input::InputError;
-use crate::input_beziers::{Beziers, parse};
-use crate::shape::Shape;
+use crate::input::beziers::{Beziers, parse};
+use crate::input::shape::Shape;
 
 /// The relative factor of the default tolerance: `1e-9 * max(1, largest |coordinate|)`.
 pub(crate) const DEFAULT_REL_TOL: f64 = 1e-9;
@@ -93,6 +95,20 @@ fn locate_joint(
             breaks[j]
         ),
     )
+}
+
+/// `cagd merge`: one object in, one B-spline out.
+pub(crate) fn command(args: &MergeArgs) -> ExitCode {
+    let result = crate::input::read_input(args.input.as_deref())
+        .and_then(|text| run(&text, args).map_err(|e| e.to_string()));
+    let json = match result {
+        Ok(v) => v,
+        Err(e) => {
+            eprintln!("cagd: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    crate::output::json::write_json(args.output.as_deref(), &json)
 }
 
 #[cfg(test)]

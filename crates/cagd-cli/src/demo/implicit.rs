@@ -5,22 +5,9 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
+use crate::demo::timing::time_us;
 use cagd_core::BezierCurve;
 use cagd_implicit::{ImplicitCurve, implicitize, intersect};
-
-/// Median time of `reps` runs of `f`, in microseconds (own copy: the demo table module
-/// calls this one, so it must not be imported from there).
-fn time_us(reps: usize, mut f: impl FnMut()) -> f64 {
-    let mut times: Vec<f64> = (0..reps)
-        .map(|_| {
-            let t = std::time::Instant::now();
-            f();
-            t.elapsed().as_secs_f64() * 1e6
-        })
-        .collect();
-    times.sort_by(f64::total_cmp);
-    times[times.len() / 2]
-}
 
 fn curve(points: &[f64], weights: &[f64]) -> Result<BezierCurve, String> {
     BezierCurve::new_rational(points.to_vec(), weights.to_vec(), 2).map_err(|e| e.to_string())
@@ -57,7 +44,7 @@ pub(crate) fn run(out: &Path, table: &mut String) -> Result<(), String> {
             "", cl.value, cl.sign, cl.distance
         );
         let file = out.join(format!("{id}.svg"));
-        std::fs::write(&file, crate::implicit_svg::render(c, &ic, &[], &[]))
+        std::fs::write(&file, crate::output::implicit::render(c, &ic, &[], &[]))
             .map_err(|e| format!("{}: {e}", file.display()))?;
         let _ = writeln!(table, "{:<22} pictures: {}", "", file.display());
     }
@@ -92,7 +79,7 @@ pub(crate) fn run(out: &Path, table: &mut String) -> Result<(), String> {
     let file = out.join("impl-intersect.svg");
     std::fs::write(
         &file,
-        crate::implicit_svg::render(&cubic, &ic, &[&other], &pts),
+        crate::output::implicit::render(&cubic, &ic, &[&other], &pts),
     )
     .map_err(|e| format!("{}: {e}", file.display()))?;
     let _ = writeln!(table, "{:<22} pictures: {}", "", file.display());

@@ -6,8 +6,8 @@ use std::path::Path;
 
 use cagd_reduce::{IntervalOptions, IntervalTriPatch, reduce_interval_triangle};
 
-use crate::interval_cmd::panels;
-use crate::svg;
+use crate::output::interval::panels;
+use crate::output::svg;
 
 /// Example 1's boxes `([x, x+2], [y, y+2], [z, z+2])`: `(i, j)` and `(x, y, z)`
 /// (SPEC-convert I.4; 7 of the 15 reconstructed there).

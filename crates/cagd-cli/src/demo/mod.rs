@@ -7,16 +7,24 @@
 //! (figures 14.4.1 / 14.4.2: ends free / interpolated) are ours; the fifteenth-degree curve
 //! of example 14.5.1 is the input of spec vectors `cheb-ends-n15-m10-*`.
 
+mod convert;
+mod implicit;
+mod interval;
+mod patches;
+mod splines;
+pub(crate) mod timing;
+mod wsgb;
+
 use std::fmt::Write as _;
 use std::path::Path;
-use std::time::Instant;
 
 use cagd_core::BezierCurve;
 
-use crate::methods::{NAMES, Plan, plan};
-use crate::picture::curve_panels;
-use crate::reduce_cmd::reduce_curve;
-use crate::svg;
+use crate::commands::reduce::methods::{NAMES, Plan, plan};
+use crate::commands::reduce::reduce_curve;
+use crate::output::picture::curve_panels;
+use crate::output::svg;
+use timing::time_us;
 
 struct Example {
     id: &'static str,
@@ -113,19 +121,6 @@ const EXAMPLES: &[Example] = &[
     },
 ];
 
-/// Median time of `reps` runs of `f`, in microseconds.
-pub(crate) fn time_us(reps: usize, mut f: impl FnMut()) -> f64 {
-    let mut times: Vec<f64> = (0..reps)
-        .map(|_| {
-            let t = Instant::now();
-            f();
-            t.elapsed().as_secs_f64() * 1e6
-        })
-        .collect();
-    times.sort_by(f64::total_cmp);
-    times[times.len() / 2]
-}
-
 /// One table row per (example, method variant); pictures in `out`.
 pub(crate) fn run(out: &Path) -> Result<(), String> {
     std::fs::create_dir_all(out).map_err(|e| format!("{}: {e}", out.display()))?;
@@ -182,13 +177,13 @@ pub(crate) fn run(out: &Path) -> Result<(), String> {
             .map_err(|e| format!("{}: {e}", file.display()))?;
         let _ = writeln!(table, "{:<22} pictures: {}", "", file.display());
     }
-    crate::demo_patches::run(out, &mut table)?;
-    crate::demo_splines::run(out, &mut table)?;
-    crate::demo_convert_patch::run(out, &mut table)?;
-    crate::demo_convert::run(out, &mut table)?;
-    crate::demo_implicit::run(out, &mut table)?;
-    crate::demo_interval::run(out, &mut table)?;
-    crate::demo_wsgb::run(out, &mut table)?;
+    patches::run(out, &mut table)?;
+    splines::run(out, &mut table)?;
+    convert::patch::run(out, &mut table)?;
+    convert::curve::run(out, &mut table)?;
+    implicit::run(out, &mut table)?;
+    interval::run(out, &mut table)?;
+    wsgb::run(out, &mut table)?;
     print!("{table}");
     Ok(())
 }

@@ -8,12 +8,12 @@ use std::path::Path;
 use cagd_core::{TensorPatch, TriPatch};
 use cagd_reduce::{PatchOptions, TriOptions, reduce_tensor, reduce_triangle};
 
-use crate::demo::time_us;
-use crate::methods::plan;
-use crate::patch_cmd::{tensor, tensor_method, tri_method, triangle};
-use crate::picture::panels;
-use crate::shape::Shape;
-use crate::svg;
+use crate::commands::reduce::methods::plan;
+use crate::commands::reduce::patch::{tensor, tensor_method, tri_method, triangle};
+use crate::demo::timing::time_us;
+use crate::input::shape::Shape;
+use crate::output::picture::panels;
+use crate::output::svg;
 
 /// A smooth height field sampled as control points: `z = sin(2x) cos(3y) / 2 + x y`.
 fn height(x: f64, y: f64) -> f64 {

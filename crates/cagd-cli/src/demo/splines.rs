@@ -11,10 +11,10 @@ use cagd_reduce::{
     BSplineOptions, BSplineStrategy, Merge, Method, reduce_bspline, reduce_uniform_bspline,
 };
 
-use crate::demo::time_us;
-use crate::picture::panels;
-use crate::shape::Shape;
-use crate::svg;
+use crate::demo::timing::time_us;
+use crate::input::shape::Shape;
+use crate::output::picture::panels;
+use crate::output::svg;
 
 const SEED_001_POINTS: [f64; 18] = [
     3.0, 3.0, 5.0, 9.5, 7.0, 2.0, 8.0, 9.0, 10.0, 3.0, 11.0, 8.0, 13.0, 5.0, 14.0, 6.0, 16.0, 4.0,

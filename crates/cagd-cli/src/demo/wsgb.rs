@@ -13,9 +13,9 @@ use std::time::Instant;
 use cagd_core::WsgbCurve;
 use cagd_reduce::{Method, WsgbMethod, reduce_wsgb, reduce_wsgb_with};
 
-use crate::picture::panels;
-use crate::shape::Shape;
-use crate::svg;
+use crate::input::shape::Shape;
+use crate::output::picture::panels;
+use crate::output::svg;
 
 const P7: [f64; 16] = [
     220., 110., 160., 220., 180., 340., 260., 400., 355., 425., 470., 320., 490., 200., 420., 100.,

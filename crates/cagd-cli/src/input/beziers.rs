@@ -20,7 +20,7 @@ pub(crate) struct Beziers {
 /// Reads and validates the whole input text.
 pub(crate) fn parse(text: &str) -> Result<Beziers, InputError> {
     let obj: Value = serde_json::from_str(text).map_err(|e| {
-        let path = crate::json_path::path_at(text, e.line(), e.column(), "input");
+        let path = crate::input::json_path::path_at(text, e.line(), e.column(), "input");
         InputError::new(path, format!("not valid JSON: {e}"))
     })?;
     if !obj.is_object() {

@@ -5,14 +5,22 @@
 //! `{"type":"bspline","degree":p,"knots":[...],"points":[...],"weights":[...]}`,
 //! `{"type":"tensor","degree":[m,n],"points":[...]}` (i-major),
 //! `{"type":"triangle","degree":n,"points":[...]}` (i-major),
-//! `{"type":"wsgb","L":l,"points":[...]}` (seed 003; see [`crate::wsgb_cmd`]),
+//! `{"type":"wsgb","L":l,"points":[...]}` (seed 003; see [`crate::commands::reduce::wsgb`]),
 //! `{"type":"bspline-surface","degree":[p,q],"knots_u":[...],"knots_v":[...],
 //! "points":[[[x,y,...],...],...],"weights":[[...],...]}` (`points[i][j]`: `i` along `u`;
-//! weights optional, nested like the points; see [`crate::input_surface`]),
+//! weights optional, nested like the points; see [`crate::input::surface`]),
 //! `{"type":"interval-triangle","degree":n,"lo":[...],"hi":[...]}` (i-major lower and upper
-//! nets; see [`crate::interval_cmd`]).
+//! nets; see [`crate::commands::reduce::interval`]).
 //!
 //! Every error names the JSON path of the offending field (`input[2].points[3][1]`).
+
+pub(crate) mod beziers;
+mod file;
+pub(crate) mod json_path;
+pub(crate) mod shape;
+mod surface;
+
+pub(crate) use file::read_input;
 
 use std::fmt;
 
@@ -80,7 +88,7 @@ pub(crate) enum RawShape {
         lo: PointList,
         hi: PointList,
     },
-    /// A WSGB(n, L) curve of seed 003 ([`crate::wsgb_cmd`]).
+    /// A WSGB(n, L) curve of seed 003 ([`crate::commands::reduce::wsgb`]).
     Wsgb {
         l: usize,
         points: PointList,
@@ -100,7 +108,7 @@ pub(crate) enum RawShape {
 /// (one object) or `input[i]`.
 pub(crate) fn parse_input(text: &str) -> Result<Vec<RawShape>, InputError> {
     let value: Value = serde_json::from_str(text).map_err(|e| {
-        let path = crate::json_path::path_at(text, e.line(), e.column(), "input");
+        let path = json_path::path_at(text, e.line(), e.column(), "input");
         InputError::new(path, format!("not valid JSON: {e}"))
     })?;
     match &value {
@@ -201,7 +209,7 @@ fn optional_weights(obj: &Value, path: &str, n: usize) -> Result<Option<Vec<f64>
 }
 
 /// Reads an `interval-triangle` object (seed 004; the counts are checked here, the values
-/// by `crate::interval_cmd::build`).
+/// by `crate::input::shape::interval::build`).
 fn parse_interval(obj: &Value, path: &str) -> Result<RawShape, InputError> {
     let degree = count(field(obj, path, "degree")?, &format!("{path}.degree"))?;
     let lo = point_list(field(obj, path, "lo")?, &format!("{path}.lo"))?;
@@ -236,7 +244,7 @@ fn parse_shape(obj: &Value, path: &str) -> Result<RawShape, InputError> {
         .as_str()
         .ok_or_else(|| InputError::new(format!("{path}.type"), "expected a string"))?;
     if ty == "bspline-surface" {
-        return crate::input_surface::parse(obj, path);
+        return surface::parse(obj, path);
     }
     if ty == "interval-triangle" {
         return parse_interval(obj, path);
@@ -244,7 +252,7 @@ fn parse_shape(obj: &Value, path: &str) -> Result<RawShape, InputError> {
     let points = point_list(field(obj, path, "points")?, &format!("{path}.points"))?;
     match ty {
         "wsgb" => {
-            // Seed 003's curves are polynomial (see crate::wsgb_cmd).
+            // Seed 003's curves are polynomial (see crate::commands::reduce::wsgb).
             if obj.get("weights").is_some() {
                 return Err(InputError::new(
                     format!("{path}.weights"),

@@ -3,8 +3,8 @@
 
 use cagd_core::{BSplineCurve, BezierCurve, TriPatch};
 
-use crate::shape::Shape;
-use crate::svg::{Panel, project};
+use crate::input::shape::Shape;
+use crate::output::svg::{Panel, project};
 
 const SAMPLES: usize = 400;
 
@@ -115,7 +115,7 @@ pub(crate) fn panels(title: &str, input: &Shape, output: &Shape) -> Vec<Panel> {
             )]
         }
         (Shape::IntervalTriangle(a), Shape::IntervalTriangle(b)) => {
-            crate::interval_cmd::panels(title, a, b)
+            crate::output::interval::panels(title, a, b)
         }
         _ => Vec::new(),
     }

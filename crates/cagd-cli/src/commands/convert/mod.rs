@@ -17,17 +17,21 @@
 //! Triangle and tensor inputs and the split / trim options are the patch conversions of
 //! §15.4–15.7, routed to [`patch_conversion`].
 
+pub(crate) mod patch;
+
 use cagd_convert::{
     BezierPieces, patches_to_nurbs, pieces_to_nurbs, standard_form, surface_to_bezier_patches,
     to_bezier_pieces,
 };
 use cagd_core::{BSplineCurve, BSplineSurface, BezierCurve, SurfacePatchPiece, TensorPatch};
+use std::process::ExitCode;
+
 use serde_json::{Value, json};
 
-use crate::args::ConvertArgs;
+use crate::commands::args::ConvertArgs;
+use crate::input::shape::{Shape, locate, rows};
 use crate::input::{InputError, count, field, numbers, parse_input, point_list};
-use crate::shape::{Shape, locate, rows};
-use crate::svg::{Panel, project};
+use crate::output::svg::{Panel, project};
 
 /// The output of a conversion: the JSON and, for `--svg`, the panels of a picture.
 pub(crate) struct Converted {
@@ -41,7 +45,7 @@ const SAMPLES: usize = 32;
 /// Reads the input text and converts as `args` asks.
 pub(crate) fn run(text: &str, args: &ConvertArgs) -> Result<Converted, InputError> {
     let value: Value = serde_json::from_str(text).map_err(|e| {
-        let path = crate::json_path::path_at(text, e.line(), e.column(), "input");
+        let path = crate::input::json_path::path_at(text, e.line(), e.column(), "input");
         InputError::new(path, format!("not valid JSON: {e}"))
     })?;
     let ty = value.get("type").and_then(Value::as_str).unwrap_or("");
@@ -85,7 +89,7 @@ pub(crate) fn run(text: &str, args: &ConvertArgs) -> Result<Converted, InputErro
             surface_to_patches(&s)
         }
         ("nurbs", "beziers") => {
-            let b = crate::input_beziers::parse(text)?;
+            let b = crate::input::beziers::parse(text)?;
             let pieces = BezierPieces::from_segments(&b.segments, &b.breaks)
                 .map_err(|e| InputError::new("input", e.to_string()))?;
             beziers_to_spline(&pieces, args.tol)
@@ -125,11 +129,10 @@ pub(crate) fn run(text: &str, args: &ConvertArgs) -> Result<Converted, InputErro
 /// line or a curve, trimmed → untrimmed): the single entry point the patch conversions
 /// (issue 11) replace.
 pub(crate) fn patch_conversion(value: &Value, args: &ConvertArgs) -> Result<Converted, InputError> {
-    let json =
-        crate::convert_patch_cmd::run(value, args).map_err(|e| match e.split_once(": ") {
-            Some((path, message)) => InputError::new(path, message),
-            None => InputError::new("input", e),
-        })?;
+    let json = patch::run(value, args).map_err(|e| match e.split_once(": ") {
+        Some((path, message)) => InputError::new(path, message),
+        None => InputError::new("input", e),
+    })?;
     // The patch conversions draw their own picture (the domain tiling and the nets).
     Ok(Converted {
         json,
@@ -409,4 +412,28 @@ fn patches_to_surface(obj: &Value, tol: Option<f64>) -> Result<Converted, InputE
         json,
         picture: Vec::new(),
     })
+}
+
+/// `cagd convert`: one object in, its other form out (and a picture with `--svg`).
+pub(crate) fn command(args: &ConvertArgs) -> ExitCode {
+    let result = crate::input::read_input(args.input.as_deref())
+        .and_then(|text| run(&text, args).map_err(|e| e.to_string()));
+    let out = match result {
+        Ok(v) => v,
+        Err(e) => {
+            eprintln!("cagd: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    // An empty picture: the conversion wrote its own (the patch conversions).
+    if let Some(svg_path) = args.svg.as_ref().filter(|_| !out.picture.is_empty()) {
+        if let Err(e) = crate::output::json::write_output(
+            Some(svg_path),
+            &crate::output::svg::render(&[out.picture]),
+        ) {
+            eprintln!("cagd: {e}");
+            return ExitCode::from(1);
+        }
+    }
+    crate::output::json::write_json(args.output.as_deref(), &out.json)
 }

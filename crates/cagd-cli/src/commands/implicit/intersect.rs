@@ -1,15 +1,15 @@
 //! Running `cagd implicitize` and `cagd intersect` (I/O and exit codes; the JSON is built in
-//! [`crate::implicit_cmd`]).
+//! [`crate::commands::implicit`]).
 
 use std::process::ExitCode;
 
-use crate::implicit_cmd::{
+use crate::commands::implicit::{
     ImplicitizeArgs, IntersectArgs, implicitize_json, intersect_json, read_bezier,
 };
 
 /// `cagd implicitize`.
 pub(crate) fn implicitize(args: &ImplicitizeArgs) -> ExitCode {
-    let text = match crate::read_input(args.input.as_deref()) {
+    let text = match crate::input::read_input(args.input.as_deref()) {
         Ok(t) => t,
         Err(e) => {
             eprintln!("cagd: {e}");
@@ -31,20 +31,20 @@ pub(crate) fn implicitize(args: &ImplicitizeArgs) -> ExitCode {
         }
     };
     if let Some(svg) = &args.svg {
-        let pic = crate::implicit_svg::render(&curve, &imp, &[], &[]);
-        if let Err(e) = crate::write_output(Some(svg), &pic) {
+        let pic = crate::output::implicit::render(&curve, &imp, &[], &[]);
+        if let Err(e) = crate::output::json::write_output(Some(svg), &pic) {
             eprintln!("cagd: {e}");
             return ExitCode::from(1);
         }
     }
-    crate::write_json(args.output.as_deref(), &json)
+    crate::output::json::write_json(args.output.as_deref(), &json)
 }
 
 /// `cagd intersect A.json B.json`.
 pub(crate) fn intersect(args: &IntersectArgs) -> ExitCode {
     let mut curves = Vec::new();
     for (path, name) in [(&args.a, "a"), (&args.b, "b")] {
-        let curve = crate::read_input(Some(path))
+        let curve = crate::input::read_input(Some(path))
             .and_then(|t| read_bezier(&t, name).map_err(|e| format!("{}: {e}", path.display())));
         match curve {
             Ok(c) => curves.push(c),
@@ -66,8 +66,8 @@ pub(crate) fn intersect(args: &IntersectArgs) -> ExitCode {
         match cagd_implicit::ImplicitCurve::new(a) {
             Ok(imp) => {
                 let pts: Vec<[f64; 2]> = hits.iter().map(|h| h.point).collect();
-                let pic = crate::implicit_svg::render(a, &imp, &[b], &pts);
-                if let Err(e) = crate::write_output(Some(svg), &pic) {
+                let pic = crate::output::implicit::render(a, &imp, &[b], &pts);
+                if let Err(e) = crate::output::json::write_output(Some(svg), &pic) {
                     eprintln!("cagd: {e}");
                     return ExitCode::from(1);
                 }
@@ -78,5 +78,5 @@ pub(crate) fn intersect(args: &IntersectArgs) -> ExitCode {
             }
         }
     }
-    crate::write_json(args.output.as_deref(), &json)
+    crate::output::json::write_json(args.output.as_deref(), &json)
 }

@@ -1,6 +1,8 @@
 //! `cagd implicitize` and `cagd intersect`: implicitization of a planar rational Bézier
 //! curve (SPEC-convert §15.8) and curve–curve intersection through it (cagd-implicit).
 
+pub(crate) mod intersect;
+
 use std::path::PathBuf;
 
 use cagd_core::{BezierCurve, Error};
@@ -9,8 +11,8 @@ use cagd_implicit::{
 };
 use serde_json::{Value, json};
 
+use crate::input::shape::{Shape, locate};
 use crate::input::{InputError, parse_input};
-use crate::shape::{Shape, locate};
 
 /// Options of `cagd implicitize`.
 #[derive(Debug, Clone, PartialEq)]

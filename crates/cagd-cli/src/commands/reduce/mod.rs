@@ -1,16 +1,26 @@
 //! `cagd reduce`: read shapes, reduce each, write the results with their reports.
 
+pub(crate) mod interval;
+pub(crate) mod methods;
+pub(crate) mod patch;
+mod polynomial;
+mod spline;
+mod surface;
+pub(crate) mod wsgb;
+
 use cagd_core::BezierCurve;
 use cagd_reduce::{
     Method, PiecewiseReport, ReduceOptions, Reduction, Report, ToleranceOptions, max_deviation,
     reduce_g1_optimal, reduce_to_tolerance,
 };
+use std::process::ExitCode;
+
 use serde_json::{Value, json};
 
-use crate::args::ReduceArgs;
-use crate::methods::{Plan, plan};
-use crate::patch_cmd::{tensor_method, tri_method};
-use crate::shape::Shape;
+use crate::commands::args::ReduceArgs;
+use crate::commands::reduce::methods::{Plan, plan};
+use crate::commands::reduce::patch::{tensor_method, tri_method};
+use crate::input::shape::Shape;
 
 /// The default method when `--method` is not given: the L2-optimal reduction with the end
 /// points interpolated, the choice that keeps neighbouring curves connected.
@@ -119,7 +129,7 @@ pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<O
     let how = match plan(name, args.r, args.p) {
         Ok(how) => how,
         // Names only WSGB curves know (seed 003): fine when every input is one.
-        Err(_) if crate::wsgb_cmd::applies_to_all(name, shapes) => Plan::Linear(Method::Eck),
+        Err(_) if wsgb::applies_to_all(name, shapes) => Plan::Linear(Method::Eck),
         Err(message) => {
             return Err(Failure {
                 path: "--method".into(),
@@ -191,14 +201,13 @@ pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<O
                         });
                     }
                 };
-                let (json, result) =
-                    crate::spline_cmd::reduce(c, args, method).map_err(|e| match e {
-                        crate::spline_cmd::SplineError::Usage(message) => Failure {
-                            path: "--method".into(),
-                            message,
-                        },
-                        crate::spline_cmd::SplineError::Reduce(e) => fail(e),
-                    })?;
+                let (json, result) = spline::reduce(c, args, method).map_err(|e| match e {
+                    spline::SplineError::Usage(message) => Failure {
+                        path: "--method".into(),
+                        message,
+                    },
+                    spline::SplineError::Reduce(e) => fail(e),
+                })?;
                 out.push(Output {
                     json,
                     pair: Some((shape.clone(), result)),
@@ -210,8 +219,7 @@ pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<O
                     path: "--method".into(),
                     message,
                 })?;
-                let (json, result) =
-                    crate::patch_cmd::tensor(p, target, method, args.tol).map_err(fail)?;
+                let (json, result) = patch::tensor(p, target, method, args.tol).map_err(fail)?;
                 out.push(Output {
                     json,
                     pair: result.map(|r| (shape.clone(), r)),
@@ -236,24 +244,23 @@ pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<O
                     containment_degree: args.containment_degree,
                     ..cagd_reduce::IntervalOptions::new(args.to.0)
                 };
-                let (json, result) = crate::interval_cmd::reduce(t, &opts).map_err(fail)?;
+                let (json, result) = interval::reduce(t, &opts).map_err(fail)?;
                 out.push(Output {
                     json,
                     pair: Some((shape.clone(), Shape::IntervalTriangle(result))),
                 });
             }
             Shape::Wsgb(c) => {
-                let (json, pair) =
-                    crate::wsgb_cmd::reduce(c, args, name, reduce_curve, report_json).map_err(
-                        |(at, message)| Failure {
-                            path: at.unwrap_or_else(|| path.clone()),
-                            message,
-                        },
-                    )?;
+                let (json, pair) = wsgb::reduce(c, args, name, reduce_curve, report_json).map_err(
+                    |(at, message)| Failure {
+                        path: at.unwrap_or_else(|| path.clone()),
+                        message,
+                    },
+                )?;
                 out.push(Output { json, pair });
             }
             Shape::BSplineSurface(s) => {
-                let (json, result) = crate::surface_cmd::reduce(s, args, path)?;
+                let (json, result) = surface::reduce(s, args, path)?;
                 out.push(Output {
                     json,
                     pair: Some((shape.clone(), result)),
@@ -271,7 +278,7 @@ pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<O
                     message,
                 })?;
                 let (json, result) =
-                    crate::patch_cmd::triangle(t, args.to.0, method, args.tol).map_err(fail)?;
+                    patch::triangle(t, args.to.0, method, args.tol).map_err(fail)?;
                 out.push(Output {
                     json,
                     pair: result.map(|r| (shape.clone(), r)),
@@ -280,4 +287,76 @@ pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<O
         }
     }
     Ok(out)
+}
+
+/// `cagd reduce`: shapes in (one object or an array), each reduced, results out (and a
+/// picture with `--svg`).
+pub(crate) fn command(args: &ReduceArgs) -> ExitCode {
+    let text = match crate::input::read_input(args.input.as_deref()) {
+        Ok(t) => t,
+        Err(e) => {
+            eprintln!("cagd: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let single = text.trim_start().starts_with('{');
+    let raws = match crate::input::parse_input(&text) {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("cagd: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let mut shapes = Vec::with_capacity(raws.len());
+    for (i, raw) in raws.into_iter().enumerate() {
+        let path = if single {
+            "input".to_string()
+        } else {
+            format!("input[{i}]")
+        };
+        match Shape::build(raw, &path) {
+            Ok(s) => shapes.push((path, s)),
+            Err(e) => {
+                eprintln!("cagd: {e}");
+                return ExitCode::from(2);
+            }
+        }
+    }
+    let run = if args.polynomial {
+        polynomial::run
+    } else {
+        run
+    };
+    let results = match run(&shapes, args) {
+        Ok(r) => r,
+        Err(f) => {
+            eprintln!("cagd: {}: {}", f.path, f.message);
+            return ExitCode::from(2);
+        }
+    };
+    if let Some(svg_path) = &args.svg {
+        let rows: Vec<_> = results
+            .iter()
+            .zip(&shapes)
+            .filter_map(|(o, (path, _))| {
+                o.pair
+                    .as_ref()
+                    .map(|(a, b)| crate::output::picture::panels(path, a, b))
+            })
+            .filter(|row| !row.is_empty())
+            .collect();
+        if let Err(e) =
+            crate::output::json::write_output(Some(svg_path), &crate::output::svg::render(&rows))
+        {
+            eprintln!("cagd: {e}");
+            return ExitCode::from(1);
+        }
+    }
+    let values: Vec<Value> = results.into_iter().map(|o| o.json).collect();
+    let json = if single && values.len() == 1 {
+        values.into_iter().next().unwrap_or(Value::Null)
+    } else {
+        Value::Array(values)
+    };
+    crate::output::json::write_json(args.output.as_deref(), &json)
 }

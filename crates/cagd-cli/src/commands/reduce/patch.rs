@@ -13,8 +13,8 @@ use cagd_reduce::{
 };
 use serde_json::{Value, json};
 
-use crate::methods::Plan;
-use crate::shape::Shape;
+use crate::commands::reduce::methods::Plan;
+use crate::input::shape::Shape;
 
 /// The report of a patch reduction in the JSON form of the command.
 pub(crate) fn patch_report_json(r: &PatchReport) -> Value {

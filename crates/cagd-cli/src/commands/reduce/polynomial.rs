@@ -7,9 +7,9 @@
 use cagd_reduce::{rational_surface_to_polynomial, rational_to_polynomial};
 use serde_json::{Value, json};
 
-use crate::args::ReduceArgs;
-use crate::reduce_cmd::{Failure, Output};
-use crate::shape::Shape;
+use crate::commands::args::ReduceArgs;
+use crate::commands::reduce::{Failure, Output};
+use crate::input::shape::Shape;
 
 /// `(t, k)` pairs as JSON `[[t, k], ...]`.
 fn pairs(list: &[(f64, usize)]) -> Value {

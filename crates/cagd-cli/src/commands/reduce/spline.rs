@@ -7,8 +7,8 @@ use cagd_reduce::{
 };
 use serde_json::{Value, json};
 
-use crate::args::ReduceArgs;
-use crate::shape::Shape;
+use crate::commands::args::ReduceArgs;
+use crate::input::shape::Shape;
 
 /// Why a B-spline reduction failed: a usage problem (method / options) or the library's
 /// error.

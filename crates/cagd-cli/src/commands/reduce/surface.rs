@@ -17,10 +17,10 @@ use cagd_reduce::{
 };
 use serde_json::{Value, json};
 
-use crate::args::ReduceArgs;
-use crate::reduce_cmd::{DEFAULT_METHOD, Failure};
-use crate::shape::Shape;
-use crate::surface_shape::spans;
+use crate::commands::args::ReduceArgs;
+use crate::commands::reduce::{DEFAULT_METHOD, Failure};
+use crate::input::shape::Shape;
+use crate::input::shape::surface::spans;
 
 /// The options of a surface reduction from the command line, or the usage error.
 fn options(args: &ReduceArgs) -> Result<SurfaceOptions, Failure> {

@@ -19,9 +19,9 @@ use cagd_reduce::{
 };
 use serde_json::{Value, json};
 
-use crate::args::ReduceArgs;
-use crate::methods::{Plan, plan};
-use crate::shape::{Shape, rows};
+use crate::commands::args::ReduceArgs;
+use crate::commands::reduce::methods::{Plan, plan};
+use crate::input::shape::{Shape, rows};
 
 /// `reduce_cmd`'s Bézier reduction by a plan (passed in, so that this module does not
 /// import `reduce_cmd`, which calls it).

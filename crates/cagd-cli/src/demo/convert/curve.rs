@@ -8,8 +8,8 @@ use std::path::Path;
 use cagd_convert::{pieces_to_nurbs, to_bezier_pieces};
 use cagd_core::BSplineCurve;
 
-use crate::demo::time_us;
-use crate::svg::{Panel, project, render};
+use crate::demo::timing::time_us;
+use crate::output::svg::{Panel, project, render};
 
 fn demo_curve() -> Result<BSplineCurve, String> {
     let pts = vec![

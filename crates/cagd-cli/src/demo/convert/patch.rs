@@ -7,21 +7,9 @@ use std::path::Path;
 
 use serde_json::{Value, json};
 
-use crate::args::ConvertArgs;
-use crate::convert_patch_cmd::run as convert;
-
-/// Median time of `reps` runs of `f`, in microseconds.
-fn time_us(reps: usize, mut f: impl FnMut()) -> f64 {
-    let mut times: Vec<f64> = (0..reps)
-        .map(|_| {
-            let t = std::time::Instant::now();
-            f();
-            t.elapsed().as_secs_f64() * 1e6
-        })
-        .collect();
-    times.sort_by(f64::total_cmp);
-    times[times.len() / 2]
-}
+use crate::commands::args::ConvertArgs;
+use crate::commands::convert::patch::run as convert;
+use crate::demo::timing::time_us;
 
 /// A smooth height field: `z = sin(2x) cos(3y) / 2 + x y`.
 fn height(x: f64, y: f64) -> f64 {

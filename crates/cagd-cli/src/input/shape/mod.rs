@@ -1,5 +1,8 @@
 //! Validated shapes (cagd-core objects) built from the raw JSON input, and their JSON output.
 
+pub(crate) mod interval;
+pub(crate) mod surface;
+
 use cagd_core::{BSplineCurve, BSplineSurface, BezierCurve, Error, TensorPatch, TriPatch};
 use cagd_reduce::IntervalTriPatch;
 use serde_json::{Value, json};
@@ -77,7 +80,7 @@ impl Shape {
                 Shape::BSpline(c.map_err(|e| locate(path, &e))?)
             }
             RawShape::IntervalTriangle { degree, lo, hi } => {
-                Shape::IntervalTriangle(crate::interval_cmd::build(degree, lo, hi, path)?)
+                Shape::IntervalTriangle(interval::build(degree, lo, hi, path)?)
             }
             RawShape::BSplineSurface {
                 degree,
@@ -86,7 +89,7 @@ impl Shape {
                 points,
                 counts,
                 weights,
-            } => Shape::BSplineSurface(crate::surface_shape::build(
+            } => Shape::BSplineSurface(surface::build(
                 degree,
                 (knots_u, knots_v),
                 points,
@@ -127,8 +130,8 @@ impl Shape {
             Shape::Triangle(t) => {
                 json!({"type": "triangle", "degree": t.degree(), "points": rows(t.points(), t.dim())})
             }
-            Shape::BSplineSurface(s) => crate::surface_shape::to_json(s),
-            Shape::IntervalTriangle(t) => crate::interval_cmd::to_json(t),
+            Shape::BSplineSurface(s) => surface::to_json(s),
+            Shape::IntervalTriangle(t) => interval::to_json(t),
             Shape::Wsgb(c) => {
                 json!({"type": "wsgb", "L": c.order(), "points": rows(c.points(), c.dim())})
             }

@@ -5,8 +5,8 @@
 use cagd_core::{BSplineSurface, Error, check_knots};
 use serde_json::{Value, json};
 
+use crate::input::shape::rows;
 use crate::input::{InputError, PointList};
-use crate::shape::rows;
 
 /// Prefixes the field of a knot error of one direction (`knots_u` / `knots_v`).
 fn locate_knots(path: &str, name: &str, degree_at: &str, e: &Error) -> InputError {
@@ -88,8 +88,8 @@ pub(crate) fn spans(knots: &[f64], p: usize) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::input::shape::Shape;
     use crate::input::{RawShape, parse_input};
-    use crate::shape::Shape;
 
     fn built(text: &str) -> Result<Shape, InputError> {
         let raw: RawShape = parse_input(text).unwrap().remove(0);

@@ -19,7 +19,7 @@
 //! - tensor `--split-curve A0,A1,…`: both sides of `u = f(v)`, `f` with Bernstein
 //!   coefficients `A0..Ak` (§15.7);
 //! - tensor `--trim FILE`: the untrimmed pieces of the kept region (§15.7.3), FILE as
-//!   described in [`crate::convert_patch_trim`].
+//!   described in [`crate::commands::convert::patch::trim`].
 //!
 //! Output: each piece is the input's JSON form plus `"domain"` — `{"bilinear":[X00, X10,
 //! X01, X11]}` (piece `(s,t)` ↦ `(1-s)(1-t)X00 + s(1-t)X10 + (1-s)t X01 + st X11`),
@@ -30,14 +30,17 @@
 //! between the piece and the input at the mapped points of a 21 x 21 grid of the piece's
 //! domain. `--to rectangle` and `--to triangle` print one object, the others an array.
 
+mod svg;
+mod trim;
+
 use cagd_convert::{
     PatchPiece, PatchSurface, PieceDomain, TensorSurface, TriSplitPoints, TriSurface,
 };
 use serde_json::{Value, json};
 
-use crate::args::ConvertArgs;
+use crate::commands::args::ConvertArgs;
+use crate::input::shape::rows;
 use crate::input::{RawShape, parse_input};
-use crate::shape::rows;
 
 /// Grid size of the report's measurement (`(GRID + 1)^2` samples per piece).
 const GRID: usize = 20;
@@ -49,7 +52,7 @@ fn read_patch(shape_json: &Value) -> Result<PatchSurface, String> {
         None | Some(Value::Null) => None,
         Some(w) => Some(crate::input::numbers(w, "input.weights").map_err(|e| e.to_string())?),
     };
-    let locate = |e: cagd_core::Error| crate::shape::locate("input", &e).to_string();
+    let locate = |e: cagd_core::Error| crate::input::shape::locate("input", &e).to_string();
     match raw.into_iter().next() {
         Some(RawShape::Triangle { degree, points }) => Ok(PatchSurface::Tri(
             TriSurface::new(points.coords, degree, points.dim, weights).map_err(locate)?,
@@ -199,7 +202,7 @@ pub(crate) fn run(shape_json: &Value, args: &ConvertArgs) -> Result<Value, Strin
             let mut v = surface_json(&piece.surface);
             v["domain"] = json!({"degenerate_rect": "u = s, v = (1 - s) t"});
             v["report"] = json!({"max_difference": d, "samples": (GRID + 1) * (GRID + 1)});
-            crate::convert_patch_svg::write(args.svg.as_deref(), &input, &[piece])?;
+            svg::write(args.svg.as_deref(), &input, &[piece])?;
             return Ok(v);
         }
         (PatchSurface::Tensor(p), Op::Line(f1, f0)) => (
@@ -210,7 +213,7 @@ pub(crate) fn run(shape_json: &Value, args: &ConvertArgs) -> Result<Value, Strin
             (cagd_convert::split_along_curve(p, &a).map_err(lib)?, false)
         }
         (PatchSurface::Tensor(p), Op::Trim(file)) => {
-            let chain = crate::convert_patch_trim::read(&file)?;
+            let chain = trim::read(&file)?;
             (
                 cagd_convert::trim_to_patches(p, &chain).map_err(lib)?,
                 false,
@@ -224,7 +227,7 @@ pub(crate) fn run(shape_json: &Value, args: &ConvertArgs) -> Result<Value, Strin
         (PatchSurface::Tri(_), Op::Curve(_)) => return Err(need_rect("--split-curve")),
         (PatchSurface::Tri(_), Op::Trim(_)) => return Err(need_rect("--trim")),
     };
-    crate::convert_patch_svg::write(args.svg.as_deref(), &input, &pieces)?;
+    svg::write(args.svg.as_deref(), &input, &pieces)?;
     let mut out: Vec<Value> = pieces.iter().map(|p| piece_json(&input, p)).collect();
     Ok(if single {
         out.remove(0)

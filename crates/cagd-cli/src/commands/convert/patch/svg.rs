@@ -6,7 +6,7 @@ use std::path::Path;
 
 use cagd_convert::{PatchPiece, PatchSurface};
 
-use crate::svg::{Panel, project, render};
+use crate::output::svg::{Panel, project, render};
 
 const COLORS: [&str; 6] = [
     "#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf",
