@@ -263,12 +263,12 @@ fn bad_input_is_named() {
         (
             vec!["convert", "--to", "bezier"],
             r#"{"type":"tensor","degree":[1,1],"points":[[0],[1],[2],[3]]}"#,
-            "not yet supported",
+            "is not a patch conversion",
         ),
         (
             vec!["convert", "--to", "bezier", "--split-line", "1,0"],
             r#"{"type":"bspline","degree":1,"knots":[0,0,1,1],"points":[[0],[1]]}"#,
-            "not yet supported",
+            "cagd convert on patches takes a \"triangle\" or a \"tensor\"",
         ),
         (
             vec!["convert", "--to", "bezier"],
