@@ -6,12 +6,8 @@ use cagd_core::Error;
 use cagd_reduce::IntervalTriPatch;
 use serde_json::{Value, json};
 
+use crate::input::shape::rows;
 use crate::input::{InputError, PointList};
-
-/// A flat row-major buffer as a JSON list of points.
-fn rows(flat: &[f64], dim: usize) -> Value {
-    Value::Array(flat.chunks(dim).map(|p| json!(p)).collect())
-}
 
 /// Validates the nets with cagd-reduce; errors name the offending field.
 pub(crate) fn build(

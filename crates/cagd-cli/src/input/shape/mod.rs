@@ -1,7 +1,10 @@
 //! Validated shapes (cagd-core objects) built from the raw JSON input, and their JSON output.
 
 pub(crate) mod interval;
+mod points;
 pub(crate) mod surface;
+
+pub(crate) use points::rows;
 
 use cagd_core::{BSplineCurve, BSplineSurface, BezierCurve, Error, TensorPatch, TriPatch};
 use cagd_reduce::IntervalTriPatch;
@@ -137,11 +140,6 @@ impl Shape {
             }
         }
     }
-}
-
-/// A flat row-major buffer as a JSON list of points.
-pub(crate) fn rows(flat: &[f64], dim: usize) -> Value {
-    Value::Array(flat.chunks(dim).map(|p| json!(p)).collect())
 }
 
 #[cfg(test)]
