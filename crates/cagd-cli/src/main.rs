@@ -10,6 +10,10 @@
 //!
 //! Exit codes: 0 success; 2 bad input, bad usage or a reduction that cannot be done as asked
 //! (one line on stderr naming the field or option and index); 1 an I/O failure.
+//!
+//! Map: [`commands`] (the command line and one module per subcommand; `reduce` has one
+//! part per shape), [`input`] (reading the JSON shapes), [`output`] (JSON, SVG and the
+//! pictures), [`check`] (the spec-vector runner), [`demo`] (one part per demo family).
 
 mod check;
 mod commands;
