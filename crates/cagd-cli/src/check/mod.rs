@@ -10,11 +10,11 @@
 //! An algorithm no table knows is a failure, never a skip.
 
 mod compare;
-mod convert_nurbs;
-mod convert_patch;
 mod fields;
 mod implicit;
 mod interval;
+mod nurbs;
+mod patch;
 mod reduce;
 mod wsgb;
 
@@ -53,8 +53,8 @@ pub(crate) type Runner = fn(&Vector<'_>) -> Result<Outcome, String>;
 /// file the family's vectors belong to.
 const TABLES: &[(&[(&str, Runner)], Rule)] = &[
     (reduce::TABLE, Rule::PerArray),
-    (convert_nurbs::TABLE, Rule::Elementwise),
-    (convert_patch::TABLE, Rule::Elementwise),
+    (nurbs::TABLE, Rule::Elementwise),
+    (patch::TABLE, Rule::Elementwise),
     (implicit::TABLE, Rule::Elementwise),
     (interval::TABLE, Rule::Elementwise),
     (wsgb::TABLE, Rule::PerArray),
