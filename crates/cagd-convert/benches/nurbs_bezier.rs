@@ -11,7 +11,7 @@
 //! `GeomConvert_BSplineCurveToBezierCurve` 325 / 560 ns per span (degree 3 / 7),
 //! `Convert_CompBezierCurvesToBSplineCurve` 330 / 682.
 
-mod common;
+use cagd_testkit::bench as common;
 
 use std::hint::black_box;
 
@@ -59,14 +59,14 @@ fn bench(c: &mut Criterion) {
         let pieces = to_bezier_pieces(&curve).expect("pieces");
         let copy = common::memcpy_ns(&curve_bytes(&curve), &pieces_bytes(&pieces));
         let mut out = BezierPieces::default();
-        let fwd = common::median_ns(|| {
+        let fwd = common::median_ns_of(31, || {
             to_bezier_pieces_into(black_box(&curve), &mut out).expect("pieces");
             black_box(&out);
         });
-        let back = common::median_ns(|| {
+        let back = common::median_ns_of(31, || {
             black_box(pieces_to_nurbs(black_box(&pieces), None).expect("merge"));
         });
-        let core = common::median_ns(|| {
+        let core = common::median_ns_of(31, || {
             black_box(curve.to_beziers().expect("pieces"));
         });
         let r = pieces_to_nurbs(&pieces, None).expect("merge");

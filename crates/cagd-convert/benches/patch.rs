@@ -6,7 +6,8 @@
 //! its ratio to a plain copy of the output points (the bytes the conversion writes).
 
 use std::hint::black_box;
-use std::time::Instant;
+
+use cagd_testkit::bench::{median_ns, random_input};
 
 use cagd_convert::{
     PatchPiece, PatchSurface, TensorSurface, TriSplitPoints, TriSurface,
@@ -17,33 +18,6 @@ use cagd_core::tri_count;
 use criterion::{Criterion, criterion_group, criterion_main};
 
 const DIM: usize = 3;
-
-/// `len` reproducible numbers in `[-1, 1)` (xorshift64).
-fn random_input(len: usize, seed: u64) -> Vec<f64> {
-    let mut s: u64 = 0x9E37_79B9_7F4A_7C15 ^ seed;
-    (0..len)
-        .map(|_| {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            (s >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        })
-        .collect()
-}
-
-/// Median wall time of 15 runs of `f` after a warm-up, in nanoseconds.
-fn median_ns(mut f: impl FnMut()) -> f64 {
-    f();
-    let mut t: Vec<f64> = (0..15)
-        .map(|_| {
-            let s = Instant::now();
-            f();
-            s.elapsed().as_secs_f64() * 1e9
-        })
-        .collect();
-    t.sort_by(f64::total_cmp);
-    t[t.len() / 2]
-}
 
 /// Median time of copying `len` doubles into a fresh buffer.
 fn copy_ns(len: usize) -> f64 {

@@ -9,8 +9,7 @@ use std::hint::black_box;
 use cagd_reduce::{Method, operator, reduce_batch};
 use criterion::{Criterion, criterion_group, criterion_main};
 
-mod common;
-use common::{median_ns, memcpy_ns, random_input};
+use cagd_testkit::bench::{median_ns, memcpy_ns, random_input};
 
 const N_CURVES: usize = 100_000;
 const DIM: usize = 3;

@@ -12,7 +12,7 @@
 //! the spans in and out, the spans before knot removal, the certified bound and the
 //! measured error.
 
-mod common;
+use cagd_testkit::bench as common;
 
 use std::hint::black_box;
 

@@ -14,8 +14,7 @@ use cagd_reduce::{
 };
 use criterion::{Criterion, criterion_group, criterion_main};
 
-mod common;
-use common::{median_ns, memcpy_ns, random_input};
+use cagd_testkit::bench::{median_ns, memcpy_ns, random_input};
 
 const N_PATCHES: usize = 1000;
 const DIM: usize = 3;

@@ -13,8 +13,7 @@ use cagd_core::{WsgbCurve, kernel::de_casteljau, wsgb_max_l};
 use cagd_reduce::{Method, WsgbMethod, reduce_wsgb_with};
 use criterion::{Criterion, criterion_group, criterion_main};
 
-mod common;
-use common::{median_ns, memcpy_ns, random_input};
+use cagd_testkit::bench::{median_ns, memcpy_ns, random_input};
 
 const DIM: usize = 3;
 const POINTS: usize = 1001;

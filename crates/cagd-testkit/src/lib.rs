@@ -14,6 +14,8 @@ use serde_json::Value;
 
 pub use serde_json;
 
+pub mod bench;
+
 /// Path of a file in `shared/spec`.
 pub fn spec_path(name: &str) -> PathBuf {
     let shared = std::env::var_os("CAGD_SHARED")

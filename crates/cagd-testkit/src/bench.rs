@@ -1,11 +1,12 @@
-//! Helpers shared by the benchmarks: reproducible input, a median timer and the time of a
-//! plain copy of the same bytes (the yardstick every benchmark reports a ratio to).
+//! Helpers shared by the benchmarks of every crate: reproducible input, a median timer and
+//! the time of a plain copy of the same bytes (the yardstick every benchmark reports a
+//! ratio to).
 
 use std::hint::black_box;
 use std::time::Instant;
 
 /// `len` pseudo-random numbers in `[-1, 1)` (xorshift64, reproducible per `seed`).
-pub(crate) fn random_input(len: usize, seed: u64) -> Vec<f64> {
+pub fn random_input(len: usize, seed: u64) -> Vec<f64> {
     let mut s: u64 = 0x9E37_79B9_7F4A_7C15 ^ seed;
     (0..len)
         .map(|_| {
@@ -18,9 +19,14 @@ pub(crate) fn random_input(len: usize, seed: u64) -> Vec<f64> {
 }
 
 /// Median wall time of 15 runs of `f` (after one warm-up run), in nanoseconds.
-pub(crate) fn median_ns(mut f: impl FnMut()) -> f64 {
+pub fn median_ns(f: impl FnMut()) -> f64 {
+    median_ns_of(15, f)
+}
+
+/// Median wall time of `runs` runs of `f` (after one warm-up run), in nanoseconds.
+pub fn median_ns_of(runs: usize, mut f: impl FnMut()) -> f64 {
     f();
-    let mut t: Vec<f64> = (0..15)
+    let mut t: Vec<f64> = (0..runs.max(1))
         .map(|_| {
             let s = Instant::now();
             f();
@@ -33,7 +39,7 @@ pub(crate) fn median_ns(mut f: impl FnMut()) -> f64 {
 
 /// Median wall time (ns) of copying `input` and `output` into fresh buffers of their sizes
 /// with `copy_from_slice` (a `memcpy` of the bytes a reduction reads and writes).
-pub(crate) fn memcpy_ns(input: &[f64], output: &[f64]) -> f64 {
+pub fn memcpy_ns(input: &[f64], output: &[f64]) -> f64 {
     let (mut copy_in, mut copy_out) = (vec![0.0; input.len()], vec![0.0; output.len()]);
     median_ns(|| {
         copy_in.copy_from_slice(black_box(input));
