@@ -4,10 +4,7 @@
 
 use cagd_core::{BezierCurve, Result};
 
-use super::span::{
-    NurbsSpan, bezier_homogeneous, combine, extrapolation_factor, homogeneous, local_gaps,
-    span_from_homogeneous,
-};
+use super::span::{NurbsSpan, combine, homogeneous, inverse_span, local_gaps};
 
 /// The forward map of SPEC-convert §15.3 (eq. 15.3.3–15.3.10, homogeneous): with the gaps
 /// (15.3.8) `a, b, c, d, e`, `S0 = (c q0 + (a+b) q1)/(a+b+c)`, `S1 = ((c+d) q1 + b q2)/(b+c+d)`,
@@ -119,23 +116,12 @@ pub fn cubic_span_to_bezier(
 pub fn bezier_to_cubic_span(bezier: &BezierCurve, knots: &[f64]) -> Result<NurbsSpan> {
     let g = local_gaps(knots, 6, 2)?;
     let gaps = [g[0], g[1], g[2], g[3], g[4]];
-    let bq = bezier_homogeneous(bezier, 3)?;
-    let dim = bezier.dim();
-    let mut out = vec![0.0; bq.len()];
-    inverse_map(gaps, &bq, dim + 1, &mut out);
-    let w: Vec<f64> = (0..4).map(|i| out[i * (dim + 1) + dim]).collect();
-    let bw: Vec<f64> = (0..4).map(|i| bq[i * (dim + 1) + dim]).collect();
-    let extrapolation = if w.iter().all(|x| *x > 0.0) {
-        extrapolation_factor(&bw, &w, |u, o| inverse_map(gaps, u, 1, o))
-    } else {
-        f64::INFINITY
-    };
-    span_from_homogeneous(
-        &out,
-        dim,
-        condition_case(gaps, &bw),
+    inverse_span(
+        bezier,
+        3,
+        |bq, pdim, out| inverse_map(gaps, bq, pdim, out),
+        |bw| condition_case(gaps, bw),
         "inverse NURBS weight w_{n-3+index} must be > 0",
-        extrapolation,
     )
 }
 

@@ -3,10 +3,7 @@
 
 use cagd_core::{BezierCurve, Result};
 
-use super::span::{
-    NurbsSpan, bezier_homogeneous, combine, extrapolation_factor, homogeneous, local_gaps,
-    span_from_homogeneous,
-};
+use super::span::{NurbsSpan, combine, homogeneous, inverse_span, local_gaps};
 
 /// The forward map of SPEC-convert §15.1 (eq. 15.1.4–15.1.5 in homogeneous form, = Böhm
 /// insertion): `Q0 = (c q0 + b q1)/(b+c)`, `Q1 = q1`, `Q2 = (d q1 + c q2)/(c+d)` with the
@@ -91,23 +88,12 @@ pub fn quadratic_span_to_bezier(
 pub fn bezier_to_quadratic_span(bezier: &BezierCurve, knots: &[f64]) -> Result<NurbsSpan> {
     let g = local_gaps(knots, 4, 1)?;
     let gaps = [g[0], g[1], g[2]];
-    let bq = bezier_homogeneous(bezier, 2)?;
-    let dim = bezier.dim();
-    let mut out = vec![0.0; bq.len()];
-    inverse_map(gaps, &bq, dim + 1, &mut out);
-    let w: Vec<f64> = (0..3).map(|i| out[i * (dim + 1) + dim]).collect();
-    let bw: Vec<f64> = (0..3).map(|i| bq[i * (dim + 1) + dim]).collect();
-    let extrapolation = if w.iter().all(|x| *x > 0.0) {
-        extrapolation_factor(&bw, &w, |u, o| inverse_map(gaps, u, 1, o))
-    } else {
-        f64::INFINITY
-    };
-    span_from_homogeneous(
-        &out,
-        dim,
-        "15.1.8",
+    inverse_span(
+        bezier,
+        2,
+        |bq, pdim, out| inverse_map(gaps, bq, pdim, out),
+        |_| "15.1.8",
         "inverse NURBS weight w_{n-2+index} must be > 0",
-        extrapolation,
     )
 }
 

@@ -163,3 +163,29 @@ pub(crate) fn extrapolation_factor(
     }
     worst
 }
+
+/// The inverse direction shared by §15.1 and §15.3 (and their surfaces' rows): apply the
+/// homogeneous inverse map `inverse` (which maps `n` homogeneous points of dimension `pdim`)
+/// to the Bézier segment's points, then divide. The condition named in the error is chosen
+/// by `condition` from the Bézier weights; `what` describes the failing inverse weight.
+pub(crate) fn inverse_span(
+    bezier: &BezierCurve,
+    degree: usize,
+    inverse: impl Fn(&[f64], usize, &mut [f64]),
+    condition: impl FnOnce(&[f64]) -> &'static str,
+    what: &'static str,
+) -> Result<NurbsSpan> {
+    let bq = bezier_homogeneous(bezier, degree)?;
+    let dim = bezier.dim();
+    let n = degree + 1;
+    let mut out = vec![0.0; bq.len()];
+    inverse(&bq, dim + 1, &mut out);
+    let w: Vec<f64> = (0..n).map(|i| out[i * (dim + 1) + dim]).collect();
+    let bw: Vec<f64> = (0..n).map(|i| bq[i * (dim + 1) + dim]).collect();
+    let extrapolation = if w.iter().all(|x| *x > 0.0) {
+        extrapolation_factor(&bw, &w, |u, o| inverse(u, 1, o))
+    } else {
+        f64::INFINITY
+    };
+    span_from_homogeneous(&out, dim, condition(&bw), what, extrapolation)
+}
