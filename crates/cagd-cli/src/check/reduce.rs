@@ -58,14 +58,9 @@ const PRINT_TOL: f64 = 2e-5;
 
 type Res = Result<Outcome, String>;
 
-/// A library error as the outcome "refused".
-fn refused(e: &cagd_core::Error) -> Outcome {
-    Outcome::Refused(e.to_string())
-}
-
-/// Runs `f`; a library error becomes [`Outcome::Refused`].
+/// A library result; its error becomes [`Outcome::Refused`].
 fn lib<T>(r: cagd_core::Result<T>) -> Result<Result<T, Outcome>, String> {
-    Ok(r.map_err(|e| refused(&e)))
+    Ok(r.map_err(|e| Outcome::Refused(e.to_string())))
 }
 
 macro_rules! try_lib {
