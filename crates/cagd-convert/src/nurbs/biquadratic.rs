@@ -303,6 +303,7 @@ pub fn biquadratic_to_bezier(
 
 /// A rational biquadratic Bézier patch with a 3x3 weight matrix → the NURBS span: the
 /// weights must be rank 1 ([`separable_factors`]), then [`bezier_to_biquadratic_separable`].
+/// (SPEC-convert §15.2, conditions 15.2.11–12, inverse 15.2.13–17.)
 ///
 /// # Errors
 /// [`Error::ConversionCondition`] for weights that are not rank 1 or an inverse weight

@@ -12,6 +12,8 @@ use super::span::homogeneous;
 /// homogeneous points `(w P, w)` are subdivided, so the piece weights are positive), with
 /// the distinct knot values of the domain as breaks. Clamped or unclamped knots, any
 /// multiplicity up to `degree + 1`.
+/// (SPEC-convert §15.3 recommendation: Bézier point `i` of a span is the blossom
+/// `b(t_n^(p-i), t_{n+1}^i)`; the closed forms of §15.1 / §15.3 are its p = 2, 3 cases.)
 ///
 /// Measured: the pieces evaluate to the curve within `1e-13` relative (proptest, degrees
 /// 1..=9, up to 100 spans, weights 0.05..20).

@@ -44,6 +44,9 @@ pub(crate) fn working_scale(points: &[f64], weights: Option<&[f64]>, dim: usize)
 }
 
 /// Merges Bézier pieces into one spline (the reverse of [`crate::to_bezier_pieces`]).
+/// (Seed 001 §4.1's exact merge — pieces joined at knots of multiplicity p — then Tiller's
+/// knot-removal conditions per joint at rounding level; the inverse of SPEC-convert
+/// §15.1–15.3's extraction.)
 ///
 /// At each joint the end point of one piece and the start of the next must agree within
 /// `tol` (Euclidean distance of the working points; else the joint keeps multiplicity

@@ -28,6 +28,8 @@ impl StandardForm {
 
 /// The standard form of a rational Bézier curve (end weights 1, same shape); a polynomial
 /// curve is returned unchanged (`rho = 1`).
+/// (Farin's `w_i -> w_i rho^i` with `t = rho s / ((1 - s) + rho s)`, see the module docs;
+/// used with SPEC-convert §15.1–15.3.)
 ///
 /// # Errors
 /// [`Error::DegreeOutOfRange`] is impossible for a valid curve; [`Error::BadDegreePair`]

@@ -130,6 +130,7 @@ pub struct SurfaceFromPatches {
 /// inner, as returned by it; each with its `u` and `v` interval) → one B-spline / NURBS
 /// surface with the highest continuity across each knot line that every row (column) of
 /// patches has, by the curve merge of [`crate::pieces_to_nurbs`] on bundles of rows.
+/// (Seed 001 §4.1 merge per direction; SPEC-convert §15.2 generalised.)
 ///
 /// # Errors
 /// [`Error::NotEnoughPoints`] (no patch); [`Error::LengthMismatch`] (differing degrees or

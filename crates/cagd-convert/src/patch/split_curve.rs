@@ -38,6 +38,7 @@ pub fn curve_split_d7(p: &TensorSurface, a: &[f64], b: f64) -> Result<PatchPiece
 /// `u = s f(t)`, and its complement `{u >= f(v)}` as `u = f(t) + s (1 - f(t))`, each an
 /// `m x (k m + n)` patch with a ruled domain. Together they tile the unit square (the
 /// curve is their common boundary).
+/// (SPEC-convert §15.7, Theorem 15.7.1 by the recommended corner-cutting algorithm.)
 ///
 /// # Errors
 /// As [`curve_split_d5`].

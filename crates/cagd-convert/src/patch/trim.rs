@@ -137,6 +137,8 @@ fn check_chain(chain: &TrimChain) -> Result<()> {
 /// The untrimmed patches covering exactly the kept region of `p` trimmed by `chain`, each
 /// with its domain (ruled pieces along the curves, bilinear strips beyond the chain's
 /// ends). See the module documentation for the supported layouts.
+/// (SPEC-convert §15.7.3 guidance, applied with §15.7's split along a curve; the tiling
+/// itself is ours.)
 ///
 /// # Errors
 /// [`Error::UnsupportedTrim`] for a layout outside the supported one,

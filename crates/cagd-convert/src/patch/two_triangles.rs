@@ -80,6 +80,7 @@ pub fn rect_to_two_triangles(p: &TensorSurface) -> Result<[TriSurface; 2]> {
 
 /// [`rect_to_two_triangles`] as pieces with their domains: the lower triangle
 /// `[A, B, C] = [(1,0), (0,1), (0,0)]`, the upper `[(0,1), (1,0), (1,1)]`.
+/// (SPEC-convert §15.6.3.)
 ///
 /// # Errors
 /// As [`rect_to_two_triangles`].

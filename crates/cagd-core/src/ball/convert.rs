@@ -140,6 +140,7 @@ pub fn bezier_to_wsgb_exact(
 impl WsgbCurve {
     /// The same polynomial curve in Bézier form, computed exactly from the `f64` points and
     /// rounded once (each Bézier point is within half an ulp of the exact one).
+    /// (SPEC-reduce §9.1 basis.)
     ///
     /// # Errors
     /// None for a valid curve (the `Result` carries the basis cache's errors).
@@ -151,6 +152,7 @@ impl WsgbCurve {
 
     /// The WSGB(n, `l`) form of a polynomial Bézier curve, computed exactly and rounded once.
     /// Every admissible `l` represents every polynomial of degree `<= n`.
+    /// (SPEC-reduce §9.1 basis, inverted exactly.)
     ///
     /// # Errors
     /// [`Error::BadParameter`] for `l` out of range; [`Error::ConditionNotMet`] for a

@@ -47,6 +47,7 @@ pub fn wsgb_perturbed_points<S: WsgbScalar>(points: &[S], dim: usize) -> Result<
 
 /// One perturbation step WSGB(n, L) -> WSGB(n-1, L'): [`wsgb_perturbed_points`] then the
 /// exact inverse elevation ([`cagd_core::wsgb_inverse_elevation`]). Exact for `BigRational`.
+/// (SPEC-reduce §9.4, with the §9.3 inverse elevation.)
 ///
 /// # Errors
 /// As [`wsgb_perturbed_points`], and [`Error::BadParameter`] for `l` out of range.

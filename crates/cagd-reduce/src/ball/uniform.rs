@@ -80,6 +80,7 @@ pub fn wsgb_uniform_points<S: WsgbScalar>(
 
 /// One best-uniform step WSGB(n, L) -> WSGB(n-1, L'), exact for `BigRational`:
 /// [`wsgb_uniform_points`] then the exact inverse elevation. Needs `n >= 1`.
+/// (SPEC-reduce §9.5, error formula (12).)
 ///
 /// # Errors
 /// [`cagd_core::Error::BadDegreePair`] for `n = 0`, [`cagd_core::Error::BadParameter`] for

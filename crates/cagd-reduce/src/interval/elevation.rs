@@ -158,6 +158,7 @@ pub fn triangle_elevation_matrix_exact(m: usize, n: usize) -> Result<ExactMatrix
 
 /// The elevation matrix `E_{m->n}` rounded once per entry to `f64`, row-major
 /// `tri_count(n) x tri_count(m)` (see [`triangle_elevation_matrix_exact`]).
+/// (SPEC-convert I.1, seed 004 Theorem 1.)
 ///
 /// # Errors
 /// As [`triangle_elevation_matrix_exact`].
