@@ -1,7 +1,7 @@
 //! The handle-free C entry points against the handle API, and the batch calls on 1 and 2
 //! threads (issue 17). Besides criterion's report, prints the median (15 runs) per call or
 //! per curve and its ratio to a plain copy of the same input and output bytes
-//! (`cagd_testkit::bench::memcpy_ns`), so that figures compare across machines.
+//! (measured interleaved with the variants), so that figures compare across machines.
 //!
 //! Run: `cargo bench -p cagd-capi --bench flat -- --warm-up-time 1 --measurement-time 3`.
 //!
@@ -19,7 +19,7 @@ use std::hint::black_box;
 use std::ptr::{null, null_mut};
 
 use cagd_capi::*;
-use cagd_testkit::bench::{median_ns, memcpy_ns, random_input};
+use cagd_testkit::bench::random_input;
 use criterion::{Criterion, criterion_group, criterion_main};
 
 const DIM: usize = 3;
@@ -27,6 +27,29 @@ const DIM: usize = 3;
 /// resolution).
 const REPS: usize = 2000;
 const N_CURVES: usize = 100_000;
+
+/// Median wall times (ns) of `fs`, measured in `rounds` interleaved rounds (one run of each
+/// per round, after one warm-up run each), so that a change of machine load during the
+/// measurement affects every variant alike.
+fn interleaved(rounds: usize, fs: &mut [&mut dyn FnMut()]) -> Vec<f64> {
+    for f in fs.iter_mut() {
+        f();
+    }
+    let mut t = vec![Vec::with_capacity(rounds); fs.len()];
+    for _ in 0..rounds {
+        for (f, ti) in fs.iter_mut().zip(&mut t) {
+            let s = std::time::Instant::now();
+            f();
+            ti.push(s.elapsed().as_secs_f64() * 1e9);
+        }
+    }
+    t.into_iter()
+        .map(|mut v| {
+            v.sort_by(f64::total_cmp);
+            v[v.len() / 2]
+        })
+        .collect()
+}
 
 fn options(target: usize) -> CagdReduceOptions {
     let mut o = CagdReduceOptions::default();
@@ -106,28 +129,38 @@ fn single(c: &mut Criterion) {
             b.iter(|| flat_call(black_box(&pts), &o, &mut out, false))
         });
         group.finish();
-        let per = |f: &mut dyn FnMut()| {
-            median_ns(|| {
-                for _ in 0..REPS {
-                    f();
-                }
-            }) / REPS as f64
-        };
-        let t_handle = per(&mut || {
-            black_box(handle_call(black_box(&pts), &o, &mut out));
-        });
-        let t_flat = per(&mut || {
-            black_box(flat_call(black_box(&pts), &o, &mut out, true));
-        });
-        let t_points = per(&mut || {
-            black_box(flat_call(black_box(&pts), &o, &mut out, false));
-        });
-        let t_copy = per(&mut || {
-            let mut a = [0.0; 64];
-            a[..pts.len()].copy_from_slice(black_box(&pts));
-            a[pts.len()..pts.len() + out.len()].copy_from_slice(black_box(&out));
-            black_box(&a);
-        });
+        let (mut o1, mut o2, mut o3) = (out.clone(), out.clone(), out.clone());
+        let mut scratch = [0.0; 64];
+        let t = interleaved(
+            31,
+            &mut [
+                &mut || {
+                    for _ in 0..REPS {
+                        black_box(handle_call(black_box(&pts), &o, &mut o1));
+                    }
+                },
+                &mut || {
+                    for _ in 0..REPS {
+                        black_box(flat_call(black_box(&pts), &o, &mut o2, true));
+                    }
+                },
+                &mut || {
+                    for _ in 0..REPS {
+                        black_box(flat_call(black_box(&pts), &o, &mut o3, false));
+                    }
+                },
+                &mut || {
+                    for _ in 0..REPS {
+                        let k = pts.len();
+                        scratch[..k].copy_from_slice(black_box(&pts));
+                        scratch[k..k + out.len()].copy_from_slice(black_box(&out));
+                        black_box(&scratch);
+                    }
+                },
+            ],
+        );
+        let [t_handle, t_flat, t_points, t_copy] =
+            [t[0], t[1], t[2], t[3]].map(|x| x / REPS as f64);
         println!(
             "single ({n:2}, {m:2}): handle {t_handle:8.1} ns/call | flat+report {t_flat:8.1} \
              ns/call ({:.2}x handle) | flat points only {t_points:7.1} ns/call ({:.3}x handle, \
@@ -172,32 +205,45 @@ fn batches(c: &mut Criterion) {
     for (name, n, m1, what) in cases {
         let input = random_input(N_CURVES * (n + 1) * DIM, 2);
         let mut out = vec![0.0; N_CURVES * m1 * DIM];
-        let t_copy = memcpy_ns(&input, &out) / N_CURVES as f64;
         let mut group = c.benchmark_group(format!("batch_{name}"));
         group.sample_size(10);
         for layout in [
             CagdBatchLayout::LAYOUT_CURVE_MAJOR,
             CagdBatchLayout::LAYOUT_POINT_MAJOR,
         ] {
-            let mut t1 = 0.0;
             for threads in [1usize, 2] {
                 let label = format!("{layout:?}_threads{threads}");
                 group.bench_function(&label, |b| {
                     b.iter(|| batch_call(black_box(&input), n, layout, what, threads, &mut out))
                 });
-                let t =
-                    median_ns(|| batch_call(black_box(&input), n, layout, what, threads, &mut out))
-                        / N_CURVES as f64;
-                if threads == 1 {
-                    t1 = t;
-                }
-                println!(
-                    "batch {name} {layout:?} threads {threads}: {t:6.2} ns/curve, {:.2}x copy \
-                     ({t_copy:.2} ns/curve), speed-up {:.2}",
-                    t / t_copy,
-                    t1 / t
-                );
             }
+            // 1 thread, 2 threads and the copy, interleaved.
+            let (mut out2, mut copy_in, mut copy_out, zeros) = (
+                out.clone(),
+                vec![0.0; input.len()],
+                vec![0.0; out.len()],
+                vec![0.0; out.len()],
+            );
+            let t = interleaved(
+                15,
+                &mut [
+                    &mut || batch_call(black_box(&input), n, layout, what, 1, &mut out),
+                    &mut || batch_call(black_box(&input), n, layout, what, 2, &mut out2),
+                    &mut || {
+                        copy_in.copy_from_slice(black_box(&input));
+                        copy_out.copy_from_slice(black_box(&zeros));
+                        black_box((&copy_in, &copy_out));
+                    },
+                ],
+            );
+            let [t1, t2, tc] = [t[0], t[1], t[2]].map(|x| x / N_CURVES as f64);
+            println!(
+                "batch {name} {layout:?}: 1 thread {t1:6.2} ns/curve ({:.2}x copy), 2 threads \
+                 {t2:6.2} ns/curve ({:.2}x copy), speed-up {:.2}; copy {tc:.2} ns/curve",
+                t1 / tc,
+                t2 / tc,
+                t1 / t2
+            );
         }
         group.finish();
     }

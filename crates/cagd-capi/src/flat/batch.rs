@@ -7,8 +7,8 @@ use cagd_core::check_degree;
 use cagd_reduce::{Operator, operator};
 
 use super::kernel::{
-    Overflow, PointMajorBlock, elevate_curve_major, elevate_point_major, reduce_curve_major,
-    reduce_point_major,
+    Overflow, PointMajorBlock, elevate_curve_major, elevate_point_major, elevation_terms,
+    reduce_curve_major, reduce_point_major,
 };
 use super::layout::CagdBatchLayout;
 use super::threads::{block_count, block_range, run_blocks};
@@ -30,8 +30,8 @@ const MIN_DOUBLES_PER_SCAN: usize = 1 << 14;
 enum BatchOp<'a> {
     /// Apply a reduction operator.
     Reduce(&'a Operator),
-    /// Elevate degree `n` curves by `r`.
-    Elevate { n: usize, r: usize },
+    /// Elevate with the band of [`elevation_terms`].
+    Elevate(&'a [Vec<(usize, f64)>]),
 }
 
 /// A validated batch: input, sizes, layout, threads.
@@ -91,7 +91,7 @@ fn run(b: &Batch<'_>, op: BatchOp<'_>, out: &mut [f64]) -> CResult<()> {
             }
             run_blocks(b.n_threads, parts, |(inp, o)| match op {
                 BatchOp::Reduce(a) => reduce_curve_major(a, inp, b.dim, o),
-                BatchOp::Elevate { n, r } => elevate_curve_major(inp, n, b.dim, r, o),
+                BatchOp::Elevate(terms) => elevate_curve_major(inp, terms, b.dim, o),
             })
         }
         CagdBatchLayout::LAYOUT_POINT_MAJOR => {
@@ -115,8 +115,8 @@ fn run(b: &Batch<'_>, op: BatchOp<'_>, out: &mut [f64]) -> CResult<()> {
             }
             run_blocks(b.n_threads, parts, |part| match op {
                 BatchOp::Reduce(a) => reduce_point_major(a, b.input, row_len, b.dim, part),
-                BatchOp::Elevate { n, r } => {
-                    elevate_point_major(b.input, row_len, b.dim, n, r, part)
+                BatchOp::Elevate(terms) => {
+                    elevate_point_major(b.input, row_len, b.dim, terms, part)
                 }
             })
         }
@@ -299,6 +299,7 @@ pub unsafe extern "C" fn cagd_bezier_elevate_batch(
         b.m1 = degree + r + 1;
         let per_out = checked_len(b.m1, dim, "(degree + r + 1) * dim")?;
         let needed = checked_len(n_curves, per_out, "n_curves * (degree + r + 1) * dim")?;
-        run(&b, BatchOp::Elevate { n: degree, r }, dst.take(needed)?)
+        let dst = dst.take(needed)?;
+        run(&b, BatchOp::Elevate(&elevation_terms(degree, r)), dst)
     })
 }

@@ -4,7 +4,7 @@
 use cagd_core::{BezierCurve, check_degree};
 
 use super::input::{curve_in, weights_buffer};
-use super::kernel::{Overflow, elevate_curve_major};
+use super::kernel::{Overflow, elevate_one};
 use crate::boundary::{OUT, boundary, checked_len, disjoint, nonnull, slice_out};
 use crate::status::CagdStatus;
 
@@ -100,8 +100,7 @@ pub unsafe extern "C" fn cagd_bezier_elevate(
                 // The kernel `BezierCurve::elevate` uses for a polynomial curve, straight
                 // into the caller's buffer (the input is finite, so only an overflow can
                 // fail, and then `dst` holds no result: the status says so).
-                elevate_curve_major(curve.points, n, dim, r, dst)
-                    .map_err(|_| Overflow::failure(0))?;
+                elevate_one(curve.points, dim, r, dst).map_err(|_| Overflow::failure(0))?;
             }
         }
         Ok(())

@@ -11,9 +11,10 @@
 
 use std::cell::RefCell;
 use std::ops::Range;
+use std::sync::Arc;
 
 use cagd_core::kernel::{elevate, elevation_coefficient};
-use cagd_reduce::{Operator, reduce_batch};
+use cagd_reduce::{Method, Operator, operator, reduce_batch};
 
 use crate::boundary::{CResult, Failure};
 use crate::status::CagdStatus;
@@ -41,6 +42,31 @@ impl Overflow {
             ),
         )
     }
+}
+
+/// The operator of `(method, n, m)`: cagd-reduce's process-wide cache ([`operator`]),
+/// behind a one-entry cache per thread, so that a loop of single-curve calls with one
+/// `(method, n, m)` — the usual hot loop — skips the shared cache's lock and hash. A hit
+/// needs the same method (parameters compared with `==`, so a NaN parameter never hits
+/// and reaches cagd-reduce's check) and degrees as the previous, successful lookup.
+///
+/// # Errors
+/// As [`operator`].
+pub(super) fn operator_for(method: Method, n: usize, m: usize) -> cagd_core::Result<Arc<Operator>> {
+    thread_local! {
+        static LAST: RefCell<Option<(Method, usize, usize, Arc<Operator>)>> =
+            const { RefCell::new(None) };
+    }
+    LAST.with_borrow_mut(|last| {
+        if let Some((lm, ln, lmm, op)) = last.as_ref() {
+            if *lm == method && *ln == n && *lmm == m {
+                return Ok(Arc::clone(op));
+            }
+        }
+        let op = operator(method, n, m)?;
+        *last = Some((method, n, m, Arc::clone(&op)));
+        Ok(op)
+    })
 }
 
 /// Applies `op` to one curve (`n + 1` points of `dim` doubles) and writes the `m + 1`
@@ -77,28 +103,102 @@ pub(super) fn reduce_curve_major(
         .map_err(|_| first_bad_curve(output, (op.degree_to() + 1) * dim))
 }
 
-/// Elevates the curve-major block `input` (curves of `n + 1` points) by `r` into `output`.
+/// Elevates one curve (`n + 1` points of `dim` doubles) by `r` into `output` with
+/// cagd-core's `kernel::elevate`, the kernel `BezierCurve::elevate` uses.
 ///
 /// # Errors
-/// [`Overflow`] as [`reduce_curve_major`].
-pub(super) fn elevate_curve_major(
+/// [`Overflow`] when an elevated coordinate is not finite (input near `f64::MAX`).
+pub(super) fn elevate_one(
     input: &[f64],
-    n: usize,
     dim: usize,
     r: usize,
     output: &mut [f64],
 ) -> Result<(), Overflow> {
-    let (per_in, per_out) = ((n + 1) * dim, (n + r + 1) * dim);
-    for (p, q) in input
-        .chunks_exact(per_in)
-        .zip(output.chunks_exact_mut(per_out))
-    {
-        elevate(p, dim, r, q);
+    elevate(input, dim, r, output);
+    if output.iter().all(|x| x.is_finite()) {
+        Ok(())
+    } else {
+        Err(Overflow { curve: 0 })
+    }
+}
+
+/// The band of the elevation matrix from degree `n` by `r`: for output point `i`, the
+/// pairs `(j, Q(i, j))`, `i - r <= j <= min(i, n)` in increasing `j` — the terms and the
+/// order of cagd-core's `kernel::elevate`, computed once per batch instead of once per
+/// curve (each coefficient costs three binomials).
+pub(super) fn elevation_terms(n: usize, r: usize) -> Vec<Vec<(usize, f64)>> {
+    (0..=n + r)
+        .map(|i| {
+            (i.saturating_sub(r)..=i.min(n))
+                .map(|j| (j, elevation_coefficient(n, r, i, j)))
+                .collect()
+        })
+        .collect()
+}
+
+/// Elevates the curve-major block `input` (curves of `n + 1` points) into `output` with
+/// the band `terms` of [`elevation_terms`]: every output coordinate is `0` plus the terms
+/// in order, as `kernel::elevate` sums them, so the bits are the same.
+///
+/// # Errors
+/// [`Overflow`] naming the first curve (relative to the block) with a non-finite output.
+pub(super) fn elevate_curve_major(
+    input: &[f64],
+    terms: &[Vec<(usize, f64)>],
+    dim: usize,
+    output: &mut [f64],
+) -> Result<(), Overflow> {
+    let n1 = terms.iter().flatten().map(|t| t.0 + 1).max().unwrap_or(1);
+    match dim {
+        1 => elevate_fixed::<1>(input, terms, n1, output),
+        2 => elevate_fixed::<2>(input, terms, n1, output),
+        3 => elevate_fixed::<3>(input, terms, n1, output),
+        4 => elevate_fixed::<4>(input, terms, n1, output),
+        _ => {
+            for (p, q) in input
+                .chunks_exact(n1 * dim)
+                .zip(output.chunks_exact_mut(terms.len() * dim))
+            {
+                for (row, o) in terms.iter().zip(q.chunks_exact_mut(dim)) {
+                    o.fill(0.0);
+                    for &(j, c) in row {
+                        for (ok, xk) in o.iter_mut().zip(&p[j * dim..(j + 1) * dim]) {
+                            *ok += c * xk;
+                        }
+                    }
+                }
+            }
+        }
     }
     if output.iter().all(|x| x.is_finite()) {
         Ok(())
     } else {
-        Err(first_bad_curve(output, per_out))
+        Err(first_bad_curve(output, terms.len() * dim))
+    }
+}
+
+/// [`elevate_curve_major`] for a fixed dimension (the same sums in the same order, with
+/// the point held in registers).
+fn elevate_fixed<const D: usize>(
+    input: &[f64],
+    terms: &[Vec<(usize, f64)>],
+    n1: usize,
+    output: &mut [f64],
+) {
+    for (p, q) in input
+        .chunks_exact(n1 * D)
+        .zip(output.chunks_exact_mut(terms.len() * D))
+    {
+        for (row, o) in terms.iter().zip(q.chunks_exact_mut(D)) {
+            let mut acc = [0.0f64; D];
+            for &(j, c) in row {
+                let x = &p[j * D..(j + 1) * D];
+                for k in 0..D {
+                    acc[k] += c * x[k];
+                }
+            }
+            o.copy_from_slice(&acc);
+        }
     }
 }
 
@@ -138,9 +238,9 @@ pub(super) fn reduce_point_major(
     })
 }
 
-/// Elevates one point-major block of degree-`n` curves by `r`: output row `i` is
-/// `sum_j Q(i, j) * row_j` over the band `i - r <= j <= min(i, n)`, as cagd-core's
-/// `kernel::elevate` sums a curve.
+/// Elevates one point-major block with the band `terms` of [`elevation_terms`]: output
+/// row `i` is `sum_j Q(i, j) * row_j` over the band, as cagd-core's `kernel::elevate` sums
+/// a curve.
 ///
 /// # Errors
 /// [`Overflow`] as [`reduce_point_major`].
@@ -148,13 +248,10 @@ pub(super) fn elevate_point_major(
     input: &[f64],
     row_len: usize,
     dim: usize,
-    n: usize,
-    r: usize,
+    terms: &[Vec<(usize, f64)>],
     block: PointMajorBlock<'_>,
 ) -> Result<(), Overflow> {
-    point_major(input, row_len, dim, block, |i| {
-        (i.saturating_sub(r)..=i.min(n)).map(move |j| (j, elevation_coefficient(n, r, i, j)))
-    })
+    point_major(input, row_len, dim, block, |i| terms[i].iter().copied())
 }
 
 /// The point-major loop: for every tile of the block's columns, every output row `i` is

@@ -2,10 +2,10 @@
 //! report in a caller-owned struct or none — `cagd_curve_reduce` without the two handles.
 
 use cagd_core::BezierCurve;
-use cagd_reduce::{operator, reduce_with};
+use cagd_reduce::reduce_with;
 
 use super::input::{curve_in, weights_buffer};
-use super::kernel::apply_one;
+use super::kernel::{apply_one, operator_for};
 use super::report::{CagdBezierReport, checked_report};
 use crate::boundary::{OUT, boundary, checked_len, disjoint, nonnull, slice_out};
 use crate::options::{CagdReduceOptions, read_options};
@@ -100,7 +100,7 @@ pub unsafe extern "C" fn cagd_bezier_reduce(
         // Checks the degree pair (and builds or finds the cached operator) before the size
         // is answered, so that a size query of an impossible reduction fails with its
         // reason.
-        let op = operator(rust_opts.method, curve.degree(), o.target)?;
+        let op = operator_for(rust_opts.method, curve.degree(), o.target)?;
         let m1 = o.target + 1;
         let needed = checked_len(m1, dim, "(target + 1) * dim")?;
         let dst = dst.take(needed)?;
