@@ -44,6 +44,9 @@ impl Overflow {
     }
 }
 
+/// The key and the operator of the last successful lookup of [`operator_for`].
+type LastOperator = Option<(Method, usize, usize, Arc<Operator>)>;
+
 /// The operator of `(method, n, m)`: cagd-reduce's process-wide cache ([`operator`]),
 /// behind a one-entry cache per thread, so that a loop of single-curve calls with one
 /// `(method, n, m)` — the usual hot loop — skips the shared cache's lock and hash. A hit
@@ -54,8 +57,7 @@ impl Overflow {
 /// As [`operator`].
 pub(super) fn operator_for(method: Method, n: usize, m: usize) -> cagd_core::Result<Arc<Operator>> {
     thread_local! {
-        static LAST: RefCell<Option<(Method, usize, usize, Arc<Operator>)>> =
-            const { RefCell::new(None) };
+        static LAST: RefCell<LastOperator> = const { RefCell::new(None) };
     }
     LAST.with_borrow_mut(|last| {
         if let Some((lm, ln, lmm, op)) = last.as_ref() {

@@ -285,6 +285,7 @@ fn transpose(x: &[f64], k: usize, n1: usize, dim: usize, back: bool) -> Vec<f64>
 }
 
 /// One batch call; `Ok(opts)` reduces, `Err(r)` elevates.
+#[allow(clippy::too_many_arguments, reason = "the batch call's own arguments")]
 fn batch(
     input: &[f64],
     k: usize,
