@@ -3338,7 +3338,7 @@ CagdStatus cagd_bezier_elevate(const double *points,
  * With `report_out` NULL no report is formed: for a polynomial curve only the reduced
  * points are computed (the certified bound, most of the cost of `cagd_curve_reduce`, and
  * the sampling of `opts->measure` are skipped). A rational curve is reduced in
- * homogeneous coordinates as by the handle call, bound included.
+ * homogeneous coordinates as by the handle call, bound included (but not sampled).
  *
  * Parameters:
  * - `points` (in): `n_points * dim` doubles, row-major: coordinate k of control point i at

@@ -20,7 +20,7 @@ use crate::status::CagdStatus;
 /// With `report_out` NULL no report is formed: for a polynomial curve only the reduced
 /// points are computed (the certified bound, most of the cost of `cagd_curve_reduce`, and
 /// the sampling of `opts->measure` are skipped). A rational curve is reduced in
-/// homogeneous coordinates as by the handle call, bound included.
+/// homogeneous coordinates as by the handle call, bound included (but not sampled).
 ///
 /// Parameters:
 /// - `points` (in): `n_points * dim` doubles, row-major: coordinate k of control point i at
@@ -96,7 +96,9 @@ pub unsafe extern "C" fn cagd_bezier_reduce(
         let report = unsafe { checked_report(report_out) }?;
         // SAFETY: as above.
         let curve = unsafe { curve_in(points, n_points, dim, weights) }?;
-        let rust_opts = o.rust_options()?;
+        let mut rust_opts = o.rust_options()?;
+        // Without a report nobody reads a measured error: do not sample.
+        rust_opts.measure &= report.is_some();
         // Checks the degree pair (and builds or finds the cached operator) before the size
         // is answered, so that a size query of an impossible reduction fails with its
         // reason.
