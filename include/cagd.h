@@ -29,8 +29,8 @@
  * - many curves of one degree: cagd_bezier_reduce_batch / cagd_bezier_elevate_batch
  *   (point-major or curve-major CagdBatchLayout, n_threads);
  * - results of unknown size: cagd_curvelist_copy, cagd_bspline_copy,
- *   cagd_tensorpatchlist_copy, cagd_tripatchlist_copy copy every array in one call
- *   (every capacity 0 asks the sizes);
+ *   cagd_tensorpatchlist_copy, cagd_tripatchlist_copy, cagd_wsgblist_copy copy every
+ *   array in one call (every capacity 0 asks the sizes);
  * - objects kept and worked on: the handle API.
  */
 
@@ -1077,6 +1077,29 @@ typedef struct CagdPatchListSizes {
    */
   size_t bounds_len;
 } CagdPatchListSizes;
+
+/**
+ * The sizes of the arrays of a `CagdWsgbCurveList`, written by `cagd_wsgblist_copy` on
+ * `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`. Counts of `size_t` / doubles, never bytes.
+ */
+typedef struct CagdWsgbListSizes {
+  /**
+   * Number of pieces: the length of `degrees_out`, `orders_out` and `bounds_out`.
+   */
+  size_t n_pieces;
+  /**
+   * Coordinates per point, the same for every piece.
+   */
+  size_t dim;
+  /**
+   * `2 * n_pieces`: the length of `intervals_out`.
+   */
+  size_t intervals_len;
+  /**
+   * `sum_i (degree_i + 1) * dim`: the length of `points_out`.
+   */
+  size_t points_len;
+} CagdWsgbListSizes;
 
 /**
  * What `cagd_wsgb_reduce` did. The caller sets `struct_size = sizeof(CagdWsgbReport)`;
@@ -6075,6 +6098,55 @@ CagdStatus cagd_wsgblist_get(const struct CagdWsgbCurveList *list,
                              double *start_out,
                              double *end_out,
                              double *bound_out);
+
+/**
+ * Copies every piece of a WSGB curve list into caller buffers in one call. Call it once
+ * with every capacity 0 (and the buffers NULL) to learn the sizes, allocate, call again.
+ * Piece `i` is a WSGB curve of degree `degrees_out[i]` and order `orders_out[i]` (as
+ * `cagd_wsgb_shape`) with `degree_i + 1` control points following those of the pieces
+ * before it in `points_out` (as `cagd_wsgb_points`); it approximates the source on
+ * `[intervals_out[2 i], intervals_out[2 i + 1]]` within `bounds_out[i]` (as
+ * `cagd_wsgblist_get`).
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `degrees_out`, `orders_out` (out): `*_cap` `size_t` each; on `CAGD_OK` the `n_pieces`
+ *   degrees and orders.
+ * - `intervals_out` (out): `intervals_out_cap` doubles; on `CAGD_OK` the `2 * n_pieces`
+ *   interval ends.
+ * - `points_out` (out): `points_out_cap` doubles; on `CAGD_OK` the `points_len`
+ *   coordinates.
+ * - `bounds_out` (out): `bounds_out_cap` doubles; on `CAGD_OK` the `n_pieces` certified
+ *   Euclidean bounds.
+ * - each `*_cap` (in): the capacity of its buffer in elements; a buffer may be NULL only
+ *   when its capacity is 0.
+ * - `sizes_out` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, the sizes.
+ *
+ * Returns:
+ * - `CAGD_OK`: every array is copied.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `sizes_out` is NULL, or a buffer is NULL with a
+ *   capacity above 0.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: a capacity is below its size (the message names every
+ *   short buffer); only `*sizes_out` is written.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: two buffers overlap, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; each buffer NULL or its capacity of writable
+ * elements; `sizes_out` NULL or writable and not overlapping a buffer.
+ */
+CagdStatus cagd_wsgblist_copy(const struct CagdWsgbCurveList *list,
+                              size_t *degrees_out,
+                              size_t degrees_out_cap,
+                              size_t *orders_out,
+                              size_t orders_out_cap,
+                              double *intervals_out,
+                              size_t intervals_out_cap,
+                              double *points_out,
+                              size_t points_out_cap,
+                              double *bounds_out,
+                              size_t bounds_out_cap,
+                              struct CagdWsgbListSizes *sizes_out);
 
 /**
  * Reduces a WSGB(n, L) curve to degree `opts->target` (order `L' = min(L, max(floor(m/2)

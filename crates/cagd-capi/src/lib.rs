@@ -68,8 +68,8 @@
 //!   and the batches `cagd_bezier_reduce_batch` / `cagd_bezier_elevate_batch` (point-major
 //!   or curve-major `CagdBatchLayout`, an optional thread count). Results of unknown size
 //!   in one call per result (`copy_out.rs`): `cagd_curvelist_copy`, `cagd_bspline_copy`,
-//!   `cagd_tensorpatchlist_copy`, `cagd_tripatchlist_copy` (every capacity 0 asks the
-//!   sizes). README.md says which entry point to use when.
+//!   `cagd_tensorpatchlist_copy`, `cagd_tripatchlist_copy`, `cagd_wsgblist_copy` (every
+//!   capacity 0 asks the sizes). README.md says which entry point to use when.
 //! - Patch conversions (SPEC-convert §15.4–15.7), handles in and a `CagdPatchPieceList`
 //!   out (each piece a tensor or triangular patch, polynomial or rational, with the part of
 //!   the input's domain it covers): `cagd_tripatch_to_rect`, `_to_quad`, `_to_three_rects`,
@@ -229,9 +229,9 @@ pub use tripatch::{
 };
 pub use version::{CAGD_VERSION_MAJOR, CAGD_VERSION_MINOR, CAGD_VERSION_PATCH};
 pub use wsgb::{
-    CagdWsgbCurve, CagdWsgbCurveList, CagdWsgbMethod, CagdWsgbReport, cagd_wsgb_elevate,
-    cagd_wsgb_eval, cagd_wsgb_free, cagd_wsgb_from_bezier, cagd_wsgb_leading_coefficient,
-    cagd_wsgb_new, cagd_wsgb_points, cagd_wsgb_reduce, cagd_wsgb_reduce_to_tolerance,
-    cagd_wsgb_shape, cagd_wsgb_to_bezier, cagd_wsgblist_count, cagd_wsgblist_free,
-    cagd_wsgblist_get,
+    CagdWsgbCurve, CagdWsgbCurveList, CagdWsgbListSizes, CagdWsgbMethod, CagdWsgbReport,
+    cagd_wsgb_elevate, cagd_wsgb_eval, cagd_wsgb_free, cagd_wsgb_from_bezier,
+    cagd_wsgb_leading_coefficient, cagd_wsgb_new, cagd_wsgb_points, cagd_wsgb_reduce,
+    cagd_wsgb_reduce_to_tolerance, cagd_wsgb_shape, cagd_wsgb_to_bezier, cagd_wsgblist_copy,
+    cagd_wsgblist_count, cagd_wsgblist_free, cagd_wsgblist_get,
 };

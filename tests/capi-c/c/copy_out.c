@@ -271,3 +271,62 @@ cleanup:
     cagd_tripatch_free(t);
     return rc;
 }
+
+int cagd_ctest_wsgblist_copy(void) {
+    int rc = 1;
+    static const double P7[16] = {0, 0, 1, 3, 3, 4, 5, 1, 6, 5, 8, 2, 9, 6, 11, 0};
+    CagdWsgbCurve *c = NULL, *piece = NULL;
+    CagdWsgbCurveList *list = NULL;
+    CagdReduceOptions o;
+    CagdWsgbListSizes s;
+    size_t *deg = NULL, *ord = NULL, i, off = 0, needed = 0, n = 0, l = 0, dim = 0;
+    double *iv = NULL, *pts = NULL, *b = NULL, hp[32], start = 0, end = 0, bound = 0;
+
+    CHECK_OK(cagd_wsgb_new(P7, 8, 2, 1, &c));
+    CHECK_OK(cagd_reduce_options_init(&o));
+    o.target = 4;
+    o.tolerance = 0.005; /* several pieces for these (unit-sized) points */
+    CHECK_OK(cagd_wsgb_reduce_to_tolerance(c, CAGD_WSGB_PERTURBATION, &o, &list));
+    CHECK_STATUS(cagd_wsgblist_copy(list, NULL, 0, NULL, 0, NULL, 0, NULL, 0, NULL, 0, &s),
+                 CAGD_ERR_BUFFER_TOO_SMALL);
+    CHECK(s.n_pieces > 1 && s.dim == 2 && s.intervals_len == 2 * s.n_pieces);
+    deg = malloc(sizeof(size_t) * s.n_pieces);
+    ord = malloc(sizeof(size_t) * s.n_pieces);
+    iv = malloc(sizeof(double) * s.intervals_len);
+    pts = malloc(sizeof(double) * s.points_len);
+    b = malloc(sizeof(double) * s.n_pieces);
+    CHECK(deg && ord && iv && pts && b);
+    CHECK_STATUS(cagd_wsgblist_copy(list, deg, s.n_pieces, ord, s.n_pieces - 1, iv,
+                                    s.intervals_len, pts, s.points_len, b, s.n_pieces, &s),
+                 CAGD_ERR_BUFFER_TOO_SMALL);
+    CHECK_MESSAGE_HAS("orders_out_cap");
+    CHECK_OK(cagd_wsgblist_copy(list, deg, s.n_pieces, ord, s.n_pieces, iv, s.intervals_len,
+                                pts, s.points_len, b, s.n_pieces, &s));
+    for (i = 0; i < s.n_pieces; ++i) {
+        CHECK_OK(cagd_wsgblist_get(list, i, &piece, &start, &end, &bound));
+        CHECK_OK(cagd_wsgb_shape(piece, &n, &l, &dim));
+        CHECK(deg[i] == n && ord[i] == l && dim == 2);
+        CHECK(iv[2 * i] == start && iv[2 * i + 1] == end && b[i] == bound);
+        CHECK_OK(cagd_wsgb_points(piece, hp, 32, &needed));
+        CHECK(memcmp(pts + off, hp, needed * sizeof(double)) == 0);
+        off += needed;
+        cagd_wsgb_free(piece);
+        piece = NULL;
+    }
+    CHECK(off == s.points_len);
+    CHECK_STATUS(cagd_wsgblist_copy(NULL, NULL, 0, NULL, 0, NULL, 0, NULL, 0, NULL, 0, &s),
+                 CAGD_ERR_NULL_POINTER);
+    CHECK_STATUS(cagd_wsgblist_copy(list, NULL, 0, NULL, 0, NULL, 0, NULL, 0, NULL, 0, NULL),
+                 CAGD_ERR_NULL_POINTER);
+    rc = 0;
+cleanup:
+    free(deg);
+    free(ord);
+    free(iv);
+    free(pts);
+    free(b);
+    cagd_wsgb_free(piece);
+    cagd_wsgblist_free(list);
+    cagd_wsgb_free(c);
+    return rc;
+}

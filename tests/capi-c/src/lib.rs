@@ -161,6 +161,7 @@ c_tests![
     curvelist_copy,
     bspline_copy,
     patchlist_copy,
+    wsgblist_copy,
     // cpp/header_compiles.cpp
     cpp_header,
 ];
