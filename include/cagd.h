@@ -22,6 +22,16 @@
  * - Thread safety: handles are immutable after creation, so any number of threads may
  *   call functions taking `const CagdX *` on the same handle concurrently. A handle must
  *   not be freed while another thread uses it. The error message is per thread.
+ *
+ * Which entry point when (README.md, "Which C entry point to use when"):
+ * - one curve in arrays, result in arrays, in a hot loop: cagd_bezier_reduce /
+ *   cagd_bezier_elevate (no handle; report_out = NULL skips the report and its bound);
+ * - many curves of one degree: cagd_bezier_reduce_batch / cagd_bezier_elevate_batch
+ *   (point-major or curve-major CagdBatchLayout, n_threads);
+ * - results of unknown size: cagd_curvelist_copy, cagd_bspline_copy,
+ *   cagd_tensorpatchlist_copy, cagd_tripatchlist_copy, cagd_wsgblist_copy copy every
+ *   array in one call (every capacity 0 asks the sizes);
+ * - objects kept and worked on: the handle API.
  */
 
 
@@ -602,6 +612,37 @@ typedef int32_t CagdBasis;
 #endif // __cplusplus
 
 /**
+ * How `n_curves` curves of `n + 1` points of `dim` coordinates are stored in one array of
+ * a batch call (passed as an `int32_t`, so that any value is checked rather than
+ * undefined).
+ *
+ */
+enum CagdBatchLayout
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : int32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  /**
+   * Curve after curve, each row-major: coordinate k of point j of curve c at
+   * `[(c * (n + 1) + j) * dim + k]` (the layout of `cagd_curve_reduce_batch`).
+   */
+  CAGD_LAYOUT_CURVE_MAJOR = 0,
+  /**
+   * Point after point, each point of every curve: coordinate k of point j of curve c
+   * at `[(j * n_curves + c) * dim + k]`. Point j of all curves is one contiguous row of
+   * `n_curves * dim` doubles, so the batch is one matrix product (a GEMM's layout).
+   */
+  CAGD_LAYOUT_POINT_MAJOR = 1,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum CagdBatchLayout CagdBatchLayout;
+#else
+typedef int32_t CagdBatchLayout;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
  * Opaque handle to a B-spline curve of degree `p` (`0..=64`) with `n_points >= p + 1`
  * control points of `dim >= 1` coordinates and a full knot vector of
  * `n_points + p + 1` non-decreasing knots (clamped or not; the domain is
@@ -711,6 +752,42 @@ typedef struct CagdWsgbCurve CagdWsgbCurve;
  * release with `cagd_wsgblist_free`.
  */
 typedef struct CagdWsgbCurveList CagdWsgbCurveList;
+
+/**
+ * The shape of a `CagdBSpline` and the sizes of its arrays, written by
+ * `cagd_bspline_copy` on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`. Counts of doubles,
+ * never bytes.
+ */
+typedef struct CagdBSplineSizes {
+  /**
+   * The degree `p`.
+   */
+  size_t degree;
+  /**
+   * Coordinates per point.
+   */
+  size_t dim;
+  /**
+   * Number of control points.
+   */
+  size_t n_points;
+  /**
+   * Whether the spline is rational (NURBS).
+   */
+  bool rational;
+  /**
+   * `n_points + degree + 1`: the length of `knots_out`.
+   */
+  size_t knots_len;
+  /**
+   * `n_points * dim`: the length of `points_out`.
+   */
+  size_t points_len;
+  /**
+   * `n_points` for a NURBS, 0 for a polynomial spline: the length of `weights_out`.
+   */
+  size_t weights_len;
+} CagdBSplineSizes;
 
 /**
  * How to reduce: a plain struct the caller owns. Fill it with
@@ -830,6 +907,95 @@ typedef struct CagdReduceOptions {
 } CagdReduceOptions;
 
 /**
+ * The sizes of the arrays of a `CagdCurveList`, written by `cagd_curvelist_copy` on
+ * `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`. Counts of `size_t` / doubles, never bytes.
+ */
+typedef struct CagdCurveListSizes {
+  /**
+   * Number of pieces (`>= 1` for lists made by cagd): the length of `degrees_out`.
+   */
+  size_t n_pieces;
+  /**
+   * Coordinates per point, the same for every piece.
+   */
+  size_t dim;
+  /**
+   * Whether the pieces are rational (then `weights_len > 0`).
+   */
+  bool rational;
+  /**
+   * `2 * n_pieces`: the length of `intervals_out`.
+   */
+  size_t intervals_len;
+  /**
+   * `sum_i (degree_i + 1) * dim`: the length of `points_out`.
+   */
+  size_t points_len;
+  /**
+   * `sum_i (degree_i + 1)` for rational pieces, 0 for polynomial ones: the length of
+   * `weights_out`.
+   */
+  size_t weights_len;
+  /**
+   * `n_pieces` when every piece has a certified bound (pieces of a reduction), 0
+   * otherwise (exact pieces, e.g. of `cagd_bspline_to_beziers`): the length of
+   * `bounds_out`.
+   */
+  size_t bounds_len;
+} CagdCurveListSizes;
+
+/**
+ * What `cagd_bezier_reduce` did: the numbers `cagd_report_method`, `cagd_report_bound`,
+ * `cagd_report_max_error` and `cagd_report_space` give for the handle call
+ * `cagd_curve_reduce` with the same options, in one caller-owned struct (e.g. on the
+ * stack). A value that is not available is NaN (where the handle accessor returns
+ * `CAGD_ERR_NOT_AVAILABLE`).
+ *
+ * Versioning rule (as `CagdReduceOptions`): set `struct_size = sizeof(CagdBezierReport)`
+ * before the call. cagd writes at most `struct_size` bytes, rejects a size below that of
+ * the first version (`CAGD_ERR_INVALID_ARGUMENT`), and only appends fields in later
+ * versions. Nothing is released yet, so the first version is this one.
+ */
+typedef struct CagdBezierReport {
+  /**
+   * `sizeof(CagdBezierReport)`, set by the caller before the call (see above).
+   */
+  size_t struct_size;
+  /**
+   * The `CagdReduceMethod` code that was used (`cagd_report_method`).
+   */
+  int32_t method;
+  /**
+   * The `CagdErrorSpace` code of `bound` and `max_error` (`cagd_report_space`):
+   * `opts->space` for a rational curve, `CAGD_SPACE_EUCLIDEAN` for a polynomial one.
+   */
+  int32_t space;
+  /**
+   * Source degree `n`.
+   */
+  size_t degree_from;
+  /**
+   * Target degree `m`.
+   */
+  size_t degree_to;
+  /**
+   * Certified upper bound of `max_t |P(t) - Q(t)|` in model units, in `space`
+   * (`cagd_report_bound`); NaN when no bound was formed.
+   */
+  double bound;
+  /**
+   * The error measured by dense sampling with `opts->measure` (`cagd_report_max_error`);
+   * NaN when not measured.
+   */
+  double max_error;
+  /**
+   * The certified bound in homogeneous space for a rational curve, the Euclidean bound
+   * for a polynomial one (`cagd_report_space`); NaN when no bound was formed.
+   */
+  double homogeneous_bound;
+} CagdBezierReport;
+
+/**
  * The report of `cagd_intervaltri_reduce` (plain data, written only on `CAGD_OK`).
  */
 typedef struct CagdIntervalReport {
@@ -875,6 +1041,65 @@ typedef struct CagdIntervalReport {
    */
   double objective_decoupled;
 } CagdIntervalReport;
+
+/**
+ * The sizes of the arrays of a `CagdTensorPatchList` or `CagdTriPatchList`, written by
+ * `cagd_tensorpatchlist_copy` / `cagd_tripatchlist_copy` on `CAGD_OK` and on
+ * `CAGD_ERR_BUFFER_TOO_SMALL`. Counts of `size_t` / doubles, never bytes.
+ */
+typedef struct CagdPatchListSizes {
+  /**
+   * Number of pieces.
+   */
+  size_t n_pieces;
+  /**
+   * Coordinates per point, the same for every piece.
+   */
+  size_t dim;
+  /**
+   * The length of `degrees_out`: `2 * n_pieces` (tensor: `deg_u, deg_v` per piece) or
+   * `n_pieces` (triangles).
+   */
+  size_t degrees_len;
+  /**
+   * The length of `domains_out`: `4 * n_pieces` (tensor: `u0, u1, v0, v1` per piece, as
+   * `cagd_tensorpatchlist_get`) or `6 * n_pieces` (triangles: `A.u, A.v, B.u, B.v, C.u,
+   * C.v`, as `cagd_tripatchlist_get`).
+   */
+  size_t domains_len;
+  /**
+   * The length of `points_out`: `sum_i (deg_u_i + 1) (deg_v_i + 1) dim` (tensor) or
+   * `sum_i (n_i + 1) (n_i + 2) / 2 * dim` (triangles).
+   */
+  size_t points_len;
+  /**
+   * `n_pieces`: the length of `bounds_out`.
+   */
+  size_t bounds_len;
+} CagdPatchListSizes;
+
+/**
+ * The sizes of the arrays of a `CagdWsgbCurveList`, written by `cagd_wsgblist_copy` on
+ * `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`. Counts of `size_t` / doubles, never bytes.
+ */
+typedef struct CagdWsgbListSizes {
+  /**
+   * Number of pieces: the length of `degrees_out`, `orders_out` and `bounds_out`.
+   */
+  size_t n_pieces;
+  /**
+   * Coordinates per point, the same for every piece.
+   */
+  size_t dim;
+  /**
+   * `2 * n_pieces`: the length of `intervals_out`.
+   */
+  size_t intervals_len;
+  /**
+   * `sum_i (degree_i + 1) * dim`: the length of `points_out`.
+   */
+  size_t points_len;
+} CagdWsgbListSizes;
 
 /**
  * What `cagd_wsgb_reduce` did. The caller sets `struct_size = sizeof(CagdWsgbReport)`;
@@ -1217,6 +1442,46 @@ CagdStatus cagd_bspline_weights(const struct CagdBSpline *spline,
                                 double *out,
                                 size_t out_cap,
                                 size_t *out_needed);
+
+/**
+ * Copies the knots, control points and weights of a spline into caller buffers in one
+ * call. Call it once with every capacity 0 (and the buffers NULL) to learn the sizes,
+ * allocate, call again.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `knots_out` (out): `knots_out_cap` doubles; on `CAGD_OK` the `knots_len` knots
+ *   (non-decreasing).
+ * - `points_out` (out): `points_out_cap` doubles; on `CAGD_OK` the `points_len` control
+ *   point coordinates, row-major (Euclidean for a NURBS).
+ * - `weights_out` (out): `weights_out_cap` doubles; on `CAGD_OK` the `weights_len`
+ *   weights (none for a polynomial spline; `cagd_bspline_weights` gives ones there).
+ * - each `*_cap` (in): the capacity of its buffer in doubles; a buffer may be NULL only
+ *   when its capacity is 0.
+ * - `sizes_out` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, the shape and
+ *   sizes.
+ *
+ * Returns:
+ * - `CAGD_OK`: every array is copied.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `sizes_out` is NULL, or a buffer is NULL with a
+ *   capacity above 0.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: a capacity is below its size (the message names every
+ *   short buffer); only `*sizes_out` is written.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: two buffers overlap, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; each buffer NULL or its capacity of
+ * writable doubles; `sizes_out` NULL or writable and not overlapping a buffer.
+ */
+CagdStatus cagd_bspline_copy(const struct CagdBSpline *spline,
+                             double *knots_out,
+                             size_t knots_out_cap,
+                             double *points_out,
+                             size_t points_out_cap,
+                             double *weights_out,
+                             size_t weights_out_cap,
+                             struct CagdBSplineSizes *sizes_out);
 
 /**
  * Merges consecutive Bézier segments into one clamped B-spline (NURBS if any segment is
@@ -2714,6 +2979,58 @@ CagdStatus cagd_curvelist_interval(const struct CagdCurveList *list,
 CagdStatus cagd_curvelist_bound(const struct CagdCurveList *list, size_t i, double *bound_out);
 
 /**
+ * Copies every piece of a curve list into caller buffers in one call. Call it once with
+ * every capacity 0 (and the buffers NULL) to learn the sizes, allocate, call again.
+ *
+ * Piece `i` has `degree_i + 1` control points; its points start at
+ * `points_out[dim * sum_{k<i} (degree_k + 1)]` (row-major, Euclidean for rational pieces)
+ * and its weights at `weights_out[sum_{k<i} (degree_k + 1)]`; its parameter interval
+ * `[a_i, b_i]` in the parameter of the whole (as `cagd_curvelist_interval`) is
+ * `intervals_out[2 i]`, `intervals_out[2 i + 1]`; its certified bound (as
+ * `cagd_curvelist_bound`) is `bounds_out[i]`.
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `degrees_out` (out): `degrees_out_cap` `size_t`; on `CAGD_OK` the `n_pieces` degrees.
+ * - `intervals_out` (out): `intervals_out_cap` doubles; on `CAGD_OK` the `2 * n_pieces`
+ *   interval ends.
+ * - `points_out` (out): `points_out_cap` doubles; on `CAGD_OK` the `points_len` control
+ *   point coordinates.
+ * - `weights_out` (out): `weights_out_cap` doubles; on `CAGD_OK` the `weights_len`
+ *   weights (none for polynomial pieces).
+ * - `bounds_out` (out): `bounds_out_cap` doubles; on `CAGD_OK` the `bounds_len` bounds
+ *   (none for exact pieces).
+ * - each `*_cap` (in): the capacity of its buffer in elements; a buffer may be NULL only
+ *   when its capacity is 0 (a buffer whose array is empty may always be NULL with 0).
+ * - `sizes_out` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, the sizes.
+ *
+ * Returns:
+ * - `CAGD_OK`: every array is copied.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `sizes_out` is NULL, or a buffer is NULL with a
+ *   capacity above 0.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: a capacity is below its size (the message names every
+ *   short buffer); only `*sizes_out` is written.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: two buffers overlap, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; each buffer NULL or its capacity of writable
+ * elements; `sizes_out` NULL or writable and not overlapping a buffer.
+ */
+CagdStatus cagd_curvelist_copy(const struct CagdCurveList *list,
+                               size_t *degrees_out,
+                               size_t degrees_out_cap,
+                               double *intervals_out,
+                               size_t intervals_out_cap,
+                               double *points_out,
+                               size_t points_out_cap,
+                               double *weights_out,
+                               size_t weights_out_cap,
+                               double *bounds_out,
+                               size_t bounds_out_cap,
+                               struct CagdCurveListSizes *sizes_out);
+
+/**
  * Evaluates a curve at one parameter `t` (de Casteljau; in homogeneous coordinates for a
  * rational curve). `t` in `[0, 1]` is the curve; other finite `t` extrapolate.
  *
@@ -2858,6 +3175,256 @@ CagdStatus cagd_curve_segment(const struct CagdCurve *curve,
                               double a,
                               double b,
                               struct CagdCurve **curve_out);
+
+/**
+ * Reduces `n_curves` polynomial Bézier curves of one degree `n` to degree `opts->target`
+ * with one cached operator, on `n_threads` threads: `cagd_curve_reduce_batch` with a
+ * choice of layout and threads, and the same reduced points bit for bit (and, in either
+ * layout, the points `cagd_curve_reduce` / `cagd_bezier_reduce` give for each curve).
+ * Only `opts->method`, `target`, `r`, `p`, `l1`, `l2` are used; no report (call
+ * `cagd_bezier_reduce` for a certified bound per curve). Rational curves: pass their
+ * homogeneous points `(w_i P_i, w_i)` as polynomial curves of dimension `dim + 1`.
+ *
+ * Parameters:
+ * - `points` (in): `n_curves * (n + 1) * dim` doubles in `layout` (see
+ *   `CagdBatchLayout`). Borrowed for the call.
+ * - `n_curves` (in): number of curves; 0 is allowed (`*out_needed = 0`).
+ * - `degree` (in): the common source degree `n`, `0..=64`.
+ * - `dim` (in): coordinates per point, `>= 1`.
+ * - `layout` (in): a `CagdBatchLayout` code, for the input and the output alike.
+ * - `opts` (in): the options. Borrowed for the call.
+ * - `n_threads` (in): 0 or 1: the calling thread only; `k > 1`: a pool of `k` worker
+ *   threads (at most 256), started on the first call with that count and kept for the
+ *   process (the calling thread waits). Small batches (under 1024 curves) run on the
+ *   calling thread whatever the count. The result does not depend on it.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
+ *   `n_curves * (target + 1) * dim` doubles hold the reduced curves in `layout`. May be
+ *   NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles (0 asks the size).
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
+ *   `n_curves * (target + 1) * dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the reduced curves are in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `points`, `opts` or `out_needed` is NULL, or `out` is NULL
+ *   with `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a size formula overflows, `layout` is not a
+ *   `CagdBatchLayout`, `opts->struct_size` below `sizeof(CagdReduceOptions)`, an invalid
+ *   `opts->method` code or `l1` / `l2`, or a pointer is misaligned.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
+ * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
+ * - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message names the
+ *   curve, point and coordinate; nothing but `*out_needed` is written), or a reduced
+ *   coordinate overflows to infinity (input near the largest double; `out` is then
+ *   partly written).
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
+ *   written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `points` must be NULL or point to `n_curves * (degree + 1) * dim` readable doubles;
+ * `opts` NULL or readable; `out` NULL or `out_cap` writable doubles not overlapping
+ * `points`; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_bezier_reduce_batch(const double *points,
+                                    size_t n_curves,
+                                    size_t degree,
+                                    size_t dim,
+                                    int32_t layout,
+                                    const struct CagdReduceOptions *opts,
+                                    size_t n_threads,
+                                    double *out,
+                                    size_t out_cap,
+                                    size_t *out_needed);
+
+/**
+ * Elevates `n_curves` polynomial Bézier curves of one degree `n` to degree `n + r`
+ * (`Q_i = sum_j C(n,j) C(r,i-j) / C(n+r,i) P_j`, seed 001 §3.2), on `n_threads` threads:
+ * the batch form of `cagd_curve_elevate` / `cagd_bezier_elevate`, with the same points bit
+ * for bit. Rational curves: pass their homogeneous points `(w_i P_i, w_i)` as polynomial
+ * curves of dimension `dim + 1` (elevation is linear in them).
+ *
+ * Parameters:
+ * - `points` (in): `n_curves * (n + 1) * dim` doubles in `layout` (see
+ *   `CagdBatchLayout`). Borrowed for the call.
+ * - `n_curves` (in): number of curves; 0 is allowed (`*out_needed = 0`).
+ * - `degree` (in): the common source degree `n`, `0..=64`.
+ * - `dim` (in): coordinates per point, `>= 1`.
+ * - `layout` (in): a `CagdBatchLayout` code, for the input and the output alike.
+ * - `r` (in): how many degrees to add; `n + r <= 64`; 0 copies.
+ * - `n_threads` (in): as for `cagd_bezier_reduce_batch` (0 or 1: the calling thread).
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
+ *   `n_curves * (n + r + 1) * dim` doubles hold the elevated curves in `layout`. May be
+ *   NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles (0 asks the size).
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
+ *   `n_curves * (n + r + 1) * dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the elevated curves are in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `points` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a size formula overflows, `layout` is not a
+ *   `CagdBatchLayout`, or a pointer is misaligned.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64` or `degree + r > 64`.
+ * - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message names the
+ *   curve, point and coordinate; nothing but `*out_needed` is written), or an elevated
+ *   coordinate overflows to infinity (input near the largest double; `out` is then
+ *   partly written).
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
+ *   written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `points` must be NULL or point to `n_curves * (degree + 1) * dim` readable doubles;
+ * `out` NULL or `out_cap` writable doubles not overlapping `points`; `out_needed` NULL or
+ * writable.
+ */
+CagdStatus cagd_bezier_elevate_batch(const double *points,
+                                     size_t n_curves,
+                                     size_t degree,
+                                     size_t dim,
+                                     int32_t layout,
+                                     size_t r,
+                                     size_t n_threads,
+                                     double *out,
+                                     size_t out_cap,
+                                     size_t *out_needed);
+
+/**
+ * Elevates one Bézier curve of degree `n = n_points - 1` by `r` degrees
+ * (`Q_i = sum_j C(n,j) C(r,i-j) / C(n+r,i) P_j`, seed 001 §3.2; rational curves in
+ * homogeneous coordinates), reading the control points from arrays and writing the result
+ * to caller buffers: the handle-free form of `cagd_curve_elevate`, with the same points
+ * and weights bit for bit.
+ *
+ * Parameters:
+ * - `points` (in): `n_points * dim` doubles, row-major: coordinate k of control point i at
+ *   `points[i * dim + k]`. Borrowed for the call.
+ * - `n_points` (in): number of control points, `1..=65`.
+ * - `dim` (in): coordinates per point, `>= 1`.
+ * - `weights` (in): `n_points` weights, finite and `> 0`, for a rational curve; NULL for a
+ *   polynomial one. Borrowed for the call.
+ * - `r` (in): how many degrees to add; `n + r <= 64`; 0 copies.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
+ *   `(n_points + r) * dim` doubles hold the elevated control points, row-major (Euclidean
+ *   for a rational curve). May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles (0 asks the size).
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
+ *   `(n_points + r) * dim`.
+ * - `weights_out` (out): rational curves only, a buffer of `weights_out_cap` doubles; on
+ *   `CAGD_OK` its first `n_points + r` doubles hold the elevated weights. Ignored (may be
+ *   NULL) when `weights` is NULL.
+ * - `weights_out_cap` (in): capacity of `weights_out` in doubles.
+ *
+ * Returns:
+ * - `CAGD_OK`: the outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `points` or `out_needed` is NULL; `out` is NULL with
+ *   `out_cap > 0`; or `weights_out` is NULL for a rational curve.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a size overflows, `out` and `weights_out`
+ *   overlap, or a pointer is misaligned.
+ * - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_points == 0`.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n_points > 65` or `n_points - 1 + r > 64`.
+ * - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message gives the
+ *   point and coordinate), or an elevated coordinate overflows (input near the largest
+ *   double; `out` may then be partly written).
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is not finite and `> 0`.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < (n_points + r) * dim`, or (rational)
+ *   `weights_out_cap < n_points + r`; only `*out_needed` is written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `points` must be NULL or point to `n_points * dim` readable doubles; `weights` NULL or
+ * `n_points` readable doubles; `out` NULL or `out_cap` writable doubles; `out_needed` NULL
+ * or writable; `weights_out` NULL or `weights_out_cap` writable doubles. No output may
+ * overlap an input.
+ */
+CagdStatus cagd_bezier_elevate(const double *points,
+                               size_t n_points,
+                               size_t dim,
+                               const double *weights,
+                               size_t r,
+                               double *out,
+                               size_t out_cap,
+                               size_t *out_needed,
+                               double *weights_out,
+                               size_t weights_out_cap);
+
+/**
+ * Reduces one Bézier curve of degree `n = n_points - 1` to degree `opts->target`, reading
+ * the control points from arrays and writing the result to caller buffers: the
+ * handle-free form of `cagd_curve_reduce` (same methods, same options, same statuses, and
+ * the same points bit for bit), for hot loops where creating and freeing a curve and a
+ * report handle would cost as much as the reduction.
+ *
+ * With `report_out` NULL no report is formed: for a polynomial curve only the reduced
+ * points are computed (the certified bound, most of the cost of `cagd_curve_reduce`, and
+ * the sampling of `opts->measure` are skipped). A rational curve is reduced in
+ * homogeneous coordinates as by the handle call, bound included (but not sampled).
+ *
+ * Parameters:
+ * - `points` (in): `n_points * dim` doubles, row-major: coordinate k of control point i at
+ *   `points[i * dim + k]`. Borrowed for the call.
+ * - `n_points` (in): number of control points, `1..=65`.
+ * - `dim` (in): coordinates per point, `>= 1`.
+ * - `weights` (in): `n_points` weights, finite and `> 0`, for a rational curve; NULL for a
+ *   polynomial one. Borrowed for the call.
+ * - `opts` (in): the options, as for `cagd_curve_reduce` (start from
+ *   `cagd_reduce_options_init`). Borrowed for the call.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
+ *   `(opts->target + 1) * dim` doubles hold the reduced control points, row-major
+ *   (Euclidean points for a rational curve). May be NULL only when `out_cap == 0`.
+ * - `out_cap` (in): capacity of `out` in doubles (0 asks the size).
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
+ *   `(opts->target + 1) * dim`.
+ * - `weights_out` (out): rational curves only, a buffer of `weights_out_cap` doubles; on
+ *   `CAGD_OK` its first `opts->target + 1` doubles hold the reduced weights. Ignored (may
+ *   be NULL) when `weights` is NULL.
+ * - `weights_out_cap` (in): capacity of `weights_out` in doubles.
+ * - `report_out` (out): NULL (no report), or a caller-owned `CagdBezierReport` whose
+ *   `struct_size` the caller set to `sizeof(CagdBezierReport)`; on `CAGD_OK` it holds the
+ *   report. Nothing but `*out_needed` is written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`: the outputs are written.
+ * - `CAGD_ERR_NULL_POINTER`: `points`, `opts` or `out_needed` is NULL; `out` is NULL with
+ *   `out_cap > 0`; or `weights_out` is NULL for a rational curve.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, `n_points * dim` or the output size overflows,
+ *   `opts->struct_size` below `sizeof(CagdReduceOptions)`, an invalid `opts->method` or
+ *   `opts->space` code, `l1` / `l2` of `CAGD_METHOD_PERTURB_G1` not finite or not `> -1`,
+ *   `report_out->struct_size` below `sizeof(CagdBezierReport)`, two outputs overlap, or a
+ *   pointer is misaligned.
+ * - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_points == 0`.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n_points > 65`.
+ * - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message gives the
+ *   point and coordinate), or a reduced coordinate overflows.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: an input weight is not finite and `> 0`, or a reduced
+ *   weight of a rational curve is not positive.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n`, or `target` below the method's minimum.
+ * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target`, or `r` or `p` below -1.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < (target + 1) * dim`, or (rational)
+ *   `weights_out_cap < target + 1`; only `*out_needed` is written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `points` must be NULL or point to `n_points * dim` readable doubles; `weights` NULL or
+ * `n_points` readable doubles; `opts` NULL or a readable `CagdReduceOptions` of
+ * `opts->struct_size` bytes; `out` NULL or `out_cap` writable doubles; `out_needed` NULL
+ * or writable; `weights_out` NULL or `weights_out_cap` writable doubles; `report_out` NULL
+ * or `report_out->struct_size` writable bytes. No output may overlap an input.
+ */
+CagdStatus cagd_bezier_reduce(const double *points,
+                              size_t n_points,
+                              size_t dim,
+                              const double *weights,
+                              const struct CagdReduceOptions *opts,
+                              double *out,
+                              size_t out_cap,
+                              size_t *out_needed,
+                              double *weights_out,
+                              size_t weights_out_cap,
+                              struct CagdBezierReport *report_out);
 
 /**
  * Implicitizes a planar Bézier curve (polynomial or rational, degree `1..=16`):
@@ -3761,6 +4328,96 @@ CagdStatus cagd_tripatchlist_get(const struct CagdTriPatchList *list,
                                  struct CagdTriPatch **patch_out,
                                  double *vertices_out,
                                  double *bound_out);
+
+/**
+ * Copies every piece of a tensor patch list into caller buffers in one call. Call it
+ * once with every capacity 0 (and the buffers NULL) to learn the sizes, allocate, call
+ * again. Piece `i` has degrees `degrees_out[2 i]`, `degrees_out[2 i + 1]` and
+ * `(deg_u + 1) (deg_v + 1)` control points (i-major, as `cagd_tensorpatch_points`),
+ * following those of the pieces before it in `points_out`.
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `degrees_out` (out): `degrees_out_cap` `size_t`; on `CAGD_OK` `deg_u, deg_v` of each
+ *   piece.
+ * - `domains_out` (out): `domains_out_cap` doubles; on `CAGD_OK` `u0, u1, v0, v1` of each
+ *   piece.
+ * - `points_out` (out): `points_out_cap` doubles; on `CAGD_OK` the control points of every
+ *   piece.
+ * - `bounds_out` (out): `bounds_out_cap` doubles; on `CAGD_OK` the certified bound of
+ *   each piece (Euclidean, model units).
+ * - each `*_cap` (in): the capacity of its buffer in elements; a buffer may be NULL only
+ *   when its capacity is 0.
+ * - `sizes_out` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, the sizes.
+ *
+ * Returns:
+ * - `CAGD_OK`: every array is copied.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `sizes_out` is NULL, or a buffer is NULL with a
+ *   capacity above 0.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: a capacity is below its size (the message names every
+ *   short buffer); only `*sizes_out` is written.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: two buffers overlap, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; each buffer NULL or its capacity of writable
+ * elements; `sizes_out` NULL or writable and not overlapping a buffer.
+ */
+CagdStatus cagd_tensorpatchlist_copy(const struct CagdTensorPatchList *list,
+                                     size_t *degrees_out,
+                                     size_t degrees_out_cap,
+                                     double *domains_out,
+                                     size_t domains_out_cap,
+                                     double *points_out,
+                                     size_t points_out_cap,
+                                     double *bounds_out,
+                                     size_t bounds_out_cap,
+                                     struct CagdPatchListSizes *sizes_out);
+
+/**
+ * Copies every piece of a triangular patch list into caller buffers in one call. Call it
+ * once with every capacity 0 (and the buffers NULL) to learn the sizes, allocate, call
+ * again. Piece `i` has degree `degrees_out[i]` and `(n_i + 1) (n_i + 2) / 2` control
+ * points (i-major, as `cagd_tripatch_points`), following those of the pieces before it
+ * in `points_out`.
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `degrees_out` (out): `degrees_out_cap` `size_t`; on `CAGD_OK` the degree of each
+ *   piece.
+ * - `domains_out` (out): `domains_out_cap` doubles; on `CAGD_OK` the sub-triangle
+ *   `A.u, A.v, B.u, B.v, C.u, C.v` of each piece.
+ * - `points_out` (out): `points_out_cap` doubles; on `CAGD_OK` the control points of every
+ *   piece.
+ * - `bounds_out` (out): `bounds_out_cap` doubles; on `CAGD_OK` the certified bound of
+ *   each piece (Euclidean, model units).
+ * - each `*_cap` (in): the capacity of its buffer in elements; a buffer may be NULL only
+ *   when its capacity is 0.
+ * - `sizes_out` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, the sizes.
+ *
+ * Returns:
+ * - `CAGD_OK`: every array is copied.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `sizes_out` is NULL, or a buffer is NULL with a
+ *   capacity above 0.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: a capacity is below its size (the message names every
+ *   short buffer); only `*sizes_out` is written.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: two buffers overlap, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; each buffer NULL or its capacity of writable
+ * elements; `sizes_out` NULL or writable and not overlapping a buffer.
+ */
+CagdStatus cagd_tripatchlist_copy(const struct CagdTriPatchList *list,
+                                  size_t *degrees_out,
+                                  size_t degrees_out_cap,
+                                  double *domains_out,
+                                  size_t domains_out_cap,
+                                  double *points_out,
+                                  size_t points_out_cap,
+                                  double *bounds_out,
+                                  size_t bounds_out_cap,
+                                  struct CagdPatchListSizes *sizes_out);
 
 /**
  * Reduces a tensor-product patch of degree `(m, n)` to degree
@@ -5441,6 +6098,55 @@ CagdStatus cagd_wsgblist_get(const struct CagdWsgbCurveList *list,
                              double *start_out,
                              double *end_out,
                              double *bound_out);
+
+/**
+ * Copies every piece of a WSGB curve list into caller buffers in one call. Call it once
+ * with every capacity 0 (and the buffers NULL) to learn the sizes, allocate, call again.
+ * Piece `i` is a WSGB curve of degree `degrees_out[i]` and order `orders_out[i]` (as
+ * `cagd_wsgb_shape`) with `degree_i + 1` control points following those of the pieces
+ * before it in `points_out` (as `cagd_wsgb_points`); it approximates the source on
+ * `[intervals_out[2 i], intervals_out[2 i + 1]]` within `bounds_out[i]` (as
+ * `cagd_wsgblist_get`).
+ *
+ * Parameters:
+ * - `list` (in): the list.
+ * - `degrees_out`, `orders_out` (out): `*_cap` `size_t` each; on `CAGD_OK` the `n_pieces`
+ *   degrees and orders.
+ * - `intervals_out` (out): `intervals_out_cap` doubles; on `CAGD_OK` the `2 * n_pieces`
+ *   interval ends.
+ * - `points_out` (out): `points_out_cap` doubles; on `CAGD_OK` the `points_len`
+ *   coordinates.
+ * - `bounds_out` (out): `bounds_out_cap` doubles; on `CAGD_OK` the `n_pieces` certified
+ *   Euclidean bounds.
+ * - each `*_cap` (in): the capacity of its buffer in elements; a buffer may be NULL only
+ *   when its capacity is 0.
+ * - `sizes_out` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`, the sizes.
+ *
+ * Returns:
+ * - `CAGD_OK`: every array is copied.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `sizes_out` is NULL, or a buffer is NULL with a
+ *   capacity above 0.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: a capacity is below its size (the message names every
+ *   short buffer); only `*sizes_out` is written.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: two buffers overlap, or a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; each buffer NULL or its capacity of writable
+ * elements; `sizes_out` NULL or writable and not overlapping a buffer.
+ */
+CagdStatus cagd_wsgblist_copy(const struct CagdWsgbCurveList *list,
+                              size_t *degrees_out,
+                              size_t degrees_out_cap,
+                              size_t *orders_out,
+                              size_t orders_out_cap,
+                              double *intervals_out,
+                              size_t intervals_out_cap,
+                              double *points_out,
+                              size_t points_out_cap,
+                              double *bounds_out,
+                              size_t bounds_out_cap,
+                              struct CagdWsgbListSizes *sizes_out);
 
 /**
  * Reduces a WSGB(n, L) curve to degree `opts->target` (order `L' = min(L, max(floor(m/2)

@@ -63,6 +63,13 @@
 //!   within a tolerance). The reductions take one `CagdReduceOptions` (versioned by its
 //!   leading `struct_size`, filled by `cagd_reduce_options_init`).
 //!
+//! - Handle-free hot paths (`flat/`): `cagd_bezier_reduce` (one curve from arrays into
+//!   caller buffers, report in a `CagdBezierReport` struct or none), `cagd_bezier_elevate`,
+//!   and the batches `cagd_bezier_reduce_batch` / `cagd_bezier_elevate_batch` (point-major
+//!   or curve-major `CagdBatchLayout`, an optional thread count). Results of unknown size
+//!   in one call per result (`copy_out.rs`): `cagd_curvelist_copy`, `cagd_bspline_copy`,
+//!   `cagd_tensorpatchlist_copy`, `cagd_tripatchlist_copy`, `cagd_wsgblist_copy` (every
+//!   capacity 0 asks the sizes). README.md says which entry point to use when.
 //! - Patch conversions (SPEC-convert §15.4–15.7), handles in and a `CagdPatchPieceList`
 //!   out (each piece a tensor or triangular patch, polynomial or rational, with the part of
 //!   the input's domain it covers): `cagd_tripatch_to_rect`, `_to_quad`, `_to_three_rects`,
@@ -85,8 +92,12 @@ mod bspline;
 mod convert_nurbs;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod convert_patch;
+#[allow(unsafe_code, reason = "writes caller buffers through raw pointers")]
+mod copy_out;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod curve;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod flat;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod implicit;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
@@ -127,14 +138,15 @@ mod version;
 mod wsgb;
 
 pub use bspline::{
-    CagdBSpline, CagdBSplineSurface, cagd_bspline_degree, cagd_bspline_derivatives,
-    cagd_bspline_dim, cagd_bspline_domain, cagd_bspline_eval, cagd_bspline_free,
-    cagd_bspline_from_beziers, cagd_bspline_insert_knot, cagd_bspline_is_rational,
-    cagd_bspline_knots, cagd_bspline_n_points, cagd_bspline_new, cagd_bspline_new_rational,
-    cagd_bspline_points, cagd_bspline_reduce, cagd_bspline_reduce_uniform, cagd_bspline_to_beziers,
-    cagd_bspline_weights, cagd_bsplinesurface_array, cagd_bsplinesurface_eval,
-    cagd_bsplinesurface_free, cagd_bsplinesurface_new, cagd_bsplinesurface_reduce,
-    cagd_bsplinesurface_reduce_to_tolerance, cagd_bsplinesurface_shape,
+    CagdBSpline, CagdBSplineSizes, CagdBSplineSurface, cagd_bspline_copy, cagd_bspline_degree,
+    cagd_bspline_derivatives, cagd_bspline_dim, cagd_bspline_domain, cagd_bspline_eval,
+    cagd_bspline_free, cagd_bspline_from_beziers, cagd_bspline_insert_knot,
+    cagd_bspline_is_rational, cagd_bspline_knots, cagd_bspline_n_points, cagd_bspline_new,
+    cagd_bspline_new_rational, cagd_bspline_points, cagd_bspline_reduce,
+    cagd_bspline_reduce_uniform, cagd_bspline_to_beziers, cagd_bspline_weights,
+    cagd_bsplinesurface_array, cagd_bsplinesurface_eval, cagd_bsplinesurface_free,
+    cagd_bsplinesurface_new, cagd_bsplinesurface_reduce, cagd_bsplinesurface_reduce_to_tolerance,
+    cagd_bsplinesurface_shape,
 };
 pub use convert_nurbs::{
     cagd_bezier_to_nurbs_span, cagd_bezier22_to_nurbs22_span, cagd_bspline_to_bezier_pieces,
@@ -152,11 +164,16 @@ pub use convert_patch::{
     cagd_tripatch_to_three_rects,
 };
 pub use curve::{
-    CagdCurve, CagdCurveList, cagd_curve_degree, cagd_curve_dim, cagd_curve_elevate,
-    cagd_curve_eval, cagd_curve_eval_many, cagd_curve_free, cagd_curve_is_rational, cagd_curve_new,
-    cagd_curve_new_rational, cagd_curve_points, cagd_curve_segment, cagd_curve_subdivide,
-    cagd_curve_weights, cagd_curvelist_bound, cagd_curvelist_count, cagd_curvelist_free,
-    cagd_curvelist_get, cagd_curvelist_interval,
+    CagdCurve, CagdCurveList, CagdCurveListSizes, cagd_curve_degree, cagd_curve_dim,
+    cagd_curve_elevate, cagd_curve_eval, cagd_curve_eval_many, cagd_curve_free,
+    cagd_curve_is_rational, cagd_curve_new, cagd_curve_new_rational, cagd_curve_points,
+    cagd_curve_segment, cagd_curve_subdivide, cagd_curve_weights, cagd_curvelist_bound,
+    cagd_curvelist_copy, cagd_curvelist_count, cagd_curvelist_free, cagd_curvelist_get,
+    cagd_curvelist_interval,
+};
+pub use flat::{
+    CagdBatchLayout, CagdBezierReport, cagd_bezier_elevate, cagd_bezier_elevate_batch,
+    cagd_bezier_reduce, cagd_bezier_reduce_batch,
 };
 pub use implicit::{
     CAGD_INTERSECTION_STRIDE, CagdImplicit, cagd_curve_implicitize, cagd_curve_intersect,
@@ -182,9 +199,10 @@ pub use options::{
     CagdReduceOptions, CagdSplineStrategy,
 };
 pub use patch::{
-    CagdTensorPatchList, CagdTriPatchList, cagd_report_patch, cagd_tensorpatch_reduce,
-    cagd_tensorpatch_reduce_to_tolerance, cagd_tensorpatchlist_count, cagd_tensorpatchlist_free,
-    cagd_tensorpatchlist_get, cagd_tripatch_reduce, cagd_tripatch_reduce_to_tolerance,
+    CagdPatchListSizes, CagdTensorPatchList, CagdTriPatchList, cagd_report_patch,
+    cagd_tensorpatch_reduce, cagd_tensorpatch_reduce_to_tolerance, cagd_tensorpatchlist_copy,
+    cagd_tensorpatchlist_count, cagd_tensorpatchlist_free, cagd_tensorpatchlist_get,
+    cagd_tripatch_reduce, cagd_tripatch_reduce_to_tolerance, cagd_tripatchlist_copy,
     cagd_tripatchlist_count, cagd_tripatchlist_free, cagd_tripatchlist_get,
 };
 pub use rational_to_polynomial::{cagd_bspline_to_polynomial, cagd_bsplinesurface_to_polynomial};
@@ -211,9 +229,9 @@ pub use tripatch::{
 };
 pub use version::{CAGD_VERSION_MAJOR, CAGD_VERSION_MINOR, CAGD_VERSION_PATCH};
 pub use wsgb::{
-    CagdWsgbCurve, CagdWsgbCurveList, CagdWsgbMethod, CagdWsgbReport, cagd_wsgb_elevate,
-    cagd_wsgb_eval, cagd_wsgb_free, cagd_wsgb_from_bezier, cagd_wsgb_leading_coefficient,
-    cagd_wsgb_new, cagd_wsgb_points, cagd_wsgb_reduce, cagd_wsgb_reduce_to_tolerance,
-    cagd_wsgb_shape, cagd_wsgb_to_bezier, cagd_wsgblist_count, cagd_wsgblist_free,
-    cagd_wsgblist_get,
+    CagdWsgbCurve, CagdWsgbCurveList, CagdWsgbListSizes, CagdWsgbMethod, CagdWsgbReport,
+    cagd_wsgb_elevate, cagd_wsgb_eval, cagd_wsgb_free, cagd_wsgb_from_bezier,
+    cagd_wsgb_leading_coefficient, cagd_wsgb_new, cagd_wsgb_points, cagd_wsgb_reduce,
+    cagd_wsgb_reduce_to_tolerance, cagd_wsgb_shape, cagd_wsgb_to_bezier, cagd_wsgblist_copy,
+    cagd_wsgblist_count, cagd_wsgblist_free, cagd_wsgblist_get,
 };

@@ -148,6 +148,20 @@ c_tests![
     wsgb_paper_example,
     wsgb_bad_input,
     wsgb_reduce_to_tolerance,
+    // c/flat.c
+    flat_reduce_equals_handle,
+    flat_reduce_bad_input,
+    flat_elevate_equals_handle,
+    flat_elevate_bad_input,
+    // c/flat_batch.c
+    flat_batch_reduce_layouts,
+    flat_batch_elevate_layouts,
+    flat_batch_bad_input,
+    // c/copy_out.c
+    curvelist_copy,
+    bspline_copy,
+    patchlist_copy,
+    wsgblist_copy,
     // cpp/header_compiles.cpp
     cpp_header,
 ];

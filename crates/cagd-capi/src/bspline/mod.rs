@@ -5,12 +5,14 @@
 //! `surface.rs`.
 
 mod arrays;
+mod copy;
 mod merge;
 mod ops;
 mod reduce;
 mod surface;
 
 pub use arrays::{cagd_bspline_knots, cagd_bspline_points, cagd_bspline_weights};
+pub use copy::{CagdBSplineSizes, cagd_bspline_copy};
 pub use merge::cagd_bspline_from_beziers;
 pub use ops::{
     cagd_bspline_derivatives, cagd_bspline_eval, cagd_bspline_insert_knot, cagd_bspline_to_beziers,

@@ -1,14 +1,17 @@
 //! `CagdCurve`: Bézier curves (polynomial or rational) — creation, read-back, release.
 //! The operations (evaluation, elevation, subdivision) are in `ops.rs`, the piecewise result
-//! `CagdCurveList` in `list.rs`; the reductions are in `reduce/`.
+//! `CagdCurveList` in `list.rs` (its one-call copy in `list_copy.rs`); the reductions are in
+//! `reduce/`.
 
 mod list;
+mod list_copy;
 mod ops;
 
 pub use list::{
     CagdCurveList, cagd_curvelist_bound, cagd_curvelist_count, cagd_curvelist_free,
     cagd_curvelist_get, cagd_curvelist_interval,
 };
+pub use list_copy::{CagdCurveListSizes, cagd_curvelist_copy};
 pub use ops::{
     cagd_curve_elevate, cagd_curve_eval, cagd_curve_eval_many, cagd_curve_segment,
     cagd_curve_subdivide,

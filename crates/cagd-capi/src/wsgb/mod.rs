@@ -8,12 +8,14 @@
 //! reductions); the Bézier operations apply through `cagd_wsgb_to_bezier`.
 
 mod list;
+mod list_copy;
 mod reduce;
 
 pub use list::{
     CagdWsgbCurveList, cagd_wsgb_reduce_to_tolerance, cagd_wsgblist_count, cagd_wsgblist_free,
     cagd_wsgblist_get,
 };
+pub use list_copy::{CagdWsgbListSizes, cagd_wsgblist_copy};
 pub use reduce::{CagdWsgbMethod, CagdWsgbReport, cagd_wsgb_reduce};
 
 use cagd_core::{WsgbCurve, check_finite_param};

@@ -10,8 +10,8 @@ pub(crate) const USAGE: &str = "\
 usage:
   cagd reduce --to M[,N] [--method NAME] [--r R] [--p P] [--tol T] [--continuity K]
               [--merge exact|lossy] [--strategy fit|segments|piegl-tiller-1995]
-              [--containment-degree N] [-i FILE] [-o FILE] [--svg FILE]
-  cagd reduce --polynomial --tol T [--to M[,N]] [-i FILE] [-o FILE] [--svg FILE]
+              [--containment-degree N] [--threads N] [-i FILE] [-o FILE] [--svg FILE]
+  cagd reduce --polynomial --tol T [--to M[,N]] [--threads N] [-i FILE] [-o FILE] [--svg FILE]
   cagd merge [--continuity K] [--tol T] [-i FILE] [-o FILE]
   cagd convert --to bezier|nurbs [--standard-form] [--tol T] [-i FILE] [-o FILE] [--svg FILE]
   cagd convert (--to rectangle|rectangles3|triangles|triangle [--inner U,V] [--edges G,K,H]
@@ -26,7 +26,8 @@ usage:
 reduce reads one JSON object or an array of objects (stdin by default) and writes JSON
 (stdout by default). Methods: forrest, farin, piegl, perturbation, perturbation-g1, pinv,
 pinv-ends, chebyshev (with --r/--p), eck, watkins-worsey, bogacki, l2 (with --r/--p).
---tol T turns on reduction to a tolerance (pieces within T, joined with C^K, K from
+--threads N reduces the objects of an array on N threads (0 or 1: one; the output is the
+same). --tol T turns on reduction to a tolerance (pieces within T, joined with C^K, K from
 --continuity). --to M,N gives a tensor patch's or B-spline surface's target degrees
 (--to M means M in both). A B-spline with uniform knots and no --tol goes through seed
 001's matrix pipeline, its segments merged exactly (--merge exact, multiple knots) or by
@@ -123,7 +124,13 @@ pub(crate) struct ReduceArgs {
     /// `--polynomial`: rational to polynomial within `--tol`; `to == (0, None)` when `--to`
     /// is not given (the input's degree).
     pub(crate) polynomial: bool,
+    /// `--threads N`: the input objects are reduced on `N` threads (0 or 1: one; at most
+    /// [`MAX_THREADS`]). The output does not depend on it.
+    pub(crate) threads: usize,
 }
+
+/// The largest `--threads` accepted.
+pub(crate) const MAX_THREADS: usize = 256;
 
 impl ReduceArgs {
     /// The `--strategy` of a B-spline reduction to a tolerance: as given, else `segments`
@@ -355,6 +362,7 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
                 strategy: None,
                 containment_degree: None,
                 polynomial: false,
+                threads: 0,
             };
             let mut have_to = false;
             while let Some(a) = it.next() {
@@ -389,6 +397,15 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
                         }
                     }
                     "--polynomial" => r.polynomial = true,
+                    "--threads" => {
+                        r.threads = parse_num(value(&mut it, a)?, a)?;
+                        if r.threads > MAX_THREADS {
+                            return Err(format!(
+                                "--threads: {} is above the maximum {MAX_THREADS}",
+                                r.threads
+                            ));
+                        }
+                    }
                     other => return Err(format!("reduce: unknown argument {other:?}")),
                 }
             }

@@ -8,6 +8,7 @@ pub(crate) mod patch;
 mod polynomial;
 mod spline;
 mod surface;
+mod threads;
 pub(crate) mod wsgb;
 
 pub(crate) use curve::{piecewise_report_json, reduce_curve, report_json};
@@ -222,12 +223,12 @@ pub(crate) fn command(args: &ReduceArgs) -> ExitCode {
             }
         }
     }
-    let run = if args.polynomial {
+    let run: threads::Run = if args.polynomial {
         polynomial::run
     } else {
         run
     };
-    let results = match run(&shapes, args) {
+    let results = match threads::run_on_threads(run, &shapes, args) {
         Ok(r) => r,
         Err(f) => {
             eprintln!("cagd: {}: {}", f.path, f.message);

@@ -1,0 +1,277 @@
+//! The handle-free C entry points against the handle API, and the batch calls on 1 and 2
+//! threads (issue 17). Besides criterion's report, prints the median (15 runs) per call or
+//! per curve and its ratio to a plain copy of the same input and output bytes
+//! (measured interleaved with the variants), so that figures compare across machines.
+//!
+//! Run: `cargo bench -p cagd-capi --bench flat -- --warm-up-time 1 --measurement-time 3`.
+//!
+//! - single curve, 3-D, L2 with interpolated ends (`cagd_reduce_options_init`'s default),
+//!   5 -> 4 and 10 -> 5: the handle call (`cagd_curve_new`, `cagd_curve_reduce`,
+//!   `cagd_curve_points`, `cagd_report_bound`, two frees), `cagd_bezier_reduce` with a
+//!   report (the same work, certified bound included, no handles), and without one (points
+//!   only);
+//! - batches of 100 000 random 3-D curves, both layouts, `n_threads` 1 and 2:
+//!   `cagd_bezier_reduce_batch` 10 -> 5 and `cagd_bezier_elevate_batch` 5 -> 8.
+
+//!
+//! Figures of one run (2 cores shared with five other builds, load average 11-13, so
+//! absolute times are inflated and the thread speed-up is bounded by the load, not by the
+//! code; median of interleaved rounds):
+//!
+//! ```text
+//! single ( 5,  4): handle 7012.8 ns/call | flat+report 6559.9 ns/call (0.94x handle)
+//!                  | flat points only 134.9 ns/call (0.019x handle, 22.1x copy) | copy 6.1 ns
+//! single (10,  5): handle 11175.6 ns/call | flat+report 12610.5 ns/call (1.13x handle)
+//!                  | flat points only 166.8 ns/call (0.015x handle, 16.9x copy) | copy 9.8 ns
+//! batch reduce_10_5 curve-major: 1 thread 598.8 ns/curve (3.34x copy), 2 threads 425.4
+//!                  ns/curve (2.37x copy), speed-up 1.41
+//! batch reduce_10_5 point-major: 1 thread 541.9 ns/curve (3.78x copy), 2 threads 537.4
+//!                  ns/curve (3.75x copy), speed-up 1.01
+//! batch elevate_5_8 curve-major: 1 thread 439.3 ns/curve (3.56x copy), 2 threads 351.2
+//!                  ns/curve (2.84x copy), speed-up 1.25
+//! batch elevate_5_8 point-major: 1 thread 367.2 ns/curve (4.38x copy), 2 threads 350.0
+//!                  ns/curve (4.17x copy), speed-up 1.05
+//! ```
+//!
+//! The handle and the flat call with a report cost the same: both are the certified bound
+//! (95-99 % of the time; its cost is cagd-reduce's, issue 17's per-curve work). Without a
+//! report the flat call is the reduction alone, 50-80x faster than the handle route.
+
+#![allow(unsafe_code, reason = "the benchmark calls the C ABI")]
+
+use std::hint::black_box;
+use std::ptr::{null, null_mut};
+
+use cagd_capi::*;
+use cagd_testkit::bench::random_input;
+use criterion::{Criterion, criterion_group, criterion_main};
+
+const DIM: usize = 3;
+/// Calls per timed run of the single-curve benchmarks (a call is far below the timer's
+/// resolution).
+const REPS: usize = 2000;
+const N_CURVES: usize = 100_000;
+
+/// Median wall times (ns) of `fs`, measured in `rounds` interleaved rounds (one run of each
+/// per round, after one warm-up run each), so that a change of machine load during the
+/// measurement affects every variant alike.
+fn interleaved(rounds: usize, fs: &mut [&mut dyn FnMut()]) -> Vec<f64> {
+    for f in fs.iter_mut() {
+        f();
+    }
+    let mut t = vec![Vec::with_capacity(rounds); fs.len()];
+    for _ in 0..rounds {
+        for (f, ti) in fs.iter_mut().zip(&mut t) {
+            let s = std::time::Instant::now();
+            f();
+            ti.push(s.elapsed().as_secs_f64() * 1e9);
+        }
+    }
+    t.into_iter()
+        .map(|mut v| {
+            v.sort_by(f64::total_cmp);
+            v[v.len() / 2]
+        })
+        .collect()
+}
+
+fn options(target: usize) -> CagdReduceOptions {
+    let mut o = CagdReduceOptions::default();
+    // SAFETY: a valid, writable struct.
+    assert_eq!(unsafe { cagd_reduce_options_init(&mut o) }, CagdStatus::OK);
+    o.target = target;
+    o
+}
+
+/// The handle route: create, reduce, read back points and bound, free.
+fn handle_call(pts: &[f64], o: &CagdReduceOptions, out: &mut [f64]) -> f64 {
+    let (mut c, mut q, mut rep) = (null_mut(), null_mut(), null_mut());
+    let (mut needed, mut bound) = (0, 0.0);
+    // SAFETY: valid pointers of the documented sizes; every handle is freed once.
+    unsafe {
+        assert_eq!(
+            cagd_curve_new(pts.as_ptr(), pts.len() / DIM, DIM, &mut c),
+            CagdStatus::OK
+        );
+        assert_eq!(cagd_curve_reduce(c, o, &mut q, &mut rep), CagdStatus::OK);
+        cagd_curve_points(q, out.as_mut_ptr(), out.len(), &mut needed);
+        cagd_report_bound(rep, &mut bound);
+        cagd_report_free(rep);
+        cagd_curve_free(q);
+        cagd_curve_free(c);
+    }
+    bound
+}
+
+/// The flat route, with or without the report.
+fn flat_call(pts: &[f64], o: &CagdReduceOptions, out: &mut [f64], report: bool) -> f64 {
+    let mut r = CagdBezierReport {
+        struct_size: size_of::<CagdBezierReport>(),
+        method: 0,
+        space: 0,
+        degree_from: 0,
+        degree_to: 0,
+        bound: 0.0,
+        max_error: 0.0,
+        homogeneous_bound: 0.0,
+    };
+    let rp = if report { &raw mut r } else { null_mut() };
+    let mut needed = 0;
+    // SAFETY: valid pointers of the documented sizes.
+    let s = unsafe {
+        cagd_bezier_reduce(
+            pts.as_ptr(),
+            pts.len() / DIM,
+            DIM,
+            null(),
+            o,
+            out.as_mut_ptr(),
+            out.len(),
+            &mut needed,
+            null_mut(),
+            0,
+            rp,
+        )
+    };
+    assert_eq!(s, CagdStatus::OK);
+    r.bound
+}
+
+fn single(c: &mut Criterion) {
+    for (n, m) in [(5usize, 4usize), (10, 5)] {
+        let pts = random_input((n + 1) * DIM, 1);
+        let o = options(m);
+        let mut out = vec![0.0; (m + 1) * DIM];
+        let mut group = c.benchmark_group(format!("single_n{n}_m{m}"));
+        group.bench_function("handle", |b| {
+            b.iter(|| handle_call(black_box(&pts), &o, &mut out))
+        });
+        group.bench_function("flat_report", |b| {
+            b.iter(|| flat_call(black_box(&pts), &o, &mut out, true))
+        });
+        group.bench_function("flat_points_only", |b| {
+            b.iter(|| flat_call(black_box(&pts), &o, &mut out, false))
+        });
+        group.finish();
+        let (mut o1, mut o2, mut o3) = (out.clone(), out.clone(), out.clone());
+        let mut scratch = [0.0; 64];
+        let t = interleaved(
+            31,
+            &mut [
+                &mut || {
+                    for _ in 0..REPS {
+                        black_box(handle_call(black_box(&pts), &o, &mut o1));
+                    }
+                },
+                &mut || {
+                    for _ in 0..REPS {
+                        black_box(flat_call(black_box(&pts), &o, &mut o2, true));
+                    }
+                },
+                &mut || {
+                    for _ in 0..REPS {
+                        black_box(flat_call(black_box(&pts), &o, &mut o3, false));
+                    }
+                },
+                &mut || {
+                    for _ in 0..REPS {
+                        let k = pts.len();
+                        scratch[..k].copy_from_slice(black_box(&pts));
+                        scratch[k..k + out.len()].copy_from_slice(black_box(&out));
+                        black_box(&scratch);
+                    }
+                },
+            ],
+        );
+        let [t_handle, t_flat, t_points, t_copy] =
+            [t[0], t[1], t[2], t[3]].map(|x| x / REPS as f64);
+        println!(
+            "single ({n:2}, {m:2}): handle {t_handle:8.1} ns/call | flat+report {t_flat:8.1} \
+             ns/call ({:.2}x handle) | flat points only {t_points:7.1} ns/call ({:.3}x handle, \
+             {:.1}x copy) | copy {t_copy:5.1} ns",
+            t_flat / t_handle,
+            t_points / t_handle,
+            t_points / t_copy
+        );
+    }
+}
+
+/// One batch call (reduce with `opts`, or elevate by `r`).
+fn batch_call(
+    input: &[f64],
+    n: usize,
+    layout: CagdBatchLayout,
+    what: Result<&CagdReduceOptions, usize>,
+    threads: usize,
+    out: &mut [f64],
+) {
+    let mut needed = 0;
+    let (p, k, l) = (input.as_ptr(), N_CURVES, layout as i32);
+    let (o, cap) = (out.as_mut_ptr(), out.len());
+    // SAFETY: valid pointers of the documented sizes.
+    let s = unsafe {
+        match what {
+            Ok(opts) => {
+                cagd_bezier_reduce_batch(p, k, n, DIM, l, opts, threads, o, cap, &mut needed)
+            }
+            Err(r) => cagd_bezier_elevate_batch(p, k, n, DIM, l, r, threads, o, cap, &mut needed),
+        }
+    };
+    assert_eq!(s, CagdStatus::OK);
+}
+
+fn batches(c: &mut Criterion) {
+    let o = options(5);
+    let cases: [(&str, usize, usize, Result<&CagdReduceOptions, usize>); 2] = [
+        ("reduce_10_5", 10, 6, Ok(&o)),
+        ("elevate_5_8", 5, 9, Err(3)),
+    ];
+    for (name, n, m1, what) in cases {
+        let input = random_input(N_CURVES * (n + 1) * DIM, 2);
+        let mut out = vec![0.0; N_CURVES * m1 * DIM];
+        let mut group = c.benchmark_group(format!("batch_{name}"));
+        group.sample_size(10);
+        for layout in [
+            CagdBatchLayout::LAYOUT_CURVE_MAJOR,
+            CagdBatchLayout::LAYOUT_POINT_MAJOR,
+        ] {
+            for threads in [1usize, 2] {
+                let label = format!("{layout:?}_threads{threads}");
+                group.bench_function(&label, |b| {
+                    b.iter(|| batch_call(black_box(&input), n, layout, what, threads, &mut out))
+                });
+            }
+            // 1 thread, 2 threads and the copy, interleaved.
+            let (mut out2, mut copy_in, mut copy_out, zeros) = (
+                out.clone(),
+                vec![0.0; input.len()],
+                vec![0.0; out.len()],
+                vec![0.0; out.len()],
+            );
+            let t = interleaved(
+                15,
+                &mut [
+                    &mut || batch_call(black_box(&input), n, layout, what, 1, &mut out),
+                    &mut || batch_call(black_box(&input), n, layout, what, 2, &mut out2),
+                    &mut || {
+                        copy_in.copy_from_slice(black_box(&input));
+                        copy_out.copy_from_slice(black_box(&zeros));
+                        black_box((&copy_in, &copy_out));
+                    },
+                ],
+            );
+            let [t1, t2, tc] = [t[0], t[1], t[2]].map(|x| x / N_CURVES as f64);
+            println!(
+                "batch {name} {layout:?}: 1 thread {t1:6.2} ns/curve ({:.2}x copy), 2 threads \
+                 {t2:6.2} ns/curve ({:.2}x copy), speed-up {:.2}; copy {tc:.2} ns/curve",
+                t1 / tc,
+                t2 / tc,
+                t1 / t2
+            );
+        }
+        group.finish();
+    }
+}
+
+criterion_group!(benches, single, batches);
+criterion_main!(benches);
