@@ -16,10 +16,12 @@
 //! every old point exactly except at the leftover equation, whose residual `eps` (Euclidean,
 //! working coordinates) bounds the change of the curve (partition of unity).
 
+use super::outer_knots::OuterKnots;
+
 /// The merged spline in working coordinates.
 #[derive(Debug)]
 pub(crate) struct Merged {
-    /// Full knot vector, clamped at both ends.
+    /// Full knot vector (clamped at both ends unless outer knots were given).
     pub(crate) knots: Vec<f64>,
     /// Working points, `pdim` coordinates each.
     pub(crate) work: Vec<f64>,
@@ -40,10 +42,18 @@ pub(crate) struct Merged {
 ///    would feed each joint's rounding into the next joint's extrapolation, and the
 ///    residuals grow geometrically with the number of joints at high degree (measured:
 ///    x50 per joint at degree 9).
-/// 2. With the knots known, control point `i` is the blossom `b(u_{i+1}, ..., u_{i+p})`
+/// 2. With the knots known (`outer`: the knots beyond the end breaks of an unclamped
+///    spline; `None` clamps both ends), control point `i` is the blossom `b(u_{i+1}, ..., u_{i+p})`
 ///    (Ramshaw) of the piece on one span of its support: the span where the de Casteljau
 ///    extrapolation, `prod_k (|1 - t_k| + |t_k|)` over the local arguments, is smallest.
-pub(crate) fn merge<L>(breaks: &[f64], p: usize, pdim: usize, tol: f64, load: L) -> Merged
+pub(crate) fn merge<L>(
+    breaks: &[f64],
+    p: usize,
+    pdim: usize,
+    tol: f64,
+    outer: Option<&OuterKnots>,
+    load: L,
+) -> Merged
 where
     L: Fn(usize, usize, &mut [f64]),
 {
@@ -90,13 +100,21 @@ where
     // 2. Knots, and the knot index of each piece's span.
     let mut knots = Vec::with_capacity((nseg + 1) * (p + 1));
     let mut span_of = Vec::with_capacity(nseg);
-    knots.extend(std::iter::repeat_n(breaks[0], p + 1));
+    match outer {
+        Some(o) => knots.extend_from_slice(&o.left),
+        None => knots.extend(std::iter::repeat_n(breaks[0], p)),
+    }
+    knots.push(breaks[0]);
     for j in 1..nseg {
         span_of.push(knots.len() - 1);
         knots.extend(std::iter::repeat_n(breaks[j], mults[j - 1]));
     }
     span_of.push(knots.len() - 1);
-    knots.extend(std::iter::repeat_n(breaks[nseg], p + 1));
+    knots.push(breaks[nseg]);
+    match outer {
+        Some(o) => knots.extend_from_slice(&o.right),
+        None => knots.extend(std::iter::repeat_n(breaks[nseg], p)),
+    }
     let n = knots.len() - p - 1;
     // 3. Control points by blossoming.
     let mut work = vec![0.0; n * pdim];
@@ -104,7 +122,8 @@ where
     let scratch = &mut right;
     let mut first_piece = 0;
     for i in 0..n {
-        while span_of[first_piece] < i {
+        // (Past the last span, an unclamped end's last points: blossoms of the last piece.)
+        while first_piece + 1 < nseg && span_of[first_piece] < i {
             first_piece += 1;
         }
         // The span of the support where the de Casteljau extrapolation is smallest: the

@@ -8,6 +8,7 @@ pub(crate) mod extract;
 mod extract_kernel;
 pub(crate) mod merge;
 mod merge_kernel;
+pub(crate) mod outer_knots;
 pub(crate) mod pieces;
 pub(crate) mod quadratic;
 pub(crate) mod span;
