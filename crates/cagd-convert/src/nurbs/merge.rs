@@ -35,10 +35,14 @@ pub struct NurbsFromPieces {
 
 /// The largest absolute working coordinate of the pieces (`max(|w x|, w)` when rational).
 pub(crate) fn working_scale(points: &[f64], weights: Option<&[f64]>, dim: usize) -> f64 {
+    // `if a > m` rather than `f64::max`: the values are finite (validated), and the plain
+    // comparison vectorises.
+    let bigger = |m: f64, a: f64| if a > m { a } else { m };
     match weights {
-        None => points.iter().fold(0.0f64, |m, x| m.max(x.abs())),
+        None => points.iter().fold(0.0f64, |m, x| bigger(m, x.abs())),
         Some(w) => points.chunks_exact(dim).zip(w).fold(0.0f64, |m, (p, wi)| {
-            p.iter().fold(m.max(*wi), |m, x| m.max((x * wi).abs()))
+            p.iter()
+                .fold(bigger(m, *wi), |m, x| bigger(m, (x * wi).abs()))
         }),
     }
 }

@@ -14,6 +14,7 @@ pub(crate) mod quadratic;
 pub(crate) mod span;
 pub(crate) mod standard_form;
 pub(crate) mod surface;
+mod width;
 
 #[cfg(test)]
 mod tests;
