@@ -164,21 +164,23 @@ where
             *t = (x - a) * inv;
         }
         // de Casteljau with the arguments, level after level, between two buffers (the
-        // first level reads the piece): out of place, so that each level vectorises.
+        // first level reads the piece itself): out of place, so that each level
+        // vectorises.
         let (mut from, mut to): (&mut [f64], &mut [f64]) = (scratch, &mut other);
-        from.copy_from_slice(piece(k));
+        let mut src: &[f64] = piece(k);
         for (lvl, &t) in args.iter().enumerate() {
             let u = 1.0 - t;
             let len = (p - lvl) * pdim;
             for (o, (x, y)) in to[..len]
                 .iter_mut()
-                .zip(from[..len].iter().zip(&from[pdim..len + pdim]))
+                .zip(src[..len].iter().zip(&src[pdim..len + pdim]))
             {
                 *o = u * x + t * y;
             }
             std::mem::swap(&mut from, &mut to);
+            src = from;
         }
-        work[i * pdim..(i + 1) * pdim].copy_from_slice(&from[..pdim]);
+        work[i * pdim..(i + 1) * pdim].copy_from_slice(&src[..pdim]);
     }
     // 4. The certificate: extract the merged spline again and compare.
     let mut worst2 = 0.0f64;
