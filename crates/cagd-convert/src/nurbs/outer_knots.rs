@@ -11,7 +11,7 @@ use cagd_core::{Error, Result};
 /// where `left` is every knot before the last copy of `a` and `right` every knot after the
 /// first copy of `b`. A clamped spline has `left = [a; p]`, `right = [b; p]`.
 ///
-/// Invariants (checked by [`OuterKnots::new`]): both have at least `p` knots, are finite
+/// Invariants (checked by [`crate::BezierPieces::with_outer_knots`]): both have at least `p` knots, are finite
 /// and non-decreasing, `left <= a`, `right >= b`; the knots of `left` from index `p` on
 /// (and of `right` up to `right.len() - p`) equal `a` (`b`), so that the domain of the
 /// spline is `[a, b]`; `a` and `b` keep multiplicity `<= p + 1`.
