@@ -18,3 +18,5 @@ mod width;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_outer_knots;
