@@ -101,6 +101,16 @@
 #define CAGD_TRIM_KEEP_ABOVE 1
 
 /**
+ * `side` of `cagd_bspline_outer_knots`: the knots before the last copy of the first break.
+ */
+#define CAGD_SIDE_LEFT 0
+
+/**
+ * `side` of `cagd_bspline_outer_knots`: the knots after the first copy of the last break.
+ */
+#define CAGD_SIDE_RIGHT 1
+
+/**
  * Doubles per intersection in the output of `cagd_curve_intersect`.
  */
 #define CAGD_INTERSECTION_STRIDE 5
@@ -2224,7 +2234,8 @@ CagdStatus cagd_bspline_to_bezier_pieces(const struct CagdBSpline *spline,
  * joint (cagd-convert `pieces_to_nurbs`: each joint's knot copies removed while the
  * certified residual stays within `tol`, control points by blossoms, certified by
  * re-extraction). The reverse of `cagd_bspline_to_bezier_pieces`: a clamped spline comes
- * back with its knot vector.
+ * back with its knot vector (an unclamped one comes back clamped, the same curve; give its
+ * outer knots to `cagd_curvelist_to_bspline_unclamped` to get its knot vector back).
  *
  * Parameters:
  * - `list` (in): the pieces, e.g. from `cagd_bspline_to_bezier_pieces`; piece `i + 1`
@@ -2679,6 +2690,153 @@ CagdStatus cagd_tensorpatch_to_triangle(const struct CagdTensorPatch *patch,
                                         const double *weights,
                                         double tol,
                                         struct CagdPatchPieceList **list_out);
+
+/**
+ * Every non-empty span rectangle of a B-spline / NURBS surface as a (rational) tensor
+ * Bézier patch of the surface's degrees (Böhm knot insertion in homogeneous space, in `u`
+ * on whole rows, then in `v`; clamped or unclamped knots).
+ *
+ * The list holds `n_u * n_v` pieces, `u` spans outer and `v` spans inner (piece
+ * `iu * n_v + jv` covers `[u_iu, u_iu+1] x [v_jv, v_jv+1]` of the distinct knot values),
+ * each of kind `CAGD_PIECE_TENSOR`, rational iff the surface is, with domain kind
+ * `CAGD_DOMAIN_BILINEAR` whose 8 doubles are the rectangle's corners `(u0, v0), (u1, v0),
+ * (u0, v1), (u1, v1)`: the piece's `(s, t)` is the surface's
+ * `(u0 + s (u1 - u0), v0 + t (v1 - v0))`. Read them with `cagd_patchpiecelist_*`.
+ *
+ * Parameters:
+ * - `surface` (in): the surface.
+ * - `list_out` (out): on `CAGD_OK`, the pieces (release with `cagd_patchpiecelist_free`).
+ *   Not written on failure.
+ *
+ * Returns:
+ * - `CAGD_OK`.
+ * - `CAGD_ERR_NULL_POINTER`: `surface` or `list_out` is NULL.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a misaligned pointer.
+ * - `CAGD_ERR_NON_FINITE`, `CAGD_ERR_NON_POSITIVE_WEIGHT`: a piece overflows.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `surface` must be NULL or a live surface handle; `list_out` NULL or writable.
+ */
+CagdStatus cagd_bsplinesurface_to_bezier_patches(const struct CagdBSplineSurface *surface,
+                                                 struct CagdPatchPieceList **list_out);
+
+/**
+ * Merges tensor Bézier patches on a full rectangular grid into one B-spline / NURBS
+ * surface with the highest continuity across each knot line that every row (column) of
+ * patches has (cagd-convert `patches_to_nurbs`: the curve merge on bundles of rows, knot
+ * copies removed while the certified residual stays within `tol`, control points by
+ * blossoms). The reverse of `cagd_bsplinesurface_to_bezier_patches`: a clamped surface
+ * comes back with its knot vectors and its net (unclamped knots come back clamped, the
+ * same surface).
+ *
+ * Parameters:
+ * - `list` (in): tensor pieces of one degree `(p, q)` and dimension, polynomial or
+ *   rational (if any piece is rational the surface is; a polynomial piece counts with
+ *   weights 1), in the order and with the domains `cagd_bsplinesurface_to_bezier_patches`
+ *   gives: `u` outer, `v` inner, each domain `CAGD_DOMAIN_BILINEAR` with the corners of an
+ *   axis-parallel rectangle `(u0, v0), (u1, v0), (u0, v1), (u1, v1)`, the rectangles
+ *   tiling a grid.
+ * - `tol` (in): the joint tolerance in working coordinates (homogeneous `(w x, w)` when
+ *   rational), finite and `> 0`, or exactly 0 for the default rounding level (`1e-12`
+ *   times the largest working coordinate).
+ * - `surface_out` (out): on `CAGD_OK`, the surface (release with
+ *   `cagd_bsplinesurface_free`). Not written on failure.
+ * - `bound_out` (out, may be NULL): on `CAGD_OK`, a certified bound of the distance
+ *   between the surface and the patches, working coordinates.
+ *
+ * Returns:
+ * - `CAGD_OK`.
+ * - `CAGD_ERR_NULL_POINTER`: `list` or `surface_out` is NULL.
+ * - `CAGD_ERR_NOT_ENOUGH_POINTS`: the list is empty.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `tol` negative, NaN or infinite; a triangular piece; a
+ *   domain that is not an axis-parallel rectangle; rectangles that do not tile a grid in
+ *   the order above, or non-increasing breaks; a misaligned pointer.
+ * - `CAGD_ERR_DIMENSION_MISMATCH`: pieces of differing degrees or dimensions, or a count
+ *   that is not a full grid.
+ * - `CAGD_ERR_NON_FINITE`, `CAGD_ERR_NON_POSITIVE_WEIGHT`: the result overflows.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; `surface_out` NULL or writable; `bound_out`
+ * NULL or writable.
+ */
+CagdStatus cagd_patchpiecelist_to_bsplinesurface(const struct CagdPatchPieceList *list,
+                                                 double tol,
+                                                 struct CagdBSplineSurface **surface_out,
+                                                 double *bound_out);
+
+/**
+ * Copies the outer knots of one side of a spline: with `side == CAGD_SIDE_LEFT` the knots
+ * before the last copy of the first break (the start of the domain), with
+ * `CAGD_SIDE_RIGHT` those after the first copy of the last break. A clamped spline of
+ * degree `p` has `p` copies of the break on each side; an unclamped one has its own
+ * knots there. These are what `cagd_curvelist_to_bspline_unclamped` needs to rebuild the
+ * spline's knot vector from its pieces.
+ *
+ * Parameters:
+ * - `spline` (in): the spline.
+ * - `side` (in): `CAGD_SIDE_LEFT` or `CAGD_SIDE_RIGHT`.
+ * - `out` (out): `out_cap` doubles; may be NULL when `out_cap == 0` (size query).
+ * - `out_needed` (out): the number of knots of that side (at least the degree), also
+ *   written on `CAGD_ERR_BUFFER_TOO_SMALL`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the knots are in `out[0 .. *out_needed]`, non-decreasing.
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < *out_needed`; `out` untouched.
+ * - `CAGD_ERR_NULL_POINTER`: `spline` or `out_needed` is NULL, or `out` is NULL with
+ *   `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `side` is neither constant; a misaligned pointer.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `spline` must be NULL or a live spline handle; `out` NULL or `out_cap` writable
+ * doubles; `out_needed` NULL or writable.
+ */
+CagdStatus cagd_bspline_outer_knots(const struct CagdBSpline *spline,
+                                    int32_t side,
+                                    double *out,
+                                    size_t out_cap,
+                                    size_t *out_needed);
+
+/**
+ * As `cagd_curvelist_to_bspline`, for the pieces of an unclamped spline: the merged
+ * spline's knot vector is `left ++ [first break] ++ (interior knots found) ++ [last break]
+ * ++ right`, so that the pieces of a spline, merged with its outer knots from
+ * `cagd_bspline_outer_knots`, give back its knot vector and its curve (cagd-convert
+ * `BezierPieces::with_outer_knots` then `pieces_to_nurbs`). The points beyond the domain
+ * are blossoms of the end pieces.
+ *
+ * Parameters:
+ * - `list` (in): the pieces (consecutive intervals, one degree `p` and dimension).
+ * - `tol` (in): the joint tolerance, as for `cagd_curvelist_to_bspline` (0: default).
+ * - `left`, `n_left` (in): the knots before the last copy of the first break, `n_left >=
+ *   p`, non-decreasing, `<= ` the first break; those from index `p` on equal the first
+ *   break, which keeps multiplicity `<= p + 1`. Borrowed.
+ * - `right`, `n_right` (in): the knots after the first copy of the last break, mirrored
+ *   rules. Borrowed.
+ * - `spline_out` (out): on `CAGD_OK`, the spline (release with `cagd_bspline_free`).
+ *
+ * Returns:
+ * - `CAGD_OK`.
+ * - `CAGD_ERR_NULL_POINTER`: `list`, `left`, `right` or `spline_out` is NULL.
+ * - `CAGD_ERR_BAD_KNOTS`: the outer knots break a rule above (the message names the side,
+ *   the knot and the rule).
+ * - `CAGD_ERR_INVALID_ARGUMENT`, `CAGD_ERR_DIMENSION_MISMATCH`, `CAGD_ERR_NON_FINITE`,
+ *   `CAGD_ERR_NON_POSITIVE_WEIGHT`: as for `cagd_curvelist_to_bspline`.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `list` must be NULL or a live list handle; `left` NULL or `n_left` readable doubles,
+ * `right` NULL or `n_right`; `spline_out` NULL or writable.
+ */
+CagdStatus cagd_curvelist_to_bspline_unclamped(const struct CagdCurveList *list,
+                                               double tol,
+                                               const double *left,
+                                               size_t n_left,
+                                               const double *right,
+                                               size_t n_right,
+                                               struct CagdBSpline **spline_out);
 
 /**
  * Creates a polynomial Bézier curve of degree `n_points - 1`.

@@ -398,7 +398,8 @@ pub unsafe extern "C" fn cagd_bspline_to_bezier_pieces(
 /// joint (cagd-convert `pieces_to_nurbs`: each joint's knot copies removed while the
 /// certified residual stays within `tol`, control points by blossoms, certified by
 /// re-extraction). The reverse of `cagd_bspline_to_bezier_pieces`: a clamped spline comes
-/// back with its knot vector.
+/// back with its knot vector (an unclamped one comes back clamped, the same curve; give its
+/// outer knots to `cagd_curvelist_to_bspline_unclamped` to get its knot vector back).
 ///
 /// Parameters:
 /// - `list` (in): the pieces, e.g. from `cagd_bspline_to_bezier_pieces`; piece `i + 1`
@@ -430,33 +431,43 @@ pub unsafe extern "C" fn cagd_curvelist_to_bspline(
         let l = unsafe { handle_ref(list, "list") }?;
         // SAFETY: as above.
         let out = unsafe { out_ref(spline_out, "spline_out") }?;
-        let tol = if tol == 0.0 {
-            None
-        } else if tol.is_finite() && tol > 0.0 {
-            Some(tol)
-        } else {
-            return Err(Error::BadTolerance { value: tol }.into());
-        };
-        let mut breaks = Vec::with_capacity(l.0.len() + 1);
-        for (i, p) in l.0.iter().enumerate() {
-            if i > 0 && p.start != l.0[i - 1].end {
-                return Err(Failure::invalid(format!(
-                    "piece {i} starts at {} but piece {} ends at {}: the intervals must be \
-                     consecutive",
-                    p.start,
-                    i - 1,
-                    l.0[i - 1].end
-                )));
-            }
-            breaks.push(p.start);
-        }
-        breaks.push(l.0.last().map_or(0.0, |p| p.end));
-        let segs: Vec<_> = l.0.iter().map(|p| p.curve.clone()).collect();
-        let pieces = BezierPieces::from_segments(&segs, &breaks)?;
+        let tol = joint_tolerance(tol)?;
+        let pieces = list_pieces(l)?;
         let r = pieces_to_nurbs(&pieces, tol)?;
         *out = into_handle(CagdBSpline(r.curve));
         Ok(())
     })
+}
+
+/// The joint tolerance of the merges: 0 for the default (`None`), else finite and `> 0`.
+pub(crate) fn joint_tolerance(tol: f64) -> CResult<Option<f64>> {
+    if tol == 0.0 {
+        Ok(None)
+    } else if tol.is_finite() && tol > 0.0 {
+        Ok(Some(tol))
+    } else {
+        Err(Error::BadTolerance { value: tol }.into())
+    }
+}
+
+/// The pieces of a curve list (consecutive intervals) with their breaks.
+pub(crate) fn list_pieces(l: &CagdCurveList) -> CResult<BezierPieces> {
+    let mut breaks = Vec::with_capacity(l.0.len() + 1);
+    for (i, p) in l.0.iter().enumerate() {
+        if i > 0 && p.start != l.0[i - 1].end {
+            return Err(Failure::invalid(format!(
+                "piece {i} starts at {} but piece {} ends at {}: the intervals must be \
+                 consecutive",
+                p.start,
+                i - 1,
+                l.0[i - 1].end
+            )));
+        }
+        breaks.push(p.start);
+    }
+    breaks.push(l.0.last().map_or(0.0, |p| p.end));
+    let segs: Vec<_> = l.0.iter().map(|p| p.curve.clone()).collect();
+    Ok(BezierPieces::from_segments(&segs, &breaks)?)
 }
 
 /// The standard form of a rational Bézier curve: the Möbius reparametrisation with end

@@ -95,6 +95,10 @@ mod convert_patch;
 #[allow(unsafe_code, reason = "writes caller buffers through raw pointers")]
 mod copy_out;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod convert_surface;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
+mod convert_unclamped;
+#[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod curve;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod flat;
@@ -162,6 +166,12 @@ pub use convert_patch::{
     cagd_tensorpatch_split_line, cagd_tensorpatch_to_triangle, cagd_tensorpatch_to_triangles,
     cagd_tensorpatch_trim, cagd_tripatch_to_quad, cagd_tripatch_to_rect,
     cagd_tripatch_to_three_rects,
+};
+pub use convert_surface::{
+    cagd_bsplinesurface_to_bezier_patches, cagd_patchpiecelist_to_bsplinesurface,
+};
+pub use convert_unclamped::{
+    CAGD_SIDE_LEFT, CAGD_SIDE_RIGHT, cagd_bspline_outer_knots, cagd_curvelist_to_bspline_unclamped,
 };
 pub use curve::{
     CagdCurve, CagdCurveList, CagdCurveListSizes, cagd_curve_degree, cagd_curve_dim,

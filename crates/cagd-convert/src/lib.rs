@@ -41,6 +41,7 @@ pub use nurbs::biquadratic::{
 pub use nurbs::cubic::{bezier_to_cubic_span, cubic_span_to_bezier};
 pub use nurbs::extract::{span_to_bezier, to_bezier_pieces, to_bezier_pieces_into};
 pub use nurbs::merge::{DEFAULT_REL_TOL, NurbsFromPieces, pieces_to_nurbs};
+pub use nurbs::outer_knots::OuterKnots;
 pub use nurbs::pieces::BezierPieces;
 pub use nurbs::quadratic::{bezier_to_quadratic_span, quadratic_span_to_bezier};
 pub use nurbs::span::NurbsSpan;

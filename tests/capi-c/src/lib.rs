@@ -89,6 +89,9 @@ c_tests![
     convert_span_closed_forms,
     convert_biquadratic,
     convert_curve_round_trip,
+    // c/convert_surface.c
+    convert_unclamped_round_trip,
+    convert_surface_round_trip,
     // c/bspline_merge.c
     bspline_merge_001_exact,
     bspline_merge_c1_round_trip,

@@ -6,6 +6,7 @@ mod list;
 mod rectangle;
 mod triangle;
 
+pub(crate) use list::CPiece;
 pub use list::{
     CAGD_DOMAIN_BILINEAR, CAGD_DOMAIN_DEGENERATE_RECT, CAGD_DOMAIN_RULED, CAGD_DOMAIN_TRIANGLE,
     CAGD_PIECE_TENSOR, CAGD_PIECE_TRIANGLE, CagdPatchPieceList, cagd_patchpiecelist_count,

@@ -5,13 +5,16 @@
 use cagd_core::{BSplineCurve, BezierCurve, Result, check_knots};
 
 use super::extract_kernel::extract;
+use super::outer_knots::OuterKnots;
 use super::pieces::BezierPieces;
 use super::span::homogeneous;
 
 /// Every non-empty span of `curve` as a Bézier piece, rational when the curve is (the
 /// homogeneous points `(w P, w)` are subdivided, so the piece weights are positive), with
 /// the distinct knot values of the domain as breaks. Clamped or unclamped knots, any
-/// multiplicity up to `degree + 1`.
+/// multiplicity up to `degree + 1`; the knots of an unclamped curve beyond its domain are
+/// kept as [`BezierPieces::outer_knots`], so that [`crate::pieces_to_nurbs`] gives back
+/// the same knot vector.
 /// (SPEC-convert §15.3 recommendation: Bézier point `i` of a span is the blossom
 /// `b(t_n^(p-i), t_{n+1}^i)`; the closed forms of §15.1 / §15.3 are its p = 2, 3 cases.)
 ///
@@ -56,6 +59,7 @@ pub fn to_bezier_pieces_into(curve: &BSplineCurve, out: &mut BezierPieces) -> Re
     }
     out.degree = p;
     out.dim = dim;
+    out.outer = OuterKnots::of_knots(u, p, n);
     out.breaks.clear();
     out.breaks.reserve(spans + 1);
     out.points.clear();

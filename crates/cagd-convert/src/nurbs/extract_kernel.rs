@@ -11,15 +11,27 @@
 //! very first window is brought to the invariant by inserting `a` (only an unclamped start
 //! needs it). Every step is a convex combination: a relative error of a few `p` ulp.
 
+use super::width::{Width, with_width};
+
 /// Runs the extraction over the spline of degree `p` with knots `u` (`n + p + 1` of them,
 /// valid, domain of positive length) and `n` working points of `pdim` coordinates, which
 /// `load(i, out)` writes; `emit(a, b, window)` receives each non-empty span `[a, b]` in order
 /// with its `p + 1` Bézier working points.
-pub(crate) fn extract<L, E>(u: &[f64], p: usize, n: usize, pdim: usize, mut load: L, mut emit: E)
+pub(crate) fn extract<L, E>(u: &[f64], p: usize, n: usize, pdim: usize, load: L, emit: E)
 where
     L: FnMut(usize, &mut [f64]),
     E: FnMut(f64, f64, &[f64]),
 {
+    with_width!(pdim, extract_w(u, p, n, load, emit));
+}
+
+/// [`extract`] for the point width `w`.
+fn extract_w<L, E, W: Width>(u: &[f64], p: usize, n: usize, mut load: L, mut emit: E, w: W)
+where
+    L: FnMut(usize, &mut [f64]),
+    E: FnMut(f64, f64, &[f64]),
+{
+    let pdim = w.get();
     let len = (p + 1) * pdim;
     let mut win = vec![0.0; len];
     let mut next = vec![0.0; len];
@@ -31,7 +43,7 @@ where
     for i in 0..=p {
         load(s - p + i, &mut win[i * pdim..(i + 1) * pdim]);
     }
-    insert_start(u, p, s, pdim, &mut win);
+    insert_start(u, p, s, w, &mut win);
     loop {
         let (a, b) = (u[s], u[s + 1]);
         let mut mu = 1;
@@ -77,7 +89,8 @@ where
 /// Brings the first window (points `s-p..=s`) to the invariant: inserts `a = u_s` until
 /// its multiplicity is `p` (a no-op for a clamped start). After level `r` slot `j` holds
 /// the de Boor point `d_{j+r}^r`; the final window is the right edge `d_p^p, ..., d_p^0`.
-fn insert_start(u: &[f64], p: usize, s: usize, pdim: usize, win: &mut [f64]) {
+fn insert_start<W: Width>(u: &[f64], p: usize, s: usize, w: W, win: &mut [f64]) {
+    let pdim = w.get();
     let a = u[s];
     for r in 1..=p {
         for j in 0..=p - r {

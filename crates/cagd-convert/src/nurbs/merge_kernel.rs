@@ -16,10 +16,13 @@
 //! every old point exactly except at the leftover equation, whose residual `eps` (Euclidean,
 //! working coordinates) bounds the change of the curve (partition of unity).
 
+use super::outer_knots::OuterKnots;
+use super::width::{Width, with_width};
+
 /// The merged spline in working coordinates.
 #[derive(Debug)]
 pub(crate) struct Merged {
-    /// Full knot vector, clamped at both ends.
+    /// Full knot vector (clamped at both ends unless outer knots were given).
     pub(crate) knots: Vec<f64>,
     /// Working points, `pdim` coordinates each.
     pub(crate) work: Vec<f64>,
@@ -40,13 +43,37 @@ pub(crate) struct Merged {
 ///    would feed each joint's rounding into the next joint's extrapolation, and the
 ///    residuals grow geometrically with the number of joints at high degree (measured:
 ///    x50 per joint at degree 9).
-/// 2. With the knots known, control point `i` is the blossom `b(u_{i+1}, ..., u_{i+p})`
+/// 2. With the knots known (`outer`: the knots beyond the end breaks of an unclamped
+///    spline; `None` clamps both ends), control point `i` is the blossom `b(u_{i+1}, ..., u_{i+p})`
 ///    (Ramshaw) of the piece on one span of its support: the span where the de Casteljau
 ///    extrapolation, `prod_k (|1 - t_k| + |t_k|)` over the local arguments, is smallest.
-pub(crate) fn merge<L>(breaks: &[f64], p: usize, pdim: usize, tol: f64, load: L) -> Merged
+pub(crate) fn merge<L>(
+    breaks: &[f64],
+    p: usize,
+    pdim: usize,
+    tol: f64,
+    outer: Option<&OuterKnots>,
+    load: L,
+) -> Merged
 where
     L: Fn(usize, usize, &mut [f64]),
 {
+    with_width!(pdim, merge_w(breaks, p, tol, outer, load))
+}
+
+/// [`merge`] for the point width `w`.
+fn merge_w<L, W: Width>(
+    breaks: &[f64],
+    p: usize,
+    tol: f64,
+    outer: Option<&OuterKnots>,
+    load: L,
+    w: W,
+) -> Merged
+where
+    L: Fn(usize, usize, &mut [f64]),
+{
+    let pdim = w.get();
     let nseg = breaks.len() - 1;
     let m = (p + 1) * pdim;
     // The working points of every piece, once (cheaper than loading a piece for each of
@@ -77,70 +104,83 @@ where
         }
         local[m..m + p * pdim].copy_from_slice(&right[pdim..]);
         let (hl, hr) = (breaks[j] - breaks[j - 1], breaks[j + 1] - breaks[j]);
-        let s = decide_joint(
-            &mut local,
-            p,
-            pdim,
-            hl / (hl + hr),
-            tol - 0.5 * gap,
-            &mut tmp,
-        );
+        let s = decide_joint(&mut local, p, w, hl / (hl + hr), tol - 0.5 * gap, &mut tmp);
         mults.push(s);
     }
     // 2. Knots, and the knot index of each piece's span.
     let mut knots = Vec::with_capacity((nseg + 1) * (p + 1));
     let mut span_of = Vec::with_capacity(nseg);
-    knots.extend(std::iter::repeat_n(breaks[0], p + 1));
+    match outer {
+        Some(o) => knots.extend_from_slice(&o.left),
+        None => knots.extend(std::iter::repeat_n(breaks[0], p)),
+    }
+    knots.push(breaks[0]);
     for j in 1..nseg {
         span_of.push(knots.len() - 1);
         knots.extend(std::iter::repeat_n(breaks[j], mults[j - 1]));
     }
     span_of.push(knots.len() - 1);
-    knots.extend(std::iter::repeat_n(breaks[nseg], p + 1));
+    knots.push(breaks[nseg]);
+    match outer {
+        Some(o) => knots.extend_from_slice(&o.right),
+        None => knots.extend(std::iter::repeat_n(breaks[nseg], p)),
+    }
     let n = knots.len() - p - 1;
     // 3. Control points by blossoming.
+    let inv_len: Vec<f64> = span_of
+        .iter()
+        .map(|&s| 1.0 / (knots[s + 1] - knots[s]))
+        .collect();
     let mut work = vec![0.0; n * pdim];
     let mut args = vec![0.0; p];
     let scratch = &mut right;
+    let mut other = vec![0.0; m];
     let mut first_piece = 0;
     for i in 0..n {
-        while span_of[first_piece] < i {
+        // (Past the last span, an unclamped end's last points: blossoms of the last piece.)
+        while first_piece + 1 < nseg && span_of[first_piece] < i {
             first_piece += 1;
         }
         // The span of the support where the de Casteljau extrapolation is smallest: the
-        // amplification of the local arguments t, prod (|1 - t| + |t|).
+        // amplification of the local arguments t, prod (|1 - t| + |t|), written
+        // prod max(1, |2 x - a - b| / (b - a)) (the first such span wins a tie).
         let (mut best, mut best_amp) = (first_piece, f64::INFINITY);
         let mut k = first_piece;
+        let support = &knots[i + 1..=i + p];
         while k < nseg && span_of[k] <= i + p {
             let s = span_of[k];
-            let (a, b) = (knots[s], knots[s + 1]);
-            let inv = 1.0 / (b - a);
-            let mut amp = 1.0;
-            for x in &knots[i + 1..=i + p] {
-                let t = (x - a) * inv;
-                amp *= (1.0 - t).abs() + t.abs();
-            }
+            let (c, inv) = (knots[s] + knots[s + 1], inv_len[k]);
+            let amp = support
+                .iter()
+                .fold(1.0f64, |m, x| m * ((2.0 * x - c).abs() * inv).max(1.0));
             if amp < best_amp {
                 (best, best_amp) = (k, amp);
             }
             k += 1;
         }
         let k = best;
-        let s = span_of[k];
-        let (a, b) = (knots[s], knots[s + 1]);
-        let inv = 1.0 / (b - a);
+        let (a, inv) = (knots[span_of[k]], inv_len[k]);
         for (t, x) in args.iter_mut().zip(&knots[i + 1..=i + p]) {
             *t = (x - a) * inv;
         }
-        load_piece(k, scratch);
+        // de Casteljau with the arguments, level after level, between two buffers (the
+        // first level reads the piece itself): out of place, so that each level
+        // vectorises.
+        let (mut from, mut to): (&mut [f64], &mut [f64]) = (scratch, &mut other);
+        let mut src: &[f64] = piece(k);
         for (lvl, &t) in args.iter().enumerate() {
             let u = 1.0 - t;
             let len = (p - lvl) * pdim;
-            for idx in 0..len {
-                scratch[idx] = u * scratch[idx] + t * scratch[idx + pdim];
+            for (o, (x, y)) in to[..len]
+                .iter_mut()
+                .zip(src[..len].iter().zip(&src[pdim..len + pdim]))
+            {
+                *o = u * x + t * y;
             }
+            std::mem::swap(&mut from, &mut to);
+            src = from;
         }
-        work[i * pdim..(i + 1) * pdim].copy_from_slice(&scratch[..pdim]);
+        work[i * pdim..(i + 1) * pdim].copy_from_slice(&src[..pdim]);
     }
     // 4. The certificate: extract the merged spline again and compare.
     let mut worst2 = 0.0f64;
@@ -192,14 +232,15 @@ fn dist2(a: &[f64], b: &[f64]) -> f64 {
 /// Tiller's removal does where `a_i` crosses 1/2; the residual of the leftover equation
 /// certifies the removal. The points are not shifted: point `j >= p` (the index `r - s` is
 /// `p` for every copy) is stored at `j + (p - s)`.
-fn decide_joint(
+fn decide_joint<W: Width>(
     local: &mut [f64],
     p: usize,
-    pdim: usize,
+    w: W,
     a: f64,
     mut budget: f64,
     tmp: &mut [f64],
 ) -> usize {
+    let pdim = w.get();
     let b = 1.0 - a;
     let from_left = a >= 0.5;
     let inv = if from_left { 1.0 / a } else { 1.0 / b };

@@ -8,11 +8,15 @@ pub(crate) mod extract;
 mod extract_kernel;
 pub(crate) mod merge;
 mod merge_kernel;
+pub(crate) mod outer_knots;
 pub(crate) mod pieces;
 pub(crate) mod quadratic;
 pub(crate) mod span;
 pub(crate) mod standard_form;
 pub(crate) mod surface;
+mod width;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_outer_knots;

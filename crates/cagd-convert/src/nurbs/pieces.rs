@@ -3,13 +3,17 @@
 
 use cagd_core::{BezierCurve, Error, Result, check_degree, check_points, check_weights};
 
+use super::outer_knots::OuterKnots;
+
 /// Consecutive Bézier pieces of one degree: piece `k` is the segment on `[0, 1]` that
 /// reparametrises the spline on `[breaks[k], breaks[k + 1]]`.
 ///
 /// Layout (DESIGN.md): `points` holds `len() * (degree + 1)` Euclidean points of `dim`
 /// coordinates, piece-major (piece `k`, point `i`, coordinate `c` at
 /// `(k * (degree + 1) + i) * dim + c`); `weights`, when rational, one weight per point in
-/// the same order. `breaks` strictly increase, one more than the pieces.
+/// the same order. `breaks` strictly increase, one more than the pieces. `outer`, when
+/// set, holds the knots of an unclamped spline beyond its first and last break (see
+/// [`OuterKnots`]); without it the pieces stand for a clamped spline.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct BezierPieces {
     pub(crate) degree: usize,
@@ -17,6 +21,7 @@ pub struct BezierPieces {
     pub(crate) breaks: Vec<f64>,
     pub(crate) points: Vec<f64>,
     pub(crate) weights: Option<Vec<f64>>,
+    pub(crate) outer: Option<OuterKnots>,
 }
 
 impl BezierPieces {
@@ -60,7 +65,26 @@ impl BezierPieces {
             breaks,
             points,
             weights,
+            outer: None,
         })
+    }
+
+    /// The same pieces, standing for the spline whose knot vector has `left` before the
+    /// last copy of the first break and `right` after the first copy of the last break (an
+    /// unclamped spline; [`crate::pieces_to_nurbs`] then gives back that knot vector).
+    ///
+    /// # Errors
+    /// [`Error::BadParameter`] naming `"outer_knots.left"` / `"outer_knots.right"` (see
+    /// [`OuterKnots`] for the rules).
+    pub fn with_outer_knots(mut self, left: Vec<f64>, right: Vec<f64>) -> Result<Self> {
+        let (a, b) = (self.breaks[0], self.breaks[self.breaks.len() - 1]);
+        self.outer = Some(OuterKnots::new(left, right, self.degree, a, b)?);
+        Ok(self)
+    }
+
+    /// The outer knots of an unclamped spline, `None` for a clamped one.
+    pub fn outer_knots(&self) -> Option<&OuterKnots> {
+        self.outer.as_ref()
     }
 
     /// Pieces from Bézier segments and their `segments.len() + 1` breaks. If any segment is

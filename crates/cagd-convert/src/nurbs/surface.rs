@@ -202,7 +202,7 @@ pub fn patches_to_nurbs(
     };
     // Merge in u: point i of piece iu is the row i of every patch (iu, jv), jv = 0..nv.
     let row_u = nv * (q + 1) * pdim;
-    let mu = merge(&bu, p, row_u, tol, |iu, i, o| {
+    let mu = merge(&bu, p, row_u, tol, None, |iu, i, o| {
         for jv in 0..nv {
             let at = ((iu * nv + jv) * m + i * (q + 1)) * pdim;
             o[jv * (q + 1) * pdim..(jv + 1) * (q + 1) * pdim]
@@ -212,7 +212,7 @@ pub fn patches_to_nurbs(
     let n_u = mu.work.len() / row_u;
     // Merge in v: point j of piece jv is the column (a = 0..n_u) of merged rows.
     let col = n_u * pdim;
-    let mv = merge(&bv, q, col, tol, |jv, j, o| {
+    let mv = merge(&bv, q, col, tol, None, |jv, j, o| {
         for a in 0..n_u {
             let at = a * row_u + (jv * (q + 1) + j) * pdim;
             o[a * pdim..(a + 1) * pdim].copy_from_slice(&mu.work[at..at + pdim]);

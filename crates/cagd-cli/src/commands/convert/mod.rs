@@ -3,7 +3,10 @@
 //!
 //! - `bspline --to bezier`: the pieces as the `"beziers"` object `cagd merge` reads
 //!   (`segments`, `weights` — `null` when polynomial — and `breaks`, the distinct knot
-//!   values of the domain), plus a `"report"` (pieces, continuity at each joint from the
+//!   values of the domain; for an unclamped spline also `outer_knots`, `{"left": [...],
+//!   "right": [...]}`, its knots before the last copy of the first break and after the
+//!   first copy of the last one, which `--to nurbs` reads back so that the round trip
+//!   gives the same knot vector), plus a `"report"` (pieces, continuity at each joint from the
 //!   knot multiplicities, the largest evaluation difference measured);
 //! - `beziers` (or one `bezier`) `--to nurbs`: one `"bspline"` (with `weights` when
 //!   rational) with the highest continuity the pieces have at each joint (`--tol T`: the
@@ -92,6 +95,7 @@ pub(crate) fn run(text: &str, args: &ConvertArgs) -> Result<Converted, InputErro
             let b = crate::input::beziers::parse(text)?;
             let pieces = BezierPieces::from_segments(&b.segments, &b.breaks)
                 .map_err(|e| InputError::new("input", e.to_string()))?;
+            let pieces = with_outer_knots(&value, pieces)?;
             beziers_to_spline(&pieces, args.tol)
         }
         ("nurbs", "bezier") => {
@@ -198,7 +202,39 @@ fn knot_continuity(c: &BSplineCurve, breaks: &[f64]) -> Vec<i64> {
         .collect()
 }
 
-/// The `"beziers"` object of pieces.
+/// The optional `"outer_knots": {"left": [...], "right": [...]}` of a `"beziers"` object
+/// (the knots of an unclamped spline beyond its first and last break, see
+/// [`cagd_convert::OuterKnots`]), attached to the pieces; absent or `null`: clamped.
+fn with_outer_knots(obj: &Value, pieces: BezierPieces) -> Result<BezierPieces, InputError> {
+    let o = match obj.get("outer_knots") {
+        None | Some(Value::Null) => return Ok(pieces),
+        Some(o) if o.is_object() => o,
+        Some(_) => {
+            return Err(InputError::new(
+                "input.outer_knots",
+                "expected {\"left\": [...], \"right\": [...]} or null",
+            ));
+        }
+    };
+    let left = numbers(
+        field(o, "input.outer_knots", "left")?,
+        "input.outer_knots.left",
+    )?;
+    let right = numbers(
+        field(o, "input.outer_knots", "right")?,
+        "input.outer_knots.right",
+    )?;
+    pieces.with_outer_knots(left, right).map_err(|e| {
+        let side = match &e {
+            cagd_core::Error::BadParameter { name, .. } => name.trim_start_matches("outer_knots"),
+            _ => "",
+        };
+        InputError::new(format!("input.outer_knots{side}"), e.to_string())
+    })
+}
+
+/// The `"beziers"` object of pieces (with `"outer_knots"` when they come from an
+/// unclamped spline).
 fn beziers_json(pieces: &BezierPieces, segs: &[BezierCurve]) -> Value {
     let dim = pieces.dim();
     let weights = if segs.iter().any(BezierCurve::is_rational) {
@@ -210,13 +246,17 @@ fn beziers_json(pieces: &BezierPieces, segs: &[BezierCurve]) -> Value {
     } else {
         Value::Null
     };
-    json!({
+    let mut json = json!({
         "type": "beziers",
         "degree": pieces.degree(),
         "segments": segs.iter().map(|s| rows(s.points(), dim)).collect::<Vec<_>>(),
         "weights": weights,
         "breaks": pieces.breaks(),
-    })
+    });
+    if let Some(o) = pieces.outer_knots() {
+        json["outer_knots"] = json!({"left": o.left(), "right": o.right()});
+    }
+    json
 }
 
 fn spline_to_beziers(c: &BSplineCurve, standard_form: bool) -> Result<Converted, InputError> {
