@@ -58,6 +58,7 @@ mod bspline;
 mod distance;
 mod error;
 mod exact;
+mod frame;
 pub mod kernel;
 mod patch;
 mod quadrature;
@@ -73,6 +74,7 @@ pub use basis::{
     to_bernstein_exact, wsgb_max_l, wsgb_terms,
 };
 pub use bezier::BezierCurve;
+pub use frame::{ModelFrame, centred_rational_bound};
 pub use binomial::{
     MAX_BINOMIAL_N, MAX_DEGREE, binomial, binomial_f64, check_degree, sign_binomial_f64,
     try_binomial,
