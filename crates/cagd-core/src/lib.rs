@@ -74,7 +74,6 @@ pub use basis::{
     to_bernstein_exact, wsgb_max_l, wsgb_terms,
 };
 pub use bezier::BezierCurve;
-pub use frame::{ModelFrame, centred_rational_bound};
 pub use binomial::{
     MAX_BINOMIAL_N, MAX_DEGREE, binomial, binomial_f64, check_degree, sign_binomial_f64,
     try_binomial,
@@ -92,6 +91,7 @@ pub use error::{Error, Result};
 pub use exact::{
     ExactMatrix, curve_invariant_exact, tensor_invariants_exact, tri_invariants_exact,
 };
+pub use frame::{ModelFrame, centred_rational_bound};
 pub use patch::{TensorPatch, TriPatch, tri_count, tri_index};
 pub use quadrature::{MAX_GAUSS_NODES, gauss_legendre};
 pub use validate::{check_finite_param, check_points, check_tolerance, check_weights};

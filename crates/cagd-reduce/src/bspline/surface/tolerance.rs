@@ -15,6 +15,14 @@ use super::patchwise::{SurfaceOptions, SurfaceReduction, reduce_bspline_surface}
 /// spans per input span and direction.
 pub const MAX_SURFACE_LEVEL: usize = 6;
 
+/// The work cap of [`reduce_bspline_surface_to_tolerance`]: a refinement level whose
+/// surface would have more Bézier patches than this (and more than the input has) is not
+/// tried; the reduction fails with [`Error::NoConvergence`] (the tolerance and the best
+/// bound reached) instead. Level `L` has `4^L` patches per input patch, so a 16 x 16-span
+/// surface stops at level 3 (`2^14 = 16 384` patches, a few ms to reduce) rather than
+/// growing to `1 048 576` patches at level 6.
+pub const MAX_SURFACE_PATCHES: usize = 1 << 14;
+
 /// The distinct interior values to insert so that every non-empty span of `knots` (on the
 /// domain `[knots[p], knots[len - p - 1]]`) is split into `parts` equal spans.
 fn midpoints(knots: &[f64], p: usize, parts: usize) -> Vec<f64> {
@@ -32,6 +40,18 @@ fn midpoints(knots: &[f64], p: usize, parts: usize) -> Vec<f64> {
         }
     }
     out
+}
+
+/// The number of non-empty spans of `knots` (degree `p`) on its domain.
+fn spans(knots: &[f64], p: usize) -> usize {
+    let (lo, hi) = (knots[p], knots[knots.len() - p - 1]);
+    let mut inner: Vec<f64> = knots
+        .iter()
+        .copied()
+        .filter(|k| *k >= lo && *k <= hi)
+        .collect();
+    inner.dedup();
+    inner.len().saturating_sub(1).max(1)
 }
 
 fn refine(s: &BSplineSurface, level: usize) -> Result<BSplineSurface> {
@@ -54,16 +74,21 @@ fn refine(s: &BSplineSurface, level: usize) -> Result<BSplineSurface> {
 ///
 /// # Errors
 /// [`Error::BadTolerance`]; the errors of [`reduce_bspline_surface`];
-/// [`Error::NoConvergence`] when level [`MAX_SURFACE_LEVEL`] is not enough (with the best
-/// bound reached).
+/// [`Error::NoConvergence`] when level [`MAX_SURFACE_LEVEL`], or the deepest level within
+/// [`MAX_SURFACE_PATCHES`], is not enough (with the best bound reached): bounded work.
 pub fn reduce_bspline_surface_to_tolerance(
     s: &BSplineSurface,
     opts: &SurfaceOptions,
     tolerance: f64,
 ) -> Result<SurfaceReduction> {
     check_tolerance(tolerance)?;
+    let (p, q) = s.degrees();
+    let patches = spans(s.knots_u(), p).saturating_mul(spans(s.knots_v(), q));
     let mut best = f64::INFINITY;
     for level in 0..=MAX_SURFACE_LEVEL {
+        if level > 0 && patches.saturating_mul(1 << (2 * level)) > MAX_SURFACE_PATCHES {
+            break;
+        }
         let refined = refine(s, level)?;
         let red = reduce_bspline_surface(&refined, opts)?;
         if red.error_bound <= tolerance {
