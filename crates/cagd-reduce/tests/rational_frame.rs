@@ -250,7 +250,7 @@ fn uniform_pipeline_and_bezier_reducer_are_unit_consistent() {
     let knots: Vec<f64> = (0..=15).map(f64::from).collect();
     let n = knots.len() - 7;
     let pts: Vec<f64> = (0..n)
-        .flat_map(|i| [f64::from(i as u8), (f64::from(i as u8) * 0.9).sin() * 3.0])
+        .flat_map(|i| [i as f64, (i as f64 * 0.9).sin() * 3.0])
         .collect();
     let w: Vec<f64> = (0..n).map(|i| 1.0 + 0.5 * (i % 3) as f64).collect();
     let c = BSplineCurve::new_rational(6, knots, pts, w, 2).unwrap();
