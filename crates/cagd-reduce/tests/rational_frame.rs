@@ -5,9 +5,9 @@
 //!    spans (patches) and the bound `k b` (to `1e-9` relative, plus the rounding level of
 //!    the moved coordinates), for the segments strategy (L2 and constrained Chebyshev),
 //!    Piegl & Tiller, the global fit, the uniform pipeline (seed 001), the rational Bézier
-//!    reducer, the patch-wise and the to-tolerance surface reducers. Every bound is checked
-//!    against the distance measured independently (dense sampling here, not the library's
-//!    maximiser).
+//!    reducer, and the patch-wise, to-tolerance and global-fit surface reducers. Every
+//!    bound is checked against the distance measured independently (dense sampling here,
+//!    not the library's maximiser).
 //! 2. **Exactly reducible far away.** A degree-elevated NURBS at `1e8` (and one scaled by
 //!    `1e6`) reduces back on the input's spans by every strategy.
 //! 3. **Bounded work.** Inputs that made the segments strategy / the surface refinement
@@ -19,9 +19,9 @@
 use cagd_core::{BSplineCurve, BSplineSurface, BezierCurve, Error};
 use cagd_reduce::{
     BSplineOptions, BSplineStrategy, MAX_SEGMENT_REDUCTIONS, MAX_SURFACE_PATCHES, Merge, Method,
-    ReduceOptions, SurfaceOptions, reduce_bspline, reduce_bspline_piegl_tiller,
-    reduce_bspline_surface, reduce_bspline_surface_to_tolerance, reduce_uniform_bspline,
-    reduce_with,
+    ReduceOptions, SurfaceFitOptions, SurfaceOptions, reduce_bspline, reduce_bspline_piegl_tiller,
+    reduce_bspline_surface, reduce_bspline_surface_fit, reduce_bspline_surface_to_tolerance,
+    reduce_uniform_bspline, reduce_with,
 };
 
 /// Translations of the law (scale 1) and scales (no translation); and two mixed ones.
@@ -358,6 +358,7 @@ fn surface_reducers_are_unit_consistent() {
     let opts = SurfaceOptions::new((2, 2));
     let base = reduce_bspline_surface(&s, &opts).unwrap();
     let tbase = reduce_bspline_surface_to_tolerance(&s, &opts, 1e-2).unwrap();
+    let fbase = reduce_bspline_surface_fit(&s, &SurfaceFitOptions::new((2, 2), 1e-2)).unwrap();
     for mv in MOVES {
         let input = moved_surface(&s, mv);
         let r = reduce_bspline_surface(&input, &opts).unwrap();
@@ -376,7 +377,20 @@ fn surface_reducers_are_unit_consistent() {
             "to tolerance {mv:?}: {} vs {expect}",
             t.error_bound
         );
+        let fopts = SurfaceFitOptions::new((2, 2), 1e-2 * mv.1);
+        let f = reduce_bspline_surface_fit(&input, &fopts).unwrap();
+        assert_eq!(f.spans_out, fbase.spans_out, "fit {mv:?}");
+        let expect = fbase.error_bound * mv.1;
+        assert!(
+            (f.error_bound - expect).abs() <= 1e-9 * expect + rounding_level(mv, 8.0),
+            "fit {mv:?}: {} vs {expect}",
+            f.error_bound
+        );
         if mv.0 <= 1e5 {
+            assert!(
+                surface_sampled(&input, &f.surface) <= f.error_bound,
+                "fit {mv:?}"
+            );
             assert!(
                 surface_sampled(&input, &r.surface) <= r.error_bound,
                 "{mv:?}"
