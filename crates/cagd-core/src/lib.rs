@@ -58,6 +58,7 @@ mod bspline;
 mod distance;
 mod error;
 mod exact;
+mod frame;
 pub mod kernel;
 mod patch;
 mod quadrature;
@@ -90,6 +91,7 @@ pub use error::{Error, Result};
 pub use exact::{
     ExactMatrix, curve_invariant_exact, tensor_invariants_exact, tri_invariants_exact,
 };
+pub use frame::{ModelFrame, centred_rational_bound};
 pub use patch::{TensorPatch, TriPatch, tri_count, tri_index};
 pub use quadrature::{MAX_GAUSS_NODES, gauss_legendre};
 pub use validate::{check_finite_param, check_points, check_tolerance, check_weights};

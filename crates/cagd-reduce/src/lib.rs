@@ -187,11 +187,12 @@ pub use bezier::{
     reduce_to_tolerance, reduce_to_tolerance_alg_14_2_1, reduce_with, subdivision_levels,
 };
 pub use bspline::{
-    BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy, MAX_SURFACE_LEVEL, Merge,
-    SurfaceFitOptions, SurfaceFitReduction, SurfaceOptions, SurfaceReduction, UniformReduction,
-    reduce_bspline, reduce_bspline_piegl_tiller, reduce_bspline_surface,
-    reduce_bspline_surface_fit, reduce_bspline_surface_to_tolerance, reduce_uniform_bspline,
-    spline_max_deviation,
+    BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy, MAX_SEGMENT_REDUCTIONS,
+    MAX_SURFACE_LEVEL, MAX_SURFACE_PATCHES, Merge, SurfaceFitOptions, SurfaceFitReduction,
+    SurfaceOptions, SurfaceReduction, UniformReduction, reduce_bspline,
+    reduce_bspline_piegl_tiller, reduce_bspline_surface, reduce_bspline_surface_fit,
+    reduce_bspline_surface_to_tolerance, reduce_uniform_bspline, spline_max_deviation,
+    surface_max_deviation,
 };
 pub use cagd_core::{Error, Result};
 pub use interval::{
@@ -211,4 +212,4 @@ pub use rational_to_polynomial::{
 };
 
 // Crate-internal items `rational_to_polynomial` builds on (imported through the root).
-use bspline::{BandedLsq, LocalBounds, Raw, SpanBound, order_at, sampled_error};
+use bspline::{BandedLsq, LocalBounds, Raw, SpanBound, order_at};

@@ -1,6 +1,6 @@
 //! The curve-level entry points: [`reduce`], [`reduce_with`], and the [`Report`].
 
-use cagd_core::{BezierCurve, Error, Result};
+use cagd_core::{BezierCurve, Error, ModelFrame, Result};
 
 use super::measure::max_deviation;
 use super::method::Method;
@@ -35,8 +35,11 @@ pub struct Report {
     pub max_error: Option<f64>,
     /// Which space `error_bound` and `max_error` refer to.
     pub space: ErrorSpace,
-    /// For rational curves: the certified bound in homogeneous space, from which the
-    /// Euclidean one is derived (`None` for polynomial curves).
+    /// For rational curves: a certified bound of the homogeneous curves `(wP, w)`,
+    /// `(vQ, v)` in the input's coordinates (`None` for polynomial curves). In
+    /// [`ErrorSpace::Euclidean`] the reduction runs in the curve's frame (see
+    /// [`crate::reduce_with`]) and this is that frame's bound carried back,
+    /// `eps_h (s + ||c|| + 1)` plus rounding.
     pub homogeneous_bound: Option<f64>,
 }
 
@@ -90,12 +93,20 @@ pub fn reduce(curve: &BezierCurve, m: usize, method: Method) -> Result<Reduction
 
 /// Reduces `curve` as `opts` says.
 ///
-/// Rational curves: the homogeneous points `(w_i P_i, w_i)` are reduced; with `eps_h` the
-/// certified homogeneous bound, the Euclidean error is at most
-/// `eps_h (1 + max_i ||P_i||) / v_min` with `v_min = max(min_i v_i, min_i w_i - eps_h)`
-/// (`v` the reduced weights): from `P/w - Q/v = ((P - Q) - (P/w)(w - v)) / v`, Cauchy–Schwarz,
-/// and the convex-hull properties `||P(t)/w(t)|| <= max ||P_i||`, `v(t) >= min v_i`,
-/// `v(t) >= w(t) - eps_h`.
+/// Rational curves ([`ErrorSpace::Euclidean`]): the curve is moved into its frame
+/// ([`cagd_core::ModelFrame`]: `P' = (P - c) / s`, `c` the centre of the points' bounding
+/// box, `s = R` their radius about it), its homogeneous points
+/// `(w_i P'_i, w_i)` are reduced with the certified homogeneous bound `eps_h`, and the
+/// result is moved back. The Euclidean error is at most
+/// `s eps_h (1 + R / s) / v_min` with `v_min = max(min_i v_i, min_i w_i - eps_h)` (`v` the
+/// reduced weights), plus the round trip's rounding: the centred form
+/// `(h_A + R h_W) / v_min` of [`cagd_core::centred_rational_bound`] (from
+/// `P/w - Q/v = ((P - c)(v - w) + (A_c - A'_c)) / v`, the convex-hull properties
+/// `||P(t)/w(t) - c|| <= R`, `v(t) >= min v_i`, `v(t) >= w(t) - eps_h`). It does not
+/// depend on where the curve sits and scales with it (the uncentred
+/// `eps_h (1 + max ||P_i||) / v_min` grows with the distance from the origin and mixes a
+/// length with a pure number). [`ErrorSpace::Homogeneous`]: the points `(w_i P_i, w_i)`
+/// are reduced as they are.
 ///
 /// # Errors
 /// As [`reduce`].
@@ -137,49 +148,82 @@ where
         });
     };
     let hd = dim + 1;
-    let hom = curve.homogeneous_points();
-    let (qh, eps_h, method) = f(&hom, hd)?;
-    let v: Vec<f64> = qh.chunks_exact(hd).map(|p| p[dim]).collect();
+    if opts.space == ErrorSpace::Homogeneous {
+        return finish_homogeneous(curve, opts, f);
+    }
+    // Euclidean: reduce the curve in its frame (centred, scaled to radius 1), where
+    // `eps_h (1 + R / s) / v` is the centred, unit-consistent bound; then move back.
+    let frame = ModelFrame::new(curve.points(), dim);
+    let framed = BezierCurve::new_rational(frame.to_frame(curve.points()), w.to_vec(), dim)?;
+    let (qh, eps_h, method) = f(&framed.homogeneous_points(), hd)?;
+    let v = reduced_weights(&qh, hd)?;
+    let inner = BezierCurve::from_homogeneous(&qh, hd)?;
+    let wmin = w.iter().copied().fold(f64::INFINITY, f64::min);
+    let vmin = v.iter().copied().fold(f64::INFINITY, f64::min);
+    let bound = frame.model_bound(eps_h, wmin, vmin) + frame.rounding(inner.points());
+    let reduced = BezierCurve::new_rational(frame.from_frame(inner.points()), v, dim)?;
+    // In the input's own homogeneous coordinates `dA = s dA' + c dW`, `dW = dW'`; plus the
+    // out-map's rounding times the largest reduced weight.
+    let cnorm = frame.centre().iter().map(|x| x * x).sum::<f64>().sqrt();
+    let vmax = reduced
+        .weights()
+        .map_or(1.0, |x| x.iter().copied().fold(0.0, f64::max));
+    let homogeneous = eps_h * (frame.scale() + cnorm + 1.0) * (1.0 + 4.0 * f64::EPSILON)
+        + vmax * frame.rounding(inner.points());
+    let max_error = if opts.measure {
+        Some(max_deviation(curve, &reduced)?)
+    } else {
+        None
+    };
+    Ok(Reduction {
+        report: Report {
+            method,
+            degree_from: curve.degree(),
+            degree_to: reduced.degree(),
+            error_bound: Some(bound),
+            max_error,
+            space: opts.space,
+            homogeneous_bound: Some(homogeneous),
+        },
+        curve: reduced,
+    })
+}
+
+/// The reduced weights of homogeneous points `qh` (`hd` coordinates each).
+///
+/// # Errors
+/// [`Error::NonPositiveWeight`] for a weight that is not positive and finite.
+fn reduced_weights(qh: &[f64], hd: usize) -> Result<Vec<f64>> {
+    let v: Vec<f64> = qh.chunks_exact(hd).map(|p| p[hd - 1]).collect();
     if let Some(index) = v.iter().position(|x| !x.is_finite() || *x <= 0.0) {
         return Err(Error::NonPositiveWeight {
             index,
             weight: v[index],
         });
     }
+    Ok(v)
+}
+
+/// [`finish`] for a rational curve in [`ErrorSpace::Homogeneous`]: the homogeneous points
+/// `(w P, w)` reduced as they are, the bound and measure of the homogeneous curves.
+fn finish_homogeneous<F>(curve: &BezierCurve, opts: &ReduceOptions, f: F) -> Result<Reduction>
+where
+    F: FnOnce(&[f64], usize) -> Result<(Vec<f64>, f64, Method)>,
+{
+    let hd = curve.dim() + 1;
+    let hom = curve.homogeneous_points();
+    let (qh, eps_h, method) = f(&hom, hd)?;
+    reduced_weights(&qh, hd)?;
     let reduced = BezierCurve::from_homogeneous(&qh, hd)?;
-    let pmax = curve
-        .points()
-        .chunks_exact(dim)
-        .map(|p| p.iter().map(|x| x * x).sum::<f64>().sqrt())
-        .fold(0.0, f64::max);
-    let wmin = w.iter().copied().fold(f64::INFINITY, f64::min);
-    let vmin = v
-        .iter()
-        .copied()
-        .fold(f64::INFINITY, f64::min)
-        .max(wmin - eps_h);
-    let eucl = eps_h * (1.0 + pmax) / vmin * (1.0 + 8.0 * f64::EPSILON);
-    let (bound, max_error) = match opts.space {
-        ErrorSpace::Euclidean => {
-            let me = if opts.measure {
-                Some(max_deviation(curve, &reduced)?)
-            } else {
-                None
-            };
-            (eucl, me)
-        }
-        ErrorSpace::Homogeneous => {
-            let me = if opts.measure {
-                Some(max_deviation(
-                    &curve.to_homogeneous(),
-                    &BezierCurve::new(qh, hd)?,
-                )?)
-            } else {
-                None
-            };
-            (eps_h, me)
-        }
+    let max_error = if opts.measure {
+        Some(max_deviation(
+            &curve.to_homogeneous(),
+            &BezierCurve::new(qh, hd)?,
+        )?)
+    } else {
+        None
     };
+    let bound = eps_h;
     Ok(Reduction {
         report: Report {
             method,

@@ -257,7 +257,12 @@ pub(crate) fn merge_pieces<'a>(
                 let vmin = merged
                     .weights()
                     .map_or(1.0, |v| v.iter().copied().fold(f64::INFINITY, f64::min));
-                euclidean_from_homogeneous(g, max_norm(input.points(), input.dim()), wmin, vmin)
+                // The radius covers the pieces' points too: the changed curve is a piece.
+                let pmax = segs
+                    .iter()
+                    .map(|c| max_norm(c.points(), c.dim()))
+                    .fold(max_norm(input.points(), input.dim()), f64::max);
+                euclidean_from_homogeneous(g, pmax, wmin, vmin)
             }
         }
     };

@@ -9,6 +9,7 @@
 //! (`surface/`): patch-wise, to a tolerance, and by the global fit.
 
 mod fit;
+mod framed;
 mod global;
 mod knots;
 mod measure;
@@ -21,17 +22,18 @@ mod surface;
 mod tests;
 mod uniform;
 
-pub use measure::spline_max_deviation;
+pub use measure::{spline_max_deviation, surface_max_deviation};
 pub use options::{BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy};
 pub use piegl_tiller::reduce_bspline_piegl_tiller;
 pub use reduce::reduce_bspline;
+pub use segments::MAX_SEGMENT_REDUCTIONS;
 pub use surface::{
-    MAX_SURFACE_LEVEL, SurfaceFitOptions, SurfaceFitReduction, SurfaceOptions, SurfaceReduction,
-    reduce_bspline_surface, reduce_bspline_surface_fit, reduce_bspline_surface_to_tolerance,
+    MAX_SURFACE_LEVEL, MAX_SURFACE_PATCHES, SurfaceFitOptions, SurfaceFitReduction, SurfaceOptions,
+    SurfaceReduction, reduce_bspline_surface, reduce_bspline_surface_fit,
+    reduce_bspline_surface_to_tolerance,
 };
 pub use uniform::{Merge, UniformReduction, reduce_uniform_bspline};
 
 // For the rational -> polynomial conversion (`crate::rational_to_polynomial`).
 pub(crate) use fit::{BandedLsq, SpanBound};
 pub(crate) use knots::{LocalBounds, Raw, order_at};
-pub(crate) use surface::sampled_error;

@@ -23,6 +23,37 @@ const SEGMENT_SHARE: f64 = 0.9;
 /// Deepest recursive subdivision of one input span (2^40 pieces would be below rounding).
 const MAX_DEPTH: usize = 40;
 
+/// The work cap of the segments strategy: at most this many per-piece reductions in all
+/// (the subdivision tree's nodes; the global fit's cap is `2^20` spans). A piece's bound
+/// shrinks like `h^(m+1)` under subdivision, so a smooth curve meets any tolerance above
+/// the rounding level with far fewer (a linear target at `1e-6` of the curve's size needs
+/// ~1 000 per span); a curve that does not (a weight function near zero, a tolerance at
+/// the rounding level) is refused with [`Error::NoConvergence`] (the tolerance asked and
+/// the last piece bound that missed its share) instead of subdividing without end.
+pub const MAX_SEGMENT_REDUCTIONS: usize = 1 << 20;
+
+/// The reductions left to the segments strategy, the tolerance asked and the last piece
+/// bound that missed its share (what the error reports when the budget runs out).
+struct Budget {
+    left: usize,
+    tolerance: f64,
+    missed: f64,
+}
+
+impl Budget {
+    /// Takes one reduction from the budget, or fails with [`Error::NoConvergence`].
+    fn take(&mut self) -> Result<()> {
+        if self.left == 0 {
+            return Err(Error::NoConvergence {
+                tolerance: self.tolerance,
+                achieved: self.missed,
+            });
+        }
+        self.left -= 1;
+        Ok(())
+    }
+}
+
 /// One reduced piece on `[a, b]` with its certified bound.
 struct Piece {
     /// The continuity order kept at the start of the piece.
@@ -45,6 +76,7 @@ fn reduce_adaptive(
     target: usize,
     budget: f64,
     depth: usize,
+    work: &mut Budget,
     out: &mut Vec<Piece>,
 ) -> Result<()> {
     let method = match method {
@@ -52,6 +84,7 @@ fn reduce_adaptive(
         _ => Method::L2 { r, p },
     };
     let mut parts = 2usize;
+    work.take()?;
     match reduce_with(bez, &ReduceOptions::new(method, target)) {
         Ok(red) => {
             let bound = red.report.error_bound.unwrap_or(f64::INFINITY);
@@ -69,6 +102,7 @@ fn reduce_adaptive(
             // parts as that predicts (at least 2, at most 16 per level).
             let ratio = (bound / budget).powf(1.0 / (target as f64 + 1.0));
             parts = (2..16).find(|&j| j as f64 >= ratio).unwrap_or(16);
+            work.missed = bound;
         }
         Err(Error::NonPositiveWeight { .. }) => {}
         Err(e) => return Err(e),
@@ -111,6 +145,7 @@ fn reduce_adaptive(
             target,
             budget,
             depth + 1,
+            work,
             out,
         )?;
     }
@@ -120,76 +155,60 @@ fn reduce_adaptive(
 /// [`BSplineStrategy::Segments`] with segment method `method` (see [`crate::reduce_bspline`];
 /// `opts` already validated there).
 ///
-/// A NURBS is reduced moved to the centre of its control points' bounding box and moved
-/// back: the Euclidean error is translation invariant, but the rational Bézier reducer's
-/// model-space conversion `eps_h (1 + max ||P||) / min w` grows with the distance from the
-/// origin (a constant NURBS at 1e8 failed at tolerance 1). The two translations' rounding,
-/// at most `2 sqrt(dim) eps (max |P| + |c|)` per control point (and so on the curve, by
-/// the convex hull property), is added to the bound.
+/// A NURBS is reduced in its frame (`super::framed`: centred at the origin and scaled to
+/// radius 1) with the tolerance divided by the scale, and
+/// moved back: every rational bound inside (the pieces' [`crate::reduce_with`], the
+/// merge's joint gaps, knot removal) is then the centred, unit-consistent one, so the same
+/// curve moved or scaled gives the same spans and a bound that scales with it. The round
+/// trip's rounding is added to the bound.
 pub(crate) fn reduce_segments(
     curve: &BSplineCurve,
     opts: &BSplineOptions,
     method: Method,
 ) -> Result<BSplineReduction> {
-    let Some(w) = curve.weights() else {
-        return reduce_segments_at(curve, opts, method);
+    reduce_segments_capped(curve, opts, method, MAX_SEGMENT_REDUCTIONS)
+}
+
+/// [`reduce_segments`] with at most `cap` per-piece reductions.
+fn reduce_segments_capped(
+    curve: &BSplineCurve,
+    opts: &BSplineOptions,
+    method: Method,
+    cap: usize,
+) -> Result<BSplineReduction> {
+    let Some((frame, moved)) = super::framed::frame_curve(curve, opts.tolerance)? else {
+        return reduce_segments_at(curve, opts, method, cap);
     };
-    let dim = curve.dim();
-    let (pts, knots) = (curve.points(), curve.knots());
-    let centre = cagd_core::kernel::bounding_box_centre(pts, dim);
-    let size = pts
-        .iter()
-        .chain(&centre)
-        .fold(0.0f64, |m, v| m.max(v.abs()));
-    let allowance = 4.0 * (dim as f64).sqrt() * f64::EPSILON * size;
-    let inner_tol = opts.tolerance - allowance;
-    if inner_tol.is_nan() || inner_tol <= 0.5 * opts.tolerance {
-        return Err(Error::ConditionNotMet {
-            eq: "tolerance",
-            why: "the tolerance is below the rounding level of the curve's coordinates",
-        });
-    }
-    let shift = |p: &[f64], sign: f64| -> Vec<f64> {
-        p.iter()
-            .enumerate()
-            .map(|(i, v)| v + sign * centre[i % dim])
-            .collect()
-    };
-    let moved = BSplineCurve::new_rational(
-        curve.degree(),
-        knots.to_vec(),
-        shift(pts, -1.0),
-        w.to_vec(),
-        dim,
-    )?;
     let inner = BSplineOptions {
-        tolerance: inner_tol,
+        tolerance: frame.inner_tol,
         measure: false,
         ..*opts
     };
-    let mut red = reduce_segments_at(&moved, &inner, method)?;
-    let (k, p, v) = red.curve.clone().into_parts();
-    red.curve = BSplineCurve::new_rational(
-        red.curve.degree(),
-        k,
-        shift(&p, 1.0),
-        v.unwrap_or_default(),
-        dim,
-    )?;
+    let mut red = reduce_segments_at(&moved, &inner, method, cap)
+        .map_err(|e| frame.model_error(e, opts.tolerance))?;
+    let out = red.curve.points().to_vec();
+    red.curve = super::framed::unframe_curve(&frame, &red.curve)?;
     red.report.tolerance = opts.tolerance;
-    red.report.error_bound += allowance;
-    red.report.segment_bound += allowance;
+    red.report.error_bound = frame.finish(red.report.error_bound, &out);
+    red.report.segment_bound = frame.finish(red.report.segment_bound, &out);
+    if red.report.error_bound > opts.tolerance {
+        return Err(Error::ConditionNotMet {
+            eq: "tolerance",
+            why: "the bound with the frame's rounding exceeds the tolerance (rounding level)",
+        });
+    }
     if opts.measure {
         red.report.max_error = Some(spline_max_deviation(curve, &red.curve)?);
     }
     Ok(red)
 }
 
-/// [`reduce_segments`] without the translation.
+/// [`reduce_segments`] without the frame.
 fn reduce_segments_at(
     curve: &BSplineCurve,
     opts: &BSplineOptions,
     method: Method,
+    cap: usize,
 ) -> Result<BSplineReduction> {
     let (p, m) = (curve.degree(), opts.target);
     let k = opts.continuity.unwrap_or((m - 1) / 2);
@@ -200,6 +219,11 @@ fn reduce_segments_at(
         Ok(i32::try_from(order_at(knots, p, k, t)?).unwrap_or(i32::MAX))
     };
     let budget = SEGMENT_SHARE * opts.tolerance;
+    let mut work = Budget {
+        left: cap,
+        tolerance: opts.tolerance,
+        missed: f64::INFINITY,
+    };
     let mut pieces = Vec::new();
     let mut guaranteed = Vec::new();
     for (i, seg) in segs.iter().enumerate() {
@@ -222,6 +246,7 @@ fn reduce_segments_at(
             m,
             budget,
             0,
+            &mut work,
             &mut pieces,
         )?;
     }
@@ -280,4 +305,48 @@ fn reduce_segments_at(
         spans_in,
         spans_out,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A quadratic NURBS with a weight near zero between two of 1 (a near-cusp): linear
+    /// pieces need many subdivisions at a small tolerance.
+    fn hard() -> BSplineCurve {
+        BSplineCurve::new_rational(
+            2,
+            vec![0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0],
+            vec![1e6, 0.0, 1e6 + 1.0, 2.0, 1e6 + 2.0, -1.0, 1e6 + 3.0, 0.5],
+            vec![1.0, 1e-3, 1.0, 2.0],
+            2,
+        )
+        .unwrap()
+    }
+
+    #[test]
+    fn the_work_cap_refuses_with_no_convergence() {
+        let c = hard();
+        let opts = BSplineOptions {
+            strategy: BSplineStrategy::Segments(Method::L2 { r: 0, p: 0 }),
+            ..BSplineOptions::new(1, 1e-5)
+        };
+        let method = Method::L2 { r: 0, p: 0 };
+        let full = reduce_segments(&c, &opts, method).unwrap();
+        assert!(full.report.pieces > 64, "{} pieces", full.report.pieces);
+        // The same input under a cap of 64 reductions: refused, naming the tolerance.
+        match reduce_segments_capped(&c, &opts, method, 64) {
+            Err(Error::NoConvergence {
+                tolerance,
+                achieved,
+            }) => {
+                assert_eq!(tolerance, opts.tolerance);
+                assert!(achieved > 0.9 * tolerance * SEGMENT_SHARE);
+            }
+            other => panic!("expected NoConvergence, got {other:?}"),
+        }
+        // A cap that covers the work needed gives the same result.
+        let again = reduce_segments_capped(&c, &opts, method, 8 * full.report.pieces).unwrap();
+        assert_eq!(again.curve, full.curve);
+    }
 }

@@ -5,7 +5,9 @@ use cagd_core::{BSplineCurve, BSplineSurface, Result, check_tolerance};
 
 use super::curve::{continuity_report, span_count, start_knots, target_degree};
 use super::surface_fit::{RationalPatches, fit_to_budget};
-use crate::{LocalBounds, Raw, SurfaceFitOptions, reduce_bspline_surface_fit, sampled_error};
+use crate::{
+    LocalBounds, Raw, SurfaceFitOptions, reduce_bspline_surface_fit, surface_max_deviation,
+};
 
 /// Share of the tolerance the fit must meet on every patch; the rest is for knot removal.
 const FIT_SHARE: f64 = 0.9;
@@ -23,7 +25,8 @@ pub struct PolynomialSurfaceReduction {
     /// `<= tolerance`): the largest over the patches of the fitted patch's bound plus the
     /// bounds of the knot-line removals whose support covers it.
     pub error_bound: f64,
-    /// The largest distance on a `17 x 17` grid per input patch.
+    /// The measured distance ([`crate::surface_max_deviation`]: sampled and locally
+    /// maximised on every cell).
     pub max_error: f64,
     /// Patches of the fit before knot removal `(u, v)` spans.
     pub pieces: (usize, usize),
@@ -157,7 +160,7 @@ pub fn rational_surface_to_polynomial(
     let net = transpose(&t, nv, nu, dim);
     let spans_out = (span_count(&ku, mu), span_count(&kv, mv));
     let surface = BSplineSurface::new((mu, mv), ku, kv, net, (nu, nv), dim)?;
-    let max_error = sampled_error(s, &surface, &s.to_beziers()?)?;
+    let max_error = surface_max_deviation(s, &surface)?;
     Ok(PolynomialSurfaceReduction {
         surface,
         equal_weights: false,
@@ -200,7 +203,7 @@ fn exact_case(
         let r = reduce_bspline_surface_fit(&poly, &SurfaceFitOptions::new(target, tol))?;
         (r.surface, r.error_bound)
     };
-    let max_error = sampled_error(s, &surface, &s.to_beziers()?)?;
+    let max_error = surface_max_deviation(s, &surface)?;
     let (a, b) = surface.degrees();
     let spans_out = (
         span_count(surface.knots_u(), a),

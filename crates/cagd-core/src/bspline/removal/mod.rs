@@ -121,18 +121,9 @@ fn max_distance(a: &[f64], b: &[f64], pdim: usize) -> f64 {
 /// `C - C' = ((C - c)(W' - W) + (A_c - A'_c)) / W'` with `A_c = A - c W`, so
 /// `max ||C - C'|| <= (max_i ||dA_i - c dW_i|| + R max_i |dW_i|) / wmin` — independent of
 /// where the curve sits, unlike `eps (1 + max ||P||) / wmin`.
-fn centred_rational_bound(old: &[f64], new: &[f64], points: &[f64], dim: usize, wmin: f64) -> f64 {
-    let centre = crate::kernel::bounding_box_centre(points, dim);
-    let radius = points
-        .chunks_exact(dim)
-        .map(|q| {
-            q.iter()
-                .zip(&centre)
-                .map(|(x, c)| (x - c) * (x - c))
-                .sum::<f64>()
-                .sqrt()
-        })
-        .fold(0.0f64, f64::max);
+fn centred_change_bound(old: &[f64], new: &[f64], points: &[f64], dim: usize, wmin: f64) -> f64 {
+    let frame = crate::ModelFrame::new(points, dim);
+    let (centre, radius) = (frame.centre(), frame.radius());
     let (mut ea, mut ew) = (0.0f64, 0.0f64);
     for (a, b) in old.chunks_exact(dim + 1).zip(new.chunks_exact(dim + 1)) {
         let dw = a[dim] - b[dim];
@@ -149,7 +140,7 @@ fn centred_rational_bound(old: &[f64], new: &[f64], points: &[f64], dim: usize, 
         ea = ea.max(da);
         ew = ew.max(dw.abs());
     }
-    (ea + radius * ew) / wmin * (1.0 + 8.0 * f64::EPSILON)
+    crate::centred_rational_bound(ea, ew, radius, wmin, wmin)
 }
 
 /// The weight coordinates (every `block`-th, the last of each block) of a bundle's points.
@@ -188,12 +179,12 @@ impl BSplineCurve {
                     return None;
                 }
                 let model = model_points(&work, block);
-                centred_rational_bound(&work, &back, &model, block - 1, wmin)
+                centred_change_bound(&work, &back, &model, block - 1, wmin)
             }
             (None, None) => eps,
             (None, Some(w)) => {
                 let wmin = w.iter().fold(f64::INFINITY, |m, x| m.min(*x));
-                centred_rational_bound(&work, &back, &self.points, self.dim, wmin)
+                centred_change_bound(&work, &back, &self.points, self.dim, wmin)
             }
         };
         bound.is_finite().then_some((curve, bound))

@@ -117,35 +117,53 @@ pub(crate) fn assemble(
 }
 
 /// A certified bound of `max_s ||a(s) - b(s)||` for two curves of the same degree and kind:
-/// the largest control-point distance (homogeneous for rational curves, converted to model
-/// units as in [`crate::reduce_with`]), plus a rounding allowance.
+/// the largest control-point distance plus a rounding allowance; for rational curves the
+/// centred form of [`cagd_core::centred_rational_bound`] about the centre `c` of `b`'s
+/// points (`a - b = ((A_c - B_c) + (b - c)(W_b - W_a)) / W_a`, so the bound is
+/// `(max ||dA_i - c dW_i|| + R max |dW_i|) / min w_a`, `R` the radius of `b`'s points
+/// about `c`), which does not grow with the distance from the origin.
 fn hull_distance(a: &BezierCurve, b: &BezierCurve) -> f64 {
-    let (pa, pb, d) = match (a.weights(), b.weights()) {
-        (Some(_), Some(_)) => (a.homogeneous_points(), b.homogeneous_points(), a.dim() + 1),
-        _ => (a.points().to_vec(), b.points().to_vec(), a.dim()),
+    let m = a.points().len() / a.dim().max(1);
+    let slack = |x: f64| 4.0 * (m as f64 + 2.0) * f64::EPSILON * x;
+    let dist = |pa: &[f64], pb: &[f64], d: usize| {
+        pa.chunks_exact(d)
+            .zip(pb.chunks_exact(d))
+            .map(|(x, y)| {
+                x.iter()
+                    .zip(y)
+                    .map(|(u, v)| (u - v) * (u - v))
+                    .sum::<f64>()
+                    .sqrt()
+            })
+            .fold(0.0, f64::max)
+            * (1.0 + 4.0 * f64::EPSILON)
     };
-    let m = (pa.len() / d) as f64;
-    let dist = pa
-        .chunks_exact(d)
-        .zip(pb.chunks_exact(d))
-        .map(|(x, y)| {
-            x.iter()
-                .zip(y)
-                .map(|(u, v)| (u - v) * (u - v))
-                .sum::<f64>()
-                .sqrt()
-        })
-        .fold(0.0, f64::max);
-    let h = dist * (1.0 + 4.0 * f64::EPSILON)
-        + 4.0 * (m + 2.0) * f64::EPSILON * (max_norm(&pa, d) + max_norm(&pb, d));
-    match a.weights() {
-        None => h,
-        Some(w) => {
-            // A/W - A'/W' = ((A - A') + C'(W' - W)) / W, |C'| <= max |C'_i|, W >= min w_i.
-            let wmin = w.iter().copied().fold(f64::INFINITY, f64::min);
-            h * (1.0 + max_norm(b.points(), b.dim())) / wmin * (1.0 + 8.0 * f64::EPSILON)
+    let (Some(wa), Some(wb)) = (a.weights(), b.weights()) else {
+        let (pa, pb, d) = (a.points(), b.points(), a.dim());
+        return dist(pa, pb, d) + slack(max_norm(pa, d) + max_norm(pb, d));
+    };
+    let dim = a.dim();
+    let frame = cagd_core::ModelFrame::new(b.points(), dim);
+    let centred = |pts: &[f64], w: &[f64]| -> (Vec<f64>, Vec<f64>) {
+        let mut ac = Vec::with_capacity(pts.len());
+        for (p, wi) in pts.chunks_exact(dim).zip(w) {
+            ac.extend(p.iter().zip(frame.centre()).map(|(x, c)| wi * (x - c)));
         }
-    }
+        (ac, w.to_vec())
+    };
+    let ((aa, aw), (ba, bw)) = (centred(a.points(), wa), centred(b.points(), wb));
+    let h_a = dist(&aa, &ba, dim) + slack(max_norm(&aa, dim) + max_norm(&ba, dim));
+    let h_w = dist(&aw, &bw, 1) + slack(max_norm(&aw, 1) + max_norm(&bw, 1));
+    let wmin = wa.iter().copied().fold(f64::INFINITY, f64::min);
+    // The centring rounds each model point by ~2 ulp of |x| + |c|: a hull move of `a`, `b`.
+    let size = a
+        .points()
+        .iter()
+        .chain(b.points())
+        .chain(frame.centre())
+        .fold(0.0f64, |s, x| s.max(x.abs()));
+    cagd_core::centred_rational_bound(h_a, h_w, frame.radius(), wmin, wmin)
+        + 8.0 * (dim as f64).sqrt() * f64::EPSILON * size
 }
 
 /// `max_t ||original(t) - spline(t)||` measured by [`max_distance_1d`] on every piece's

@@ -17,7 +17,9 @@
 //! blocks, which bounds the surface by the partition of unity in the other direction.
 
 use cagd_core::kernel::{de_casteljau, subdivide};
-use cagd_core::{BSplineCurve, Result, basis_functions, gauss_legendre};
+use cagd_core::{
+    BSplineCurve, ModelFrame, Result, basis_functions, centred_rational_bound, gauss_legendre,
+};
 
 mod banded_lsq;
 
@@ -241,29 +243,16 @@ fn rational_bound(
 ) -> (f64, f64) {
     let dim = blk - 1;
     let eps = f64::EPSILON;
-    let (mut lo, mut hi) = (vec![f64::INFINITY; dim], vec![f64::NEG_INFINITY; dim]);
+    let mut model = Vec::with_capacity(sub.len() / blk * dim);
     let mut wmin = f64::INFINITY;
     for q in sub.chunks_exact(blk) {
-        let w = q[dim];
-        wmin = wmin.min(w);
-        for c in 0..dim {
-            lo[c] = lo[c].min(q[c] / w);
-            hi[c] = hi[c].max(q[c] / w);
-        }
+        wmin = wmin.min(q[dim]);
+        model.extend(q[..dim].iter().map(|x| x / q[dim]));
     }
-    let centre: Vec<f64> = lo.iter().zip(&hi).map(|(a, b)| 0.5 * (a + b)).collect();
+    let frame = ModelFrame::new(&model, dim);
+    let centre = frame.centre();
     let cnorm = centre.iter().map(|x| x * x).sum::<f64>().sqrt();
-    let radius = sub
-        .chunks_exact(blk)
-        .map(|q| {
-            let w = q[dim];
-            (0..dim)
-                .map(|c| (q[c] / w - centre[c]).powi(2))
-                .sum::<f64>()
-                .sqrt()
-        })
-        .fold(0.0, f64::max)
-        * (1.0 + 4.0 * eps);
+    let radius = frame.radius() * (1.0 + 4.0 * eps);
     let split = |from: &[f64], j: usize, a: &mut Vec<f64>, w: &mut Vec<f64>| {
         a.clear();
         w.clear();
@@ -287,11 +276,10 @@ fn rational_bound(
     // Each translated coordinate is off by ~2 eps of |x| + |c| w, for both curves.
     ha += 4.0 * eps * size;
     let floor = 2.0 * (p as f64 + 3.0) * eps * size / wmin;
-    let v = vmin.max(wmin - hw);
-    if vmin <= 0.0 || v <= 0.0 {
+    if vmin <= 0.0 {
         return (f64::INFINITY, floor);
     }
-    ((ha + radius * hw) / v * (1.0 + 8.0 * eps), floor)
+    (centred_rational_bound(ha, hw, radius, wmin, vmin), floor)
 }
 
 /// Copies coordinates `j * blk .. (j + 1) * blk` of every point of `from` (points of `d`

@@ -7,6 +7,7 @@
 
 use cagd_core::{BSplineCurve, Error, Result, check_tolerance, kernel, knot_multiplicity};
 
+use super::framed;
 use super::knots::{LocalBounds, Raw, merge_pieces};
 use super::measure::{euclidean_from_homogeneous, spline_max_deviation};
 use super::options::{BSplineReduction, BSplineReport, BSplineStrategy};
@@ -45,11 +46,16 @@ fn fail(why: &'static str) -> Error {
 /// at most the input's spans (it succeeds in essence for degree-elevated splines, where every
 /// interior knot has multiplicity `>= p - m + 1`, and for those within the tolerance of one).
 ///
-/// Rational curves are reduced as polynomial splines of their homogeneous points
-/// `(w P, w)`; the per-span homogeneous bounds are held below
-/// `tol_h = tol w_min / (1 + P_max + tol)` (`w_min`, `P_max` the smallest input weight and
-/// largest input point norm), which makes the model-space bound
-/// `eps_h (1 + P_max) / max(v_min, w_min - eps_h)` (see [`crate::reduce_with`]) `<= tol`.
+/// Rational curves are reduced in their frame (centred at the origin, scaled to radius 1,
+/// the tolerance scaled with it; moved back after, the
+/// rounding added; ADDED, beyond Piegl & Tiller) as polynomial splines of their homogeneous
+/// points `(w P, w)`; the per-span homogeneous bounds are held below
+/// `tol_h = tol w_min / (1 + P_max + tol)` (`w_min`, `P_max <= 1` the smallest input weight
+/// and largest framed point norm), which makes the centred model-space bound
+/// `eps_h (1 + P_max) / max(v_min, w_min - eps_h)` ([`cagd_core::centred_rational_bound`])
+/// `<= tol`. In the frame the bound is unit-consistent: the same curve moved or scaled
+/// gives the same result and a bound that scales with it (Piegl & Tiller's
+/// `eps (1 + max ||P||) / min w` does not).
 ///
 /// Degrees up to [`cagd_core::MAX_DEGREE`]. Measured (unit tests): a degree-3 spline with
 /// double knots elevated to degree 7 comes back with the same knot vector and the points
@@ -87,8 +93,33 @@ pub fn reduce_bspline_piegl_tiller(
     tolerance: f64,
     measure: bool,
 ) -> Result<BSplineReduction> {
-    let (p, m, dim) = (curve.degree(), target, curve.dim());
     check_tolerance(tolerance)?;
+    let Some((frame, moved)) = framed::frame_curve(curve, tolerance)? else {
+        return piegl_tiller_at(curve, target, tolerance, measure);
+    };
+    let mut red = piegl_tiller_at(&moved, target, frame.inner_tol, false)?;
+    let out = red.curve.points().to_vec();
+    red.curve = framed::unframe_curve(&frame, &red.curve)?;
+    red.report.tolerance = tolerance;
+    red.report.error_bound = frame.finish(red.report.error_bound, &out);
+    red.report.segment_bound = frame.finish(red.report.segment_bound, &out);
+    if red.report.error_bound > tolerance {
+        return Err(fail("the model-space bound exceeds the tolerance"));
+    }
+    if measure {
+        red.report.max_error = Some(spline_max_deviation(curve, &red.curve)?);
+    }
+    Ok(red)
+}
+
+/// [`reduce_bspline_piegl_tiller`] on a polynomial or framed rational curve.
+fn piegl_tiller_at(
+    curve: &BSplineCurve,
+    target: usize,
+    tolerance: f64,
+    measure: bool,
+) -> Result<BSplineReduction> {
+    let (p, m, dim) = (curve.degree(), target, curve.dim());
     if m == 0 || m >= p {
         return Err(Error::BadDegreePair {
             from: p,

@@ -7,6 +7,5 @@ mod patchwise;
 mod tolerance;
 
 pub use fit::{SurfaceFitOptions, SurfaceFitReduction, reduce_bspline_surface_fit};
-pub(crate) use patchwise::sampled_error;
 pub use patchwise::{SurfaceOptions, SurfaceReduction, reduce_bspline_surface};
-pub use tolerance::{MAX_SURFACE_LEVEL, reduce_bspline_surface_to_tolerance};
+pub use tolerance::{MAX_SURFACE_LEVEL, MAX_SURFACE_PATCHES, reduce_bspline_surface_to_tolerance};

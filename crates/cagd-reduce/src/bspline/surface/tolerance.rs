@@ -10,10 +10,19 @@
 use cagd_core::{BSplineSurface, Error, Result, check_tolerance};
 
 use super::patchwise::{SurfaceOptions, SurfaceReduction, reduce_bspline_surface};
+use crate::bspline::measure::surface_max_deviation;
 
 /// Deepest uniform refinement tried by [`reduce_bspline_surface_to_tolerance`]: `2^6 = 64`
 /// spans per input span and direction.
 pub const MAX_SURFACE_LEVEL: usize = 6;
+
+/// The work cap of [`reduce_bspline_surface_to_tolerance`]: a refinement level whose
+/// surface would have more Bézier patches than this (and more than the input has) is not
+/// tried; the reduction fails with [`Error::NoConvergence`] (the tolerance and the best
+/// bound reached) instead. Level `L` has `4^L` patches per input patch, so a 16 x 16-span
+/// surface stops at level 4 (`2^16 = 65 536` patches, about a second to reduce in a release
+/// build) rather than growing to `1 048 576` patches at level 6.
+pub const MAX_SURFACE_PATCHES: usize = 1 << 16;
 
 /// The distinct interior values to insert so that every non-empty span of `knots` (on the
 /// domain `[knots[p], knots[len - p - 1]]`) is split into `parts` equal spans.
@@ -32,6 +41,18 @@ fn midpoints(knots: &[f64], p: usize, parts: usize) -> Vec<f64> {
         }
     }
     out
+}
+
+/// The number of non-empty spans of `knots` (degree `p`) on its domain.
+fn spans(knots: &[f64], p: usize) -> usize {
+    let (lo, hi) = (knots[p], knots[knots.len() - p - 1]);
+    let mut inner: Vec<f64> = knots
+        .iter()
+        .copied()
+        .filter(|k| *k >= lo && *k <= hi)
+        .collect();
+    inner.dedup();
+    inner.len().saturating_sub(1).max(1)
 }
 
 fn refine(s: &BSplineSurface, level: usize) -> Result<BSplineSurface> {
@@ -54,27 +75,65 @@ fn refine(s: &BSplineSurface, level: usize) -> Result<BSplineSurface> {
 ///
 /// # Errors
 /// [`Error::BadTolerance`]; the errors of [`reduce_bspline_surface`];
-/// [`Error::NoConvergence`] when level [`MAX_SURFACE_LEVEL`] is not enough (with the best
-/// bound reached).
+/// [`Error::NoConvergence`] when level [`MAX_SURFACE_LEVEL`], or the deepest level within
+/// [`MAX_SURFACE_PATCHES`], is not enough (with the best bound reached): bounded work;
+/// [`Error::NonPositiveWeight`] only when a reduced weight is negative at every level
+/// tried (a coarse level's negative weight moves on to the next level).
 pub fn reduce_bspline_surface_to_tolerance(
     s: &BSplineSurface,
     opts: &SurfaceOptions,
     tolerance: f64,
 ) -> Result<SurfaceReduction> {
     check_tolerance(tolerance)?;
+    reduce_to_tolerance_capped(s, opts, tolerance, MAX_SURFACE_PATCHES)
+}
+
+/// [`reduce_bspline_surface_to_tolerance`] with at most `cap` patches per level (beyond the
+/// input's own).
+fn reduce_to_tolerance_capped(
+    s: &BSplineSurface,
+    opts: &SurfaceOptions,
+    tolerance: f64,
+    cap: usize,
+) -> Result<SurfaceReduction> {
+    let (p, q) = s.degrees();
+    let patches = spans(s.knots_u(), p).saturating_mul(spans(s.knots_v(), q));
+    let inner = SurfaceOptions {
+        measure: false,
+        ..*opts
+    };
     let mut best = f64::INFINITY;
+    let mut weight_error = None;
     for level in 0..=MAX_SURFACE_LEVEL {
+        if level > 0 && patches.saturating_mul(1 << (2 * level)) > cap {
+            break;
+        }
         let refined = refine(s, level)?;
-        let red = reduce_bspline_surface(&refined, opts)?;
+        let mut red = match reduce_bspline_surface(&refined, &inner) {
+            Ok(red) => red,
+            // A reduced weight of a coarse patch may be negative where the finer patches'
+            // are not (their weights vary less): try the next level.
+            Err(e @ Error::NonPositiveWeight { .. }) => {
+                weight_error = Some(e);
+                continue;
+            }
+            Err(e) => return Err(e),
+        };
         if red.error_bound <= tolerance {
+            if opts.measure {
+                red.max_error = Some(surface_max_deviation(&refined, &red.surface)?);
+            }
             return Ok(red);
         }
         best = best.min(red.error_bound);
     }
-    Err(Error::NoConvergence {
-        tolerance,
-        achieved: best,
-    })
+    match weight_error {
+        Some(e) if best.is_infinite() => Err(e),
+        _ => Err(Error::NoConvergence {
+            tolerance,
+            achieved: best,
+        }),
+    }
 }
 
 #[cfg(test)]
@@ -137,6 +196,28 @@ mod tests {
             reduce_bspline_surface_to_tolerance(&s, &opts, 1e-300),
             Err(Error::NoConvergence { .. })
         ));
+    }
+
+    #[test]
+    fn the_patch_cap_bounds_the_levels_tried() {
+        // 2 x 2 spans: levels 0, 1, 2 have 4, 16, 64 patches.
+        let s = surface();
+        let opts = SurfaceOptions::new((2, 2));
+        let full = reduce_bspline_surface_to_tolerance(&s, &opts, 1e-5).unwrap();
+        assert!(full.patches > 64, "{} patches", full.patches);
+        // Under a cap of 64 patches level 3 is not tried: refused with the best bound.
+        match reduce_to_tolerance_capped(&s, &opts, 1e-5, 64) {
+            Err(Error::NoConvergence {
+                tolerance,
+                achieved,
+            }) => {
+                assert_eq!(tolerance, 1e-5);
+                assert!(achieved > 1e-5 && achieved.is_finite());
+            }
+            other => panic!("expected NoConvergence, got {other:?}"),
+        }
+        let again = reduce_to_tolerance_capped(&s, &opts, 1e-5, full.patches).unwrap();
+        assert_eq!(again.surface, full.surface);
     }
 
     #[test]

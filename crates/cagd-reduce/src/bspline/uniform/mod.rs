@@ -15,6 +15,7 @@ use cagd_core::{
     BSplineCurve, BezierCurve, Error, Result, s_matrix, s_matrix_exact, s_matrix_inverse_exact,
 };
 
+use super::framed;
 use super::measure::euclidean_from_homogeneous;
 use crate::bezier::{hull_bound, max_norm};
 use crate::exact::{Q, RatMat};
@@ -130,6 +131,12 @@ fn uniform_spacing(knots: &[f64]) -> Result<f64> {
 /// segment go to its Bézier points by `S^(n)` (eq. 5), `method` reduces them
 /// (`T_{n,m}`; "any published method", §3.3), and `merge` joins the results (§4).
 ///
+/// A NURBS is reduced in its frame (centred at the origin, scaled to radius 1; moved
+/// back after, the rounding added to the bounds; ADDED, beyond
+/// the seed), so its model-space bounds are the centred, unit-consistent ones
+/// ([`cagd_core::centred_rational_bound`]): the same curve moved or scaled gives the same
+/// result, and bounds that scale with it.
+///
 /// The seed's worked example (SPEC-reduce §8, vector `001-example`: degree 7, 9 points,
 /// knots 0..16 -> degree 3 by the C1 Hermite reduction `ConstrainedChebyshev { r: 1, p: 1 }`,
 /// lossy merge) is reproduced: Bézier points of both segments, reduced Bézier points, local
@@ -163,6 +170,41 @@ fn uniform_spacing(knots: &[f64]) -> Result<f64> {
 /// # Ok::<(), cagd_reduce::Error>(())
 /// ```
 pub fn reduce_uniform_bspline(
+    curve: &BSplineCurve,
+    m: usize,
+    method: Method,
+    merge: Merge,
+) -> Result<UniformReduction> {
+    let Some((frame, moved)) = framed::frame_curve(curve, f64::INFINITY)? else {
+        return uniform_at(curve, m, method, merge);
+    };
+    let red = uniform_at(&moved, m, method, merge)?;
+    let out = red.curve.points().to_vec();
+    let seg_out: Vec<f64> = red
+        .segments
+        .iter()
+        .flat_map(|s| s.points().iter().copied())
+        .collect();
+    let segments = red
+        .segments
+        .iter()
+        .map(|s| match s.weights() {
+            Some(w) => {
+                BezierCurve::new_rational(frame.frame.from_frame(s.points()), w.to_vec(), s.dim())
+            }
+            None => BezierCurve::new(frame.frame.from_frame(s.points()), s.dim()),
+        })
+        .collect::<Result<_>>()?;
+    Ok(UniformReduction {
+        curve: framed::unframe_curve(&frame, &red.curve)?,
+        segments,
+        segment_bound: frame.finish(red.segment_bound, &seg_out),
+        error_bound: frame.finish(red.error_bound, &out),
+    })
+}
+
+/// [`reduce_uniform_bspline`] on a polynomial or framed rational curve.
+fn uniform_at(
     curve: &BSplineCurve,
     m: usize,
     method: Method,

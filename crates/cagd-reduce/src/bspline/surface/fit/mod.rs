@@ -15,10 +15,10 @@
 
 use cagd_core::{BSplineCurve, BSplineSurface, Error, Result, check_tolerance};
 
-use super::patchwise::sampled_error;
 use crate::bspline::fit::Source;
 use crate::bspline::global::{fit_to_budget, initial_knots};
 use crate::bspline::knots::{LocalBounds, Raw};
+use crate::bspline::measure::surface_max_deviation;
 
 /// Share of a direction's tolerance the fit must meet; the rest is for knot removal.
 const FIT_SHARE: f64 = 0.9;
@@ -34,7 +34,8 @@ pub struct SurfaceFitOptions {
     /// The continuity `k` to keep across the input's knot lines; `None`: the most a reduced
     /// direction can carry, `m - 1`.
     pub continuity: Option<usize>,
-    /// Also measure the error on a `17 x 17` grid per input patch.
+    /// Also measure the error ([`crate::surface_max_deviation`]: sampled and locally
+    /// maximised on every cell).
     pub measure: bool,
 }
 
@@ -232,7 +233,7 @@ pub fn reduce_bspline_surface_fit(
         BSplineSurface::new((mu, mv), ku, kv, net, (n1, n2), dim)?
     };
     let max_error = if opts.measure {
-        Some(sampled_error(s, &surface, &s.to_beziers()?)?)
+        Some(surface_max_deviation(s, &surface)?)
     } else {
         None
     };

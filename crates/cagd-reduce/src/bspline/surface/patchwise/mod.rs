@@ -7,7 +7,8 @@
 use cagd_core::{BSplineSurface, Error, Result, knot_multiplicity};
 
 use crate::bezier::max_norm;
-use crate::bspline::measure::euclidean_from_homogeneous;
+use crate::bspline::framed;
+use crate::bspline::measure::{euclidean_from_homogeneous, surface_max_deviation};
 use crate::{Method, operator};
 
 /// Options of [`reduce_bspline_surface`].
@@ -22,7 +23,8 @@ pub struct SurfaceOptions {
     /// [`Method::ConstrainedChebyshev`] (default) or [`Method::L2`]; `r, p` are set per
     /// patch side.
     pub method: Method,
-    /// Also measure the error on a `17 x 17` grid per input patch.
+    /// Also measure the error ([`surface_max_deviation`]: sampled and locally maximised on
+    /// every cell of both surfaces' knot lines).
     pub measure: bool,
 }
 
@@ -45,7 +47,7 @@ pub struct SurfaceReduction {
     pub surface: BSplineSurface,
     /// Certified bound of `max ||S(u,v) - S'(u,v)||` (Euclidean, model space).
     pub error_bound: f64,
-    /// The sampled error (on request).
+    /// The measured error `max ||S - S'||` (on request; [`surface_max_deviation`]).
     pub max_error: Option<f64>,
     /// Number of Bézier patches.
     pub patches: usize,
@@ -114,8 +116,13 @@ fn reduce_curves(
 /// **Bound.** `S - S' = (S - S_u) + (S_u - S')`; for fixed `v` the first is a convex
 /// combination of the column errors, so it is at most the largest certified column bound,
 /// likewise the second with the rows. Plus the merge's change of shared boundary points
-/// (their average is stored; certified by the convex hull), per patch; for NURBS converted
-/// to model space as in [`crate::reduce_with`].
+/// (their average is stored; certified by the convex hull), per patch. A NURBS is reduced
+/// in its frame (centred at the origin, scaled to radius 1; moved back after, the rounding added), where the homogeneous bound becomes the
+/// centred model-space one ([`cagd_core::centred_rational_bound`]): unit-consistent, so
+/// the same surface moved or scaled gets a bound that scales with it.
+///
+/// `max_error` (on request) is measured by [`surface_max_deviation`]: dense sampling plus
+/// local maximisation on every cell, not a bare grid.
 ///
 /// # Errors
 /// [`Error::BadDegreePair`] (a target 0 or above the degree, or both equal);
@@ -139,6 +146,31 @@ pub fn reduce_bspline_surface(
     s: &BSplineSurface,
     opts: &SurfaceOptions,
 ) -> Result<SurfaceReduction> {
+    let Some((frame, moved)) = framed::frame_surface(s, f64::INFINITY)? else {
+        return patchwise_at(s, opts);
+    };
+    let inner = SurfaceOptions {
+        measure: false,
+        ..*opts
+    };
+    let red = patchwise_at(&moved, &inner)?;
+    let out = red.surface.points().to_vec();
+    let surface = framed::unframe_surface(&frame, &red.surface)?;
+    let max_error = if opts.measure {
+        Some(surface_max_deviation(s, &surface)?)
+    } else {
+        None
+    };
+    Ok(SurfaceReduction {
+        surface,
+        error_bound: frame.finish(red.error_bound, &out),
+        max_error,
+        patches: red.patches,
+    })
+}
+
+/// [`reduce_bspline_surface`] on a polynomial or framed rational surface.
+fn patchwise_at(s: &BSplineSurface, opts: &SurfaceOptions) -> Result<SurfaceReduction> {
     let ((p, q), (mu, mv)) = (s.degrees(), opts.target);
     if mu == 0 || mv == 0 || mu > p || mv > q || (mu == p && mv == q) {
         return Err(Error::BadDegreePair {
@@ -296,7 +328,7 @@ pub fn reduce_bspline_surface(
         )
     };
     let max_error = if opts.measure {
-        Some(sampled_error(s, &surface, &pieces)?)
+        Some(surface_max_deviation(s, &surface)?)
     } else {
         None
     };
@@ -306,31 +338,6 @@ pub fn reduce_bspline_surface(
         max_error,
         patches: pieces.len(),
     })
-}
-
-/// The largest distance on a `17 x 17` grid per input patch.
-pub(crate) fn sampled_error(
-    a: &BSplineSurface,
-    b: &BSplineSurface,
-    pieces: &[cagd_core::SurfacePatchPiece],
-) -> Result<f64> {
-    let mut best = 0.0f64;
-    for piece in pieces {
-        for i in 0..=16 {
-            for j in 0..=16 {
-                let u = piece.u.0 + (piece.u.1 - piece.u.0) * f64::from(i) / 16.0;
-                let v = piece.v.0 + (piece.v.1 - piece.v.0) * f64::from(j) / 16.0;
-                let (x, y) = (a.eval(u, v)?, b.eval(u, v)?);
-                let d = x
-                    .iter()
-                    .zip(&y)
-                    .map(|(p, q)| (p - q) * (p - q))
-                    .sum::<f64>();
-                best = best.max(d.sqrt());
-            }
-        }
-    }
-    Ok(best)
 }
 
 #[cfg(test)]
