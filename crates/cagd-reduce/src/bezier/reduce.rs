@@ -2,6 +2,7 @@
 
 use cagd_core::{BezierCurve, Error, Result};
 
+use super::bound::BoundLevel;
 use super::measure::max_deviation;
 use super::method::Method;
 use super::operator::operator;
@@ -29,8 +30,13 @@ pub struct Report {
     /// Target degree `m`.
     pub degree_to: usize,
     /// Certified upper bound of the error in [`Report::space`] (never below the true
-    /// error, `f64` rounding included). `None` only if no bound could be formed.
+    /// error, `f64` rounding included). `None` when [`Report::bound_level`] is
+    /// [`BoundLevel::None`] (no bound asked for).
     pub error_bound: Option<f64>,
+    /// The bound level `error_bound` was computed at ([`ReduceOptions::bound`]; the
+    /// functions that always certify, such as [`crate::reduce_g1_optimal`], report
+    /// [`BoundLevel::Tight`]).
+    pub bound_level: BoundLevel,
     /// The sampled error in [`Report::space`] (on request, see [`crate::max_deviation`]).
     pub max_error: Option<f64>,
     /// Which space `error_bound` and `max_error` refer to.
@@ -61,6 +67,10 @@ pub struct ReduceOptions {
     pub measure: bool,
     /// The space the reported numbers refer to (matters for rational curves only).
     pub space: ErrorSpace,
+    /// How much work the certified bound may take (default [`BoundLevel::Tight`];
+    /// [`BoundLevel::None`]: no bound, the report's `error_bound` is `None`). Used by
+    /// [`reduce_with`]; the other reducers always certify.
+    pub bound: BoundLevel,
 }
 
 impl ReduceOptions {
@@ -71,6 +81,7 @@ impl ReduceOptions {
             target,
             measure: false,
             space: ErrorSpace::Euclidean,
+            bound: BoundLevel::Tight,
         }
     }
 }
@@ -103,16 +114,17 @@ pub fn reduce_with(curve: &BezierCurve, opts: &ReduceOptions) -> Result<Reductio
     let op = operator(opts.method, curve.degree(), opts.target)?;
     finish(curve, opts, |pts, dim| {
         let q = op.apply(pts, dim)?;
-        let bound = op.error_bound(pts, &q, dim)?;
+        let bound = op.certified_bound(pts, dim, opts.bound)?;
         Ok((q, bound, opts.method))
     })
 }
 
-/// Runs a reduction `f(points, dim) -> (reduced points, certified bound, method used)` on
-/// the curve's (homogeneous, if rational) points and assembles the [`Reduction`].
+/// Runs a reduction `f(points, dim) -> (reduced points, certified bound or None, method
+/// used)` on the curve's (homogeneous, if rational) points and assembles the [`Reduction`]
+/// (with `opts.bound` as the reported bound level).
 pub(crate) fn finish<F>(curve: &BezierCurve, opts: &ReduceOptions, f: F) -> Result<Reduction>
 where
-    F: FnOnce(&[f64], usize) -> Result<(Vec<f64>, f64, Method)>,
+    F: FnOnce(&[f64], usize) -> Result<(Vec<f64>, Option<f64>, Method)>,
 {
     let dim = curve.dim();
     let Some(w) = curve.weights() else {
@@ -128,7 +140,8 @@ where
                 method,
                 degree_from: curve.degree(),
                 degree_to: reduced.degree(),
-                error_bound: Some(bound),
+                error_bound: bound,
+                bound_level: opts.bound,
                 max_error,
                 space: ErrorSpace::Euclidean,
                 homogeneous_bound: None,
@@ -153,12 +166,11 @@ where
         .map(|p| p.iter().map(|x| x * x).sum::<f64>().sqrt())
         .fold(0.0, f64::max);
     let wmin = w.iter().copied().fold(f64::INFINITY, f64::min);
-    let vmin = v
-        .iter()
-        .copied()
-        .fold(f64::INFINITY, f64::min)
-        .max(wmin - eps_h);
-    let eucl = eps_h * (1.0 + pmax) / vmin * (1.0 + 8.0 * f64::EPSILON);
+    let vmin_q = v.iter().copied().fold(f64::INFINITY, f64::min);
+    let eucl = eps_h.map(|e| {
+        let vmin = vmin_q.max(wmin - e);
+        e * (1.0 + pmax) / vmin * (1.0 + 8.0 * f64::EPSILON)
+    });
     let (bound, max_error) = match opts.space {
         ErrorSpace::Euclidean => {
             let me = if opts.measure {
@@ -185,10 +197,11 @@ where
             method,
             degree_from: curve.degree(),
             degree_to: reduced.degree(),
-            error_bound: Some(bound),
+            error_bound: bound,
+            bound_level: opts.bound,
             max_error,
             space: opts.space,
-            homogeneous_bound: Some(eps_h),
+            homogeneous_bound: eps_h,
         },
         curve: reduced,
     })
