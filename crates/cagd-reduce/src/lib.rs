@@ -104,7 +104,7 @@
 //! `P - E Q` written in degree `n` on 4 midpoint pieces is one precomputed
 //! `(4 (n+1)) x (n+1)` map applied to `P` (one more GEMM), and the largest control-point
 //! norm of the pieces bounds the error (convex hull); [`BoundLevel::Tight`] then splits
-//! the pieces that may hold the maximum until the bound is within 4 % of a curve value.
+//! the pieces that may hold the maximum until the bound is within 8 % of a curve value.
 //! [`ReduceOptions::bound`] picks the level of a single reduction ([`BoundLevel::None`]
 //! skips the bound). Figures: `benches/README.md`.
 //!

@@ -161,14 +161,38 @@ impl LinearMap {
     }
 }
 
-/// Fixed-dimension loop over curves.
+/// Fixed-dimension loop over curves, four rows at a time (independent accumulators, so
+/// the multiply-adds of one curve overlap instead of waiting on one another).
 fn loop_fixed<const D: usize>(a: &[f64], cols: usize, input: &[f64], output: &mut [f64]) {
     let rows = a.len() / cols;
     for (inp, out) in input
         .chunks_exact(cols * D)
         .zip(output.chunks_exact_mut(rows * D))
     {
-        for (row, o) in a.chunks_exact(cols).zip(out.chunks_exact_mut(D)) {
+        let mut quads = a.chunks_exact(4 * cols);
+        let mut outs = out.chunks_exact_mut(4 * D);
+        for (rows4, o) in (&mut quads).zip(&mut outs) {
+            let (r0, rest) = rows4.split_at(cols);
+            let (r1, rest) = rest.split_at(cols);
+            let (r2, r3) = rest.split_at(cols);
+            let mut acc = [[0.0f64; D]; 4];
+            for ((((x, c0), c1), c2), c3) in inp.chunks_exact(D).zip(r0).zip(r1).zip(r2).zip(r3) {
+                for k in 0..D {
+                    acc[0][k] += c0 * x[k];
+                    acc[1][k] += c1 * x[k];
+                    acc[2][k] += c2 * x[k];
+                    acc[3][k] += c3 * x[k];
+                }
+            }
+            for (o1, a1) in o.chunks_exact_mut(D).zip(&acc) {
+                o1.copy_from_slice(a1);
+            }
+        }
+        for (row, o) in quads
+            .remainder()
+            .chunks_exact(cols)
+            .zip(outs.into_remainder().chunks_exact_mut(D))
+        {
             let mut acc = [0.0f64; D];
             for (&c, x) in row.iter().zip(inp.chunks_exact(D)) {
                 for k in 0..D {

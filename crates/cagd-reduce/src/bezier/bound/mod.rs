@@ -32,9 +32,10 @@ pub enum BoundLevel {
     /// true error.
     Fast,
     /// As [`BoundLevel::Fast`], then the pieces that may hold the maximum are split
-    /// further (branch and bound) until the bound is within 4 % of a curve value: at most
-    /// 1.04× the true error (plus the rounding allowance), except when a piece reaches 16
-    /// extra levels first (then still a true bound). The default.
+    /// further (best-first branch and bound) until the bound is within 8 % of a curve
+    /// value: at most 1.08× the true error (plus the rounding allowance), except when a
+    /// piece reaches 16 extra levels or 4096 splits are spent first (then still a true
+    /// bound). The default.
     #[default]
     Tight,
 }

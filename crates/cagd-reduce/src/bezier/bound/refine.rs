@@ -1,26 +1,33 @@
 //! From the pieces of the error curve to a number (goes beyond the seed; the convex-hull
-//! argument is seed 000 §14.4.3): the largest control-point norm over the pieces, and, for
-//! the tight level, branch and bound — a piece whose hull is within `1 + TIGHT_SLACK` of
-//! the largest curve value seen so far (piece end points are curve points) is settled,
-//! any other is split at its midpoint (de Casteljau) until it is, or until
-//! `MAX_REFINE` more levels.
+//! argument is seed 000 §14.4.3): the largest per-piece bound (hull or chord bound) over
+//! the pieces, and, for the tight level, best-first branch and bound — the piece with the
+//! largest bound is split at its midpoint (de Casteljau; its end points are curve points
+//! and raise the lower bound) until every remaining piece's bound is within
+//! `1 + TIGHT_SLACK` of the largest curve value seen, or a piece reaches `MAX_REFINE`
+//! more levels.
+
+use std::collections::BinaryHeap;
 
 use cagd_core::kernel::subdivide;
 
-/// The tight level stops refining a piece once its hull is within this relative margin of
-/// a curve value already seen: the bound is then within `1 + TIGHT_SLACK` of the true
+/// The tight level stops once every piece's bound is within this relative margin of a
+/// curve value already seen: the bound is then within `1 + TIGHT_SLACK` of the true
 /// maximum (rounding allowance aside).
-pub(crate) const TIGHT_SLACK: f64 = 0.04;
+pub(crate) const TIGHT_SLACK: f64 = 0.08;
 
 /// Most extra midpoint levels the tight level adds to a piece.
 pub(crate) const MAX_REFINE: usize = 16;
 
-fn norm(p: &[f64]) -> f64 {
-    p.iter().map(|v| v * v).sum::<f64>().sqrt()
+/// Most midpoint splits the tight level makes for one curve (bounded work and memory:
+/// when they are used up, the largest remaining piece bound is the bound).
+pub(crate) const MAX_SPLITS: usize = 4096;
+
+fn norm2(p: &[f64]) -> f64 {
+    p.iter().map(|v| v * v).sum::<f64>()
 }
 
-fn hull(points: &[f64], dim: usize) -> f64 {
-    points.chunks_exact(dim).map(norm).fold(0.0, f64::max)
+fn hull2(points: &[f64], dim: usize) -> f64 {
+    points.chunks_exact(dim).map(norm2).fold(0.0, f64::max)
 }
 
 /// A bound of `max_t ||D(t)||` over one piece: the smaller of its hull (largest
@@ -32,40 +39,49 @@ fn hull(points: &[f64], dim: usize) -> f64 {
 fn piece_value(p: &[f64], dim: usize) -> f64 {
     let len = p.len();
     if len == dim {
-        return norm(p);
+        return norm2(p).sqrt();
     }
     let n = (len / dim - 1) as f64;
     let (d0, dn) = (&p[..dim], &p[len - dim..]);
-    let mut dev: f64 = 0.0;
+    let (mut dev, mut hull): (f64, f64) = (0.0, 0.0);
     for (i, d) in p.chunks_exact(dim).enumerate() {
         let s = i as f64 / n;
-        let e: f64 = (0..dim)
-            .map(|k| {
-                let v = d[k] - ((1.0 - s) * d0[k] + s * dn[k]);
-                v * v
-            })
-            .sum();
+        let (mut e, mut h) = (0.0, 0.0);
+        for k in 0..dim {
+            let v = d[k] - ((1.0 - s) * d0[k] + s * dn[k]);
+            e += v * v;
+            h += d[k] * d[k];
+        }
         dev = dev.max(e);
+        hull = hull.max(h);
     }
-    let chord = norm(d0).max(norm(dn)) + dev.sqrt();
-    hull(p, dim).min(chord)
+    let chord = norm2(d0).max(norm2(dn)).sqrt() + dev.sqrt();
+    hull.sqrt().min(chord)
+}
+
+/// A piece waiting in the branch and bound: its bound (non-negative, so the bit pattern
+/// orders like the value), its place in the arena, its depth.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+struct Node {
+    key: u64,
+    at: usize,
+    depth: usize,
 }
 
 /// Reusable buffers of the tight refinement (one per batch, so no allocation per curve).
 #[derive(Debug, Default)]
 pub(crate) struct Scratch {
-    stack: Vec<f64>,
-    depth: Vec<usize>,
-    piece: Vec<f64>,
+    arena: Vec<f64>,
+    heap: BinaryHeap<Node>,
 }
 
 /// The bound from `pieces` (`count` pieces of `n1` control points of `dim` coordinates,
-/// one after the other, as computed): the largest control-point norm, refined by branch
-/// and bound when `tight`. Includes the rounding of the norms and of the refinement
+/// one after the other, as computed): the largest per-piece bound, refined by best-first
+/// branch and bound when `tight`. Includes the rounding of the norms and of the refinement
 /// (`(depth (n1 - 1) + dim + 16) eps` of the largest control-point norm: in every de
 /// Casteljau split a computed point moves by at most `(n1 - 1) eps` of it, and the chord
 /// bound's arithmetic adds at most `12 eps` of it), not that of computing `pieces` (the
-/// caller adds it). For `n1 = 1` (degree 0) the chord bound is skipped.
+/// caller adds it).
 pub(crate) fn pieces_bound(
     pieces: &[f64],
     n1: usize,
@@ -74,57 +90,78 @@ pub(crate) fn pieces_bound(
     scratch: &mut Scratch,
 ) -> f64 {
     let len = n1 * dim;
-    let top = hull(pieces, dim);
     let eps = f64::EPSILON;
+    let top = hull2(pieces, dim).sqrt();
     if top == 0.0 {
         return 0.0;
     }
+    let finish = |v: f64, deepest: usize| {
+        v * (1.0 + (dim as f64 + 4.0) * eps) + ((deepest * (n1 - 1) + dim + 16) as f64) * eps * top
+    };
     if !tight {
         let v = pieces
             .chunks_exact(len)
             .map(|p| piece_value(p, dim))
             .fold(0.0, f64::max);
-        return v * (1.0 + (dim as f64 + 4.0) * eps) + ((dim + 16) as f64) * eps * top;
+        return finish(v, 0);
     }
     // Largest curve value seen: the end points of the pieces.
-    let mut lower: f64 = 0.0;
+    let mut lower2: f64 = 0.0;
     for p in pieces.chunks_exact(len) {
-        lower = lower.max(norm(&p[..dim])).max(norm(&p[len - dim..]));
+        lower2 = lower2.max(norm2(&p[..dim])).max(norm2(&p[len - dim..]));
     }
+    let mut lower = lower2.sqrt();
     let settle = 1.0 + TIGHT_SLACK;
-    let mut upper: f64 = 0.0;
-    let mut deepest = 0;
-    scratch.stack.clear();
-    scratch.depth.clear();
-    for p in pieces.chunks_exact(len) {
-        let h = piece_value(p, dim);
-        if h <= settle * lower {
-            upper = upper.max(h);
-        } else {
-            scratch.stack.extend_from_slice(p);
-            scratch.depth.push(0);
-        }
+    let (arena, heap) = (&mut scratch.arena, &mut scratch.heap);
+    arena.clear();
+    heap.clear();
+    arena.extend_from_slice(pieces);
+    for (i, p) in pieces.chunks_exact(len).enumerate() {
+        let v = piece_value(p, dim);
+        heap.push(Node {
+            key: v.to_bits(),
+            at: i * len,
+            depth: 0,
+        });
     }
-    scratch.piece.resize(len, 0.0);
-    while let Some(depth) = scratch.depth.pop() {
-        let at = scratch.stack.len() - len;
-        scratch.piece.copy_from_slice(&scratch.stack[at..]);
-        let h = piece_value(&scratch.piece, dim);
-        if h <= settle * lower || depth == MAX_REFINE {
-            scratch.stack.truncate(at);
-            upper = upper.max(h);
-            deepest = deepest.max(depth);
+    let (mut upper, mut deepest): (f64, usize) = (0.0, 0);
+    let mut splits = 0;
+    while let Some(&node) = heap.peek() {
+        let v = f64::from_bits(node.key);
+        if v.is_nan() {
+            return f64::NAN;
+        }
+        if v <= settle * lower || splits == MAX_SPLITS {
+            // Every remaining piece is settled (or the budget is spent): the largest is
+            // this one.
+            upper = upper.max(v);
+            deepest = deepest.max(heap.iter().map(|n| n.depth).max().unwrap_or(0));
+            break;
+        }
+        heap.pop();
+        if node.depth == MAX_REFINE {
+            upper = upper.max(v);
+            deepest = deepest.max(node.depth);
             continue;
         }
-        // Replace the piece by its two halves on the stack.
-        scratch.stack.resize(at + 2 * len, 0.0);
-        let (left, right) = scratch.stack[at..].split_at_mut(len);
-        subdivide(&scratch.piece, dim, 0.5, left, right);
-        lower = lower.max(norm(&right[..dim]));
-        scratch.depth.push(depth + 1);
-        scratch.depth.push(depth + 1);
+        splits += 1;
+        let at = arena.len();
+        arena.resize(at + 2 * len, 0.0);
+        let (old, new) = arena.split_at_mut(at);
+        let (left, right) = new.split_at_mut(len);
+        subdivide(&old[node.at..node.at + len], dim, 0.5, left, right);
+        lower = lower.max(norm2(&right[..dim]).sqrt());
+        for (child, off) in [(&*left, at), (&*right, at + len)] {
+            heap.push(Node {
+                key: piece_value(child, dim).to_bits(),
+                at: off,
+                depth: node.depth + 1,
+            });
+        }
     }
-    upper * (1.0 + (dim as f64 + 4.0) * eps) + ((deepest * (n1 - 1) + dim + 16) as f64) * eps * top
+    // (A NaN piece value sorts above every number, so it is seen first and returned as NaN,
+    // which the caller turns into +inf.)
+    finish(upper, deepest)
 }
 
 #[cfg(test)]
