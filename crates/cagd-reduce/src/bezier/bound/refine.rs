@@ -8,8 +8,6 @@
 
 use std::collections::BinaryHeap;
 
-use cagd_core::kernel::subdivide;
-
 /// The tight level stops once every piece's bound is within this relative margin of a
 /// curve value already seen: the bound is then within `1 + TIGHT_SLACK` of the true
 /// maximum (rounding allowance aside).
@@ -57,6 +55,33 @@ fn piece_value(p: &[f64], dim: usize) -> f64 {
     }
     let chord = norm2(d0).max(norm2(dn)).sqrt() + dev.sqrt();
     hull.sqrt().min(chord)
+}
+
+/// Splits a piece at `t = 1/2` (de Casteljau) into `left` and `right`: the same
+/// arithmetic as `cagd_core::kernel::subdivide` at `1/2` (each new point is
+/// `0.5 a + 0.5 b`, one rounding), specialised for `dim <= 4`.
+fn split_half(p: &[f64], dim: usize, left: &mut [f64], right: &mut [f64]) {
+    match dim {
+        1 => split_fixed::<1>(p, left, right),
+        2 => split_fixed::<2>(p, left, right),
+        3 => split_fixed::<3>(p, left, right),
+        4 => split_fixed::<4>(p, left, right),
+        _ => cagd_core::kernel::subdivide(p, dim, 0.5, left, right),
+    }
+}
+
+fn split_fixed<const D: usize>(p: &[f64], left: &mut [f64], right: &mut [f64]) {
+    let np = p.len() / D;
+    right.copy_from_slice(p);
+    for level in 0..np {
+        left[level * D..(level + 1) * D].copy_from_slice(&right[..D]);
+        let live = &mut right[..(np - level) * D];
+        for i in 0..np - level - 1 {
+            for k in 0..D {
+                live[i * D + k] = 0.5 * live[i * D + k] + 0.5 * live[(i + 1) * D + k];
+            }
+        }
+    }
 }
 
 /// A piece waiting in the branch and bound: its bound (non-negative, so the bit pattern
@@ -149,7 +174,7 @@ pub(crate) fn pieces_bound(
         arena.resize(at + 2 * len, 0.0);
         let (old, new) = arena.split_at_mut(at);
         let (left, right) = new.split_at_mut(len);
-        subdivide(&old[node.at..node.at + len], dim, 0.5, left, right);
+        split_half(&old[node.at..node.at + len], dim, left, right);
         lower = lower.max(norm2(&right[..dim]).sqrt());
         for (child, off) in [(&*left, at), (&*right, at + len)] {
             heap.push(Node {
@@ -167,6 +192,20 @@ pub(crate) fn pieces_bound(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn split_half_equals_the_core_subdivision() {
+        for dim in 1..=5 {
+            let p: Vec<f64> = (0..7 * dim)
+                .map(|i| ((i * 31 % 17) as f64 - 8.0) / 3.0)
+                .collect();
+            let (mut l1, mut r1) = (vec![0.0; p.len()], vec![0.0; p.len()]);
+            let (mut l2, mut r2) = (vec![0.0; p.len()], vec![0.0; p.len()]);
+            split_half(&p, dim, &mut l1, &mut r1);
+            cagd_core::kernel::subdivide(&p, dim, 0.5, &mut l2, &mut r2);
+            assert_eq!((l1, r1), (l2, r2), "dim {dim}");
+        }
+    }
 
     #[test]
     fn the_parabola() {
