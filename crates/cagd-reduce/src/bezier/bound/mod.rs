@@ -9,7 +9,7 @@ mod refine;
 use cagd_core::Result;
 
 pub(crate) use linear::BoundMap;
-pub(crate) use refine::{Scratch, pieces_bound};
+pub(crate) use refine::{Scratch, pieces_bound, split_half};
 
 use super::operator::{Operator, check_len, max_norm};
 
@@ -70,6 +70,61 @@ impl Operator {
             level == BoundLevel::Tight,
             &mut scratch,
         )))
+    }
+
+    /// The bound of one curve from its input and its computed reduced points (the route of
+    /// the single-curve call, where `reduced` is at hand): the error curve `P - E Q` formed
+    /// from the computed `Q` (its rounding included by construction, as in seed 000
+    /// §14.4.3's hull bound), split into the same 4 pieces by de Casteljau, then the same
+    /// per-piece bounds and refinement as the linear map. Its rounding allowance is that
+    /// of the elevation and subtraction (`2 (n + 3) eps (max ||P_j|| + max ||Q_i||)`) and
+    /// of the splits (`(n eps)` of the largest difference point per level), smaller than
+    /// the map's for operators of large norm. `None` for [`BoundLevel::None`].
+    pub(crate) fn direct_bound(
+        &self,
+        points: &[f64],
+        reduced: &[f64],
+        dim: usize,
+        level: BoundLevel,
+    ) -> Option<f64> {
+        let tight = match level {
+            BoundLevel::None => return None,
+            BoundLevel::Fast => false,
+            BoundLevel::Tight => true,
+        };
+        let (n, m) = (self.degree_from(), self.degree_to());
+        let len = (n + 1) * dim;
+        let pieces_n = 1usize << FAST_LEVELS;
+        let mut pieces = vec![0.0; pieces_n * len];
+        cagd_core::kernel::elevate(reduced, dim, n - m, &mut pieces[..len]);
+        for (d, p) in pieces[..len].iter_mut().zip(points) {
+            *d = p - *d;
+        }
+        let top = max_norm(&pieces[..len], dim);
+        let (mut left, mut right) = (vec![0.0; len], vec![0.0; len]);
+        for lvl in 0..FAST_LEVELS {
+            for piece in (0..1usize << lvl).rev() {
+                split_half(
+                    &pieces[piece * len..(piece + 1) * len],
+                    dim,
+                    &mut left,
+                    &mut right,
+                );
+                pieces[2 * piece * len..(2 * piece + 1) * len].copy_from_slice(&left);
+                pieces[(2 * piece + 1) * len..(2 * piece + 2) * len].copy_from_slice(&right);
+            }
+        }
+        let eps = f64::EPSILON;
+        let mut scratch = Scratch::default();
+        let hull = pieces_bound(&pieces, n + 1, dim, tight, &mut scratch)
+            + ((FAST_LEVELS * n) as f64) * eps * top;
+        let slack = 2.0 * (n as f64 + 3.0) * eps * (max_norm(points, dim) + max_norm(reduced, dim));
+        let linear = hull * (1.0 + 4.0 * eps) + slack;
+        let bound = match self.own_bound(points, dim) {
+            Some(own) => own.min(linear),
+            None => linear,
+        };
+        Some(if bound.is_nan() { f64::INFINITY } else { bound })
     }
 
     /// The bound of one curve from its computed error pieces (see

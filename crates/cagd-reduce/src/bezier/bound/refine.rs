@@ -60,7 +60,7 @@ fn piece_value(p: &[f64], dim: usize) -> f64 {
 /// Splits a piece at `t = 1/2` (de Casteljau) into `left` and `right`: the same
 /// arithmetic as `cagd_core::kernel::subdivide` at `1/2` (each new point is
 /// `0.5 a + 0.5 b`, one rounding), specialised for `dim <= 4`.
-fn split_half(p: &[f64], dim: usize, left: &mut [f64], right: &mut [f64]) {
+pub(crate) fn split_half(p: &[f64], dim: usize, left: &mut [f64], right: &mut [f64]) {
     match dim {
         1 => split_fixed::<1>(p, left, right),
         2 => split_fixed::<2>(p, left, right),
