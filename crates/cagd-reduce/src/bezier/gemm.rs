@@ -22,6 +22,11 @@ use nalgebra::{DMatrixView, DMatrixViewMut};
 
 /// Smallest side (rows, columns, curves in a block) for which nalgebra calls its GEMM
 /// kernel rather than a column-by-column `gemv` (nalgebra 0.35 `SMALL_DIM` = 5, exclusive).
+/// Every `gemm` call below keeps all four sides at or above it, and must: nalgebra 0.35's
+/// `gemv` fallback (`axcpy_uninit`) iterates over the *slice* length of a strided vector
+/// with the stride applied again, reading and writing out of bounds on views whose row
+/// stride is not 1 (it crashed the benchmark's point-major floor for a 4-row operator).
+/// If nalgebra is upgraded, re-check its threshold.
 const KERNEL_MIN: usize = 6;
 
 /// Target size in bytes of the input of one block of curves: the block's input and output
