@@ -1,17 +1,15 @@
 //! Certified error bounds that cost about one more GEMM (goes beyond the seed; the
 //! convex-hull argument is seed 000 §14.4.3): the bound levels ([`BoundLevel`]), the
-//! precomputed piecewise error map (`linear.rs`), the refinement of its pieces into a number
+//! precomputed piecewise error map (`operator/error_map.rs`), the refinement of its pieces into a number
 //! (`refine.rs`), and the per-curve entry point [`Operator::certified_bound`].
 
-mod linear;
 mod refine;
 
 use cagd_core::Result;
 
-pub(crate) use linear::BoundMap;
 pub(crate) use refine::{Scratch, pieces_bound, split_half};
 
-use super::operator::{Operator, check_len, max_norm};
+use super::operator::{BoundMap, Operator, check_len, max_norm};
 
 /// Midpoint-subdivision levels of the error map at [`BoundLevel::Fast`]: `2^2 = 4` pieces.
 pub(crate) const FAST_LEVELS: usize = 2;
@@ -41,6 +39,16 @@ pub enum BoundLevel {
 }
 
 impl Operator {
+    /// The piecewise error map of `level` (`None` for [`BoundLevel::None`]), built on
+    /// first use.
+    pub(crate) fn bound_map(&self, level: BoundLevel) -> Option<&BoundMap> {
+        match level {
+            BoundLevel::None => None,
+            BoundLevel::Fast => Some(self.error_map(0, FAST_LEVELS)),
+            BoundLevel::Tight => Some(self.error_map(1, TIGHT_LEVELS)),
+        }
+    }
+
     /// A certified upper bound of `max_t ||P(t) - Q(t)||` (Euclidean, in the space of the
     /// given points) for the input `points` (`n + 1` points of `dim` coordinates) and the
     /// reduced points `Q` that [`Operator::apply`] gives for them (their `f64` rounding

@@ -9,11 +9,11 @@ use cagd_core::{Error, Result};
 
 mod chebyshev;
 mod ends;
+mod error_map;
 mod hull;
 mod least_squares;
 mod one_step;
 
-use super::bound::{BoundLevel, BoundMap, FAST_LEVELS, TIGHT_LEVELS};
 use super::gemm::LinearMap;
 use super::method::Method;
 use crate::exact::{RatMat, Row, Scaled};
@@ -22,6 +22,7 @@ use least_squares::{ginv_ends, l2};
 use one_step::{residual_term, step};
 
 pub use chebyshev::{ChebyshevTerms, constrained_chebyshev_terms};
+pub(crate) use error_map::BoundMap;
 pub use one_step::eck_lambdas;
 
 /// One term `coef * ||sum_j g_j P_j||` of a method's own error bound.
@@ -44,8 +45,7 @@ pub struct Operator {
     /// The matrix and its GEMM data path.
     map: LinearMap,
     terms: Vec<BoundTerm>,
-    /// The piecewise error maps of [`BoundLevel::Fast`] and [`BoundLevel::Tight`], built
-    /// on first use.
+    /// The piecewise error maps of the fast and the tight bound level, built on first use.
     bound_maps: [OnceLock<BoundMap>; 2],
     /// `max_i sum_j |a_ij|` (rounding amplification of the operator).
     op_norm: f64,
@@ -189,18 +189,12 @@ impl Operator {
         &self.map
     }
 
-    /// The piecewise error map of `level` (`None` for [`BoundLevel::None`]), built on
-    /// first use.
-    pub(crate) fn bound_map(&self, level: BoundLevel) -> Option<&BoundMap> {
-        let (slot, levels) = match level {
-            BoundLevel::None => return None,
-            BoundLevel::Fast => (0, FAST_LEVELS),
-            BoundLevel::Tight => (1, TIGHT_LEVELS),
-        };
-        Some(
-            self.bound_maps[slot]
-                .get_or_init(|| BoundMap::new(self.matrix(), self.n, self.m, self.op_norm, levels)),
-        )
+    /// The piecewise error map in cache slot `slot` (0: the fast level's, 1: the tight
+    /// level's) with `levels` midpoint levels, built on first use (see
+    /// `bound/mod.rs`, which picks the slot and levels).
+    pub(crate) fn error_map(&self, slot: usize, levels: usize) -> &BoundMap {
+        self.bound_maps[slot]
+            .get_or_init(|| BoundMap::new(self.matrix(), self.n, self.m, self.op_norm, levels))
     }
 
     /// The method's own bound (e.g. `W_n ||F|| / (C(2n,n) - 2)` for [`Method::Perturb`],
