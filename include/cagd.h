@@ -398,6 +398,42 @@ typedef int32_t CagdErrorSpace;
 #endif // __cplusplus
 
 /**
+ * How much work the certified error bound of `cagd_curve_reduce` (and of the optional
+ * per-curve bounds of `cagd_curve_reduce_batch`) may take. Stored in
+ * `CagdReduceOptions.bound_level` as an `int32_t`.
+ *
+ */
+enum CagdBoundLevel
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : int32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  /**
+   * No bound: the reduction alone (`cagd_report_bound` then returns
+   * `CAGD_ERR_NOT_AVAILABLE`).
+   */
+  CAGD_BOUND_NONE = 0,
+  /**
+   * A certified bound from one more precomputed linear map (the error curve split into
+   * 4 pieces, convex hull of each): typically 1.2–2.5× the true error.
+   */
+  CAGD_BOUND_FAST = 1,
+  /**
+   * A certified bound within 1.08× of the true error (plus a rounding allowance): the
+   * fast bound, then branch and bound on the pieces that may hold the maximum. The
+   * default.
+   */
+  CAGD_BOUND_TIGHT = 2,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum CagdBoundLevel CagdBoundLevel;
+#else
+typedef int32_t CagdBoundLevel;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
  * How a patch is reduced (`CagdReduceOptions.patch_method`, an `int32_t`).
  *
  */
@@ -914,6 +950,11 @@ typedef struct CagdReduceOptions {
    * `CAGD_ERR_INVALID_ARGUMENT`.
    */
   int32_t spline_continuity;
+  /**
+   * `cagd_curve_reduce` and `cagd_curve_reduce_batch` only: a `CagdBoundLevel` value,
+   * how much work the certified bound may take. Default `CAGD_BOUND_TIGHT`.
+   */
+  int32_t bound_level;
 } CagdReduceOptions;
 
 /**
@@ -4864,10 +4905,12 @@ CagdStatus cagd_bsplinesurface_to_polynomial(const struct CagdBSplineSurface *su
 
 /**
  * Reduces a curve of degree `n` to degree `opts->target` with `opts->method`, returning
- * the reduced curve and a report with the certified error bound (and, with
- * `opts->measure`, the measured error). Rational curves are reduced in homogeneous
- * coordinates and stay rational. The operator of each `(method, n, m)` is computed once
- * in exact rational arithmetic and cached process-wide (thread-safe).
+ * the reduced curve and a report with the certified error bound at `opts->bound_level`
+ * (default `CAGD_BOUND_TIGHT`: within 1.08× of the true error; `CAGD_BOUND_FAST`: one
+ * more linear map, typically 1.2–2.5×; `CAGD_BOUND_NONE`: no bound, the cheapest call)
+ * and, with `opts->measure`, the measured error. Rational curves are reduced in
+ * homogeneous coordinates and stay rational. The operator of each `(method, n, m)` is
+ * computed once in exact rational arithmetic and cached process-wide (thread-safe).
  *
  * Parameters:
  * - `curve` (in): the curve, degree `n`.
@@ -4884,7 +4927,7 @@ CagdStatus cagd_bsplinesurface_to_polynomial(const struct CagdBSplineSurface *su
  * - `CAGD_ERR_NULL_POINTER`: `curve`, `opts`, `curve_out` or `report_out` is NULL.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` is below
  *   `sizeof(CagdReduceOptions)` (options not made by `cagd_reduce_options_init`),
- *   `opts->method` or `opts->space` is not a valid code,
+ *   `opts->method`, `opts->space` or `opts->bound_level` is not a valid code,
  *   `l1` / `l2` of `CAGD_METHOD_PERTURB_G1` are not finite or not `> -1`,
  *   `curve_out` and `report_out` are the same address, or a pointer is misaligned.
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n`, or `target` below the method's minimum
@@ -4906,10 +4949,12 @@ CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
 
 /**
  * Reduces `n_curves` polynomial curves of one degree `n` to degree `opts->target` with
- * one cached operator and no per-curve allocation — the fast path for many curves. Only
- * `opts->method`, `target`, `r`, `p`, `l1`, `l2` are used (no report: call
- * `cagd_curve_reduce` for a certified bound per curve). Rational curves: pass their
- * homogeneous points `(w_i P_i, w_i)` as polynomial curves of dimension `dim + 1`.
+ * one cached operator through a GEMM kernel, no per-curve allocation — the fast path for
+ * many curves — and, optionally, a certified error bound per curve (one more GEMM).
+ * Only `opts->method`, `target`, `r`, `p`, `l1`, `l2` and (with `bounds_out`)
+ * `bound_level` are used. Rational curves: pass their homogeneous points
+ * `(w_i P_i, w_i)` as polynomial curves of dimension `dim + 1` (the bounds are then
+ * homogeneous-space bounds).
  *
  * Parameters:
  * - `points` (in): `n_curves * (n + 1) * dim` doubles, curve after curve, row-major inside
@@ -4925,6 +4970,12 @@ CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
  * - `out_cap` (in): capacity of `out` in doubles.
  * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
  *   `n_curves * (target + 1) * dim`.
+ * - `bounds_out` (out, optional): NULL for no bounds; otherwise a buffer of `n_curves`
+ *   doubles that on `CAGD_OK` holds, for each curve, a certified upper bound of
+ *   `max_t |P(t) - Q(t)|` (model units, Euclidean norm of the `dim` coordinates, the
+ *   rounding of the reduced points included; `+inf` only if the computation overflowed)
+ *   at `opts->bound_level` (`CAGD_BOUND_FAST` or `CAGD_BOUND_TIGHT`). Not written on
+ *   failure.
  *
  * Returns:
  * - `CAGD_OK`: the reduced curves are in `out`.
@@ -4932,7 +4983,8 @@ CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
  *   with `out_cap > 0`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a size formula overflows,
  *   `opts->struct_size` below `sizeof(CagdReduceOptions)`, an invalid `opts->method` code
- *   or `l1` / `l2`, or a pointer is misaligned.
+ *   or `l1` / `l2`, `bounds_out` given with an invalid `opts->bound_level` or with
+ *   `CAGD_BOUND_NONE`, `bounds_out` overlapping `out`, or a pointer is misaligned.
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
@@ -4945,7 +4997,8 @@ CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
  * # Safety
  * `points` must be NULL or point to `n_curves * (degree + 1) * dim` readable doubles;
  * `opts` NULL or readable; `out` NULL or `out_cap` writable doubles not overlapping
- * `points`; `out_needed` NULL or writable.
+ * `points`; `out_needed` NULL or writable; `bounds_out` NULL or `n_curves` writable
+ * doubles not overlapping `points`.
  */
 CagdStatus cagd_curve_reduce_batch(const double *points,
                                    size_t n_curves,
@@ -4954,7 +5007,8 @@ CagdStatus cagd_curve_reduce_batch(const double *points,
                                    const struct CagdReduceOptions *opts,
                                    double *out,
                                    size_t out_cap,
-                                   size_t *out_needed);
+                                   size_t *out_needed,
+                                   double *bounds_out);
 
 /**
  * Finds the true degree of a curve: the smallest `k` such that the curve is, up to
@@ -5289,12 +5343,14 @@ CagdStatus cagd_report_method(const struct CagdReport *report,
  *
  * Parameters:
  * - `report` (in): the report.
- * - `bound_out` (out): on `CAGD_OK`, the bound (finite, `>= 0`).
+ * - `bound_out` (out): on `CAGD_OK`, the bound (`>= 0`; `+inf` only if its computation
+ *   overflowed).
  *
  * Returns:
  * - `CAGD_OK`: `*bound_out` is written.
  * - `CAGD_ERR_NULL_POINTER`: `report` or `bound_out` is NULL.
- * - `CAGD_ERR_NOT_AVAILABLE`: no bound could be formed for this reduction.
+ * - `CAGD_ERR_NOT_AVAILABLE`: no bound was computed for this reduction (it ran with
+ *   `opts->bound_level = CAGD_BOUND_NONE`).
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
@@ -5302,6 +5358,28 @@ CagdStatus cagd_report_method(const struct CagdReport *report,
  * `report` must be NULL or a live report handle; `bound_out` NULL or writable.
  */
 CagdStatus cagd_report_bound(const struct CagdReport *report, double *bound_out);
+
+/**
+ * Reads the bound level a single-curve reduction (`cagd_curve_reduce`) ran with: the
+ * `CagdBoundLevel` of its options (`CAGD_BOUND_NONE`: no bound was computed, and
+ * `cagd_report_bound` returns `CAGD_ERR_NOT_AVAILABLE`).
+ *
+ * Parameters:
+ * - `report` (in): the report.
+ * - `level_out` (out): on `CAGD_OK`, the `CagdBoundLevel` code.
+ *
+ * Returns:
+ * - `CAGD_OK`: `*level_out` is written.
+ * - `CAGD_ERR_NULL_POINTER`: `report` or `level_out` is NULL.
+ * - `CAGD_ERR_NOT_AVAILABLE`: the report is not that of a single-curve reduction (the
+ *   other reductions always certify, each in its own way; see their docs).
+ * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `report` must be NULL or a live report handle; `level_out` NULL or writable.
+ */
+CagdStatus cagd_report_bound_level(const struct CagdReport *report, int32_t *level_out);
 
 /**
  * Reads the error measured by dense sampling (`max_t |P(t) - Q(t)|` over a dense grid

@@ -92,12 +92,12 @@ mod bspline;
 mod convert_nurbs;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod convert_patch;
-#[allow(unsafe_code, reason = "writes caller buffers through raw pointers")]
-mod copy_out;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod convert_surface;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod convert_unclamped;
+#[allow(unsafe_code, reason = "writes caller buffers through raw pointers")]
+mod copy_out;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
 mod curve;
 #[allow(unsafe_code, reason = "C entry points taking raw pointers")]
@@ -205,8 +205,8 @@ pub use matrices::{
     cagd_uniform_bspline_matrix,
 };
 pub use options::{
-    CagdErrorSpace, CagdMerge, CagdPatchConstraint, CagdPatchMethod, CagdReduceMethod,
-    CagdReduceOptions, CagdSplineStrategy,
+    CagdBoundLevel, CagdErrorSpace, CagdMerge, CagdPatchConstraint, CagdPatchMethod,
+    CagdReduceMethod, CagdReduceOptions, CagdSplineStrategy,
 };
 pub use patch::{
     CagdPatchListSizes, CagdTensorPatchList, CagdTriPatchList, cagd_report_patch,
@@ -223,9 +223,10 @@ pub use reduce::{
     cagd_report_method_params,
 };
 pub use report::{
-    CagdReport, cagd_report_bound, cagd_report_free, cagd_report_max_error, cagd_report_method,
-    cagd_report_pieces, cagd_report_piecewise, cagd_report_space, cagd_report_spline,
-    cagd_report_spline_continuity, cagd_report_spline_strategy, cagd_report_step_bounds,
+    CagdReport, cagd_report_bound, cagd_report_bound_level, cagd_report_free,
+    cagd_report_max_error, cagd_report_method, cagd_report_pieces, cagd_report_piecewise,
+    cagd_report_space, cagd_report_spline, cagd_report_spline_continuity,
+    cagd_report_spline_strategy, cagd_report_step_bounds,
 };
 pub use status::{CagdStatus, cagd_status_name, status_of_core};
 pub use tensorpatch::{

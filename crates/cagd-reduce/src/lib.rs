@@ -60,8 +60,10 @@
 //! [`Report::error_bound`] is the smaller of the method's own bound (SPEC-reduce §2.1
 //! `W_n ||F|| / (C(2n,n) - 2)` with the rounded-up table [`perturbation_error_factor`];
 //! Eck's exact `2^(-2n-1) ||Delta^(n+1) P_0||`; eq. 14.5.2's bound; Piegl–Tiller's exact
-//! error for odd `m`) and the universal convex-hull bound `max_i ||P_i - (E Q)_i||`, plus a
-//! rigorous allowance for `f64` rounding. Rational curves: see [`reduce_with`].
+//! error for odd `m`) and the universal convex-hull bound of the error curve `P - E Q` split
+//! into pieces (seed 000 §14.4.3 on each piece; [`BoundLevel`] says how far it is
+//! refined), plus a rigorous allowance for `f64` rounding. Rational curves: see
+//! [`reduce_with`].
 //!
 //! ## Supported range and accuracy
 //!
@@ -91,10 +93,20 @@
 //! `(pi/4) ||c_{m+1}||` of the best uniform error (random curves, `n <= 12`, `n - m <= 3`),
 //! and equal to Eck's best uniform approximation for one degree.
 //!
-//! Batch throughput ([`reduce_batch`], 100 000 random 3-D curves, release, 2-core machine;
-//! `cargo bench -p cagd-reduce --bench batch`): `(5,4)` 19.5 ns/curve (1.65x a memcpy of
-//! the same input + output bytes), `(10,5)` 33.7 ns (1.59x), `(15,10)` 96.8 ns (2.30x),
-//! `(20,10)` 121 ns (2.73x), `(30,15)` 268 ns (4.25x).
+//! ## Batch reduction and bounds that cost one more GEMM
+//!
+//! [`reduce_batch`] applies one operator to many curves through a GEMM kernel (nalgebra's
+//! `gemm`, which runs the `matrixmultiply` crate for every side above 5) over a strided
+//! point-major view of the caller's curve-major array, in blocks of about 64 KiB of input,
+//! with no transposing copy and no allocation per curve; 4- and 5-row operators (`(4,3)`,
+//! `(5,4)`) go through one GEMM with the Kronecker-expanded operator instead.
+//! [`reduce_batch_with_bounds`] adds a certified bound per curve: the error curve
+//! `P - E Q` written in degree `n` on 4 midpoint pieces is one precomputed
+//! `(4 (n+1)) x (n+1)` map applied to `P` (one more GEMM), and the largest control-point
+//! norm of the pieces bounds the error (convex hull); [`BoundLevel::Tight`] then splits
+//! the pieces that may hold the maximum until the bound is within 8 % of a curve value.
+//! [`ReduceOptions::bound`] picks the level of a single reduction ([`BoundLevel::None`]
+//! skips the bound). Figures: `benches/README.md`.
 //!
 //! ## Patches (seed 000 §14.3)
 //!
@@ -180,11 +192,12 @@ pub use ball::{
     wsgb_uniform_step_exact,
 };
 pub use bezier::{
-    ChebyshevTerms, DEFAULT_MAX_DEPTH, DEFAULT_REL_TOL, ErrorSpace, MAX_PIECES, Method, Operator,
-    PiecewiseReduction, PiecewiseReport, ReduceOptions, ReducedPiece, Reduction, Report,
+    BoundLevel, ChebyshevTerms, DEFAULT_MAX_DEPTH, DEFAULT_REL_TOL, ErrorSpace, MAX_PIECES, Method,
+    Operator, PiecewiseReduction, PiecewiseReport, ReduceOptions, ReducedPiece, Reduction, Report,
     ToleranceOptions, constrained_chebyshev_terms, eck_lambdas, exact_degree, max_deviation,
-    operator, perturbation_error_factor, reduce, reduce_batch, reduce_exact, reduce_g1_optimal,
-    reduce_to_tolerance, reduce_to_tolerance_alg_14_2_1, reduce_with, subdivision_levels,
+    operator, perturbation_error_factor, reduce, reduce_batch, reduce_batch_with_bounds,
+    reduce_exact, reduce_g1_optimal, reduce_to_tolerance, reduce_to_tolerance_alg_14_2_1,
+    reduce_with, subdivision_levels,
 };
 pub use bspline::{
     BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy, MAX_SEGMENT_REDUCTIONS,

@@ -133,15 +133,81 @@ int cagd_ctest_reduce_batch(void) {
     CHECK_OK(cagd_reduce_options_init(&o));
     o.method = CAGD_METHOD_GENERALIZED_INVERSE;
     o.target = 3;
-    CHECK_STATUS(cagd_curve_reduce_batch(in, 3, 7, 2, &o, NULL, 0, &needed),
+    CHECK_STATUS(cagd_curve_reduce_batch(in, 3, 7, 2, &o, NULL, 0, &needed, NULL),
                  CAGD_ERR_BUFFER_TOO_SMALL);
     CHECK(needed == 24);
-    CHECK_OK(cagd_curve_reduce_batch(in, 3, 7, 2, &o, out, 24, &needed));
+    CHECK_OK(cagd_curve_reduce_batch(in, 3, 7, 2, &o, out, 24, &needed, NULL));
     for (c = 0; c < 3; ++c) CHECK(spec_close(out + 8 * c, q, 8, 1e-12));
-    CHECK_OK(cagd_curve_reduce_batch(in, 0, 7, 2, &o, NULL, 0, &needed));
+    CHECK_OK(cagd_curve_reduce_batch(in, 0, 7, 2, &o, NULL, 0, &needed, NULL));
     CHECK(needed == 0);
     rc = 0;
 cleanup:
+    return rc;
+}
+
+/* Per-curve certified bounds from the batch call: every bound is at least the error that
+ * cagd_curve_reduce measures for that curve, the tight ones (batch and per-curve call)
+ * within 1.1x of it, and the report names the level. */
+int cagd_ctest_reduce_batch_bounds(void) {
+    int rc = 1;
+    CagdCurve *c = NULL, *q = NULL;
+    CagdReport *rep = NULL;
+    CagdReduceOptions o;
+    double in[2 * 16], out[2 * 10], fast[2] = {-1, -1}, tight[2] = {-1, -1};
+    double bound = -1.0, measured = -1.0;
+    size_t needed = 0, k;
+    int32_t level = -1;
+
+    memcpy(in, P7, sizeof P7);
+    for (k = 0; k < 16; ++k) in[16 + k] = P7[k] * (k % 2 ? 0.5 : -2.0);
+    CHECK_OK(cagd_reduce_options_init(&o));
+    CHECK(o.bound_level == CAGD_BOUND_TIGHT);
+    o.method = CAGD_METHOD_L2;
+    o.target = 4;
+    o.bound_level = CAGD_BOUND_FAST;
+    CHECK_OK(cagd_curve_reduce_batch(in, 2, 7, 2, &o, out, 20, &needed, fast));
+    o.bound_level = CAGD_BOUND_TIGHT;
+    CHECK_OK(cagd_curve_reduce_batch(in, 2, 7, 2, &o, out, 20, &needed, tight));
+    o.measure = true;
+    for (k = 0; k < 2; ++k) {
+        CHECK_OK(cagd_curve_new(in + 16 * k, 8, 2, &c));
+        CHECK_OK(cagd_curve_reduce(c, &o, &q, &rep));
+        CHECK_OK(cagd_report_bound(rep, &bound));
+        CHECK_OK(cagd_report_max_error(rep, &measured));
+        CHECK_OK(cagd_report_bound_level(rep, &level));
+        CHECK(level == CAGD_BOUND_TIGHT);
+        CHECK(measured <= bound && bound <= 1.1 * measured);
+        CHECK(measured <= tight[k] && tight[k] <= 1.1 * measured);
+        CHECK(measured <= fast[k] && tight[k] <= fast[k]);
+        cagd_report_free(rep);
+        rep = NULL;
+        cagd_curve_free(q);
+        q = NULL;
+        cagd_curve_free(c);
+        c = NULL;
+    }
+    /* No bound asked for: the report says so, and the bound is not available. */
+    o.bound_level = CAGD_BOUND_NONE;
+    CHECK_OK(cagd_curve_new(P7, 8, 2, &c));
+    CHECK_OK(cagd_curve_reduce(c, &o, &q, &rep));
+    CHECK_OK(cagd_report_bound_level(rep, &level));
+    CHECK(level == CAGD_BOUND_NONE);
+    CHECK_STATUS(cagd_report_bound(rep, &bound), CAGD_ERR_NOT_AVAILABLE);
+    /* bounds_out with CAGD_BOUND_NONE, an unknown level, or overlapping out: rejected. */
+    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 2, &o, out, 20, &needed, fast),
+                 CAGD_ERR_INVALID_ARGUMENT);
+    o.bound_level = 7;
+    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 2, &o, out, 20, &needed, fast),
+                 CAGD_ERR_INVALID_ARGUMENT);
+    CHECK_STATUS(cagd_curve_reduce(c, &o, &q, &rep), CAGD_ERR_INVALID_ARGUMENT);
+    o.bound_level = CAGD_BOUND_FAST;
+    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 2, &o, out, 20, &needed, out + 3),
+                 CAGD_ERR_INVALID_ARGUMENT);
+    rc = 0;
+cleanup:
+    cagd_report_free(rep);
+    cagd_curve_free(q);
+    cagd_curve_free(c);
     return rc;
 }
 

@@ -70,6 +70,7 @@ c_tests![
     reduce_ginv_n7_m3_free,
     reduce_hermite_n7_m3,
     reduce_batch,
+    reduce_batch_bounds,
     reduce_rational_roundtrip,
     // c/reduce_bad_input.c
     reduce_bad_input,

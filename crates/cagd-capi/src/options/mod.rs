@@ -4,7 +4,7 @@
 //! (here) and to `BSplineOptions` / `SurfaceFitOptions` (`strategy.rs`). No entry point:
 //! `cagd_reduce_options_init` is in `reduce/init.rs`.
 
-use cagd_reduce::{BSplineStrategy, ErrorSpace, Method, ReduceOptions};
+use cagd_reduce::{BSplineStrategy, BoundLevel, ErrorSpace, Method, ReduceOptions};
 
 use crate::boundary::{CResult, Failure, nonnull};
 
@@ -64,6 +64,30 @@ pub enum CagdErrorSpace {
     SPACE_EUCLIDEAN = 0,
     /// The same maximum for the homogeneous curves `(wP, w)`, `(vQ, v)`.
     SPACE_HOMOGENEOUS = 1,
+}
+
+/// How much work the certified error bound of `cagd_curve_reduce` (and of the optional
+/// per-curve bounds of `cagd_curve_reduce_batch`) may take. Stored in
+/// `CagdReduceOptions.bound_level` as an `int32_t`.
+///
+/// cbindgen:rename-all=prefix:CAGD_
+#[repr(i32)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[allow(
+    non_camel_case_types,
+    reason = "C names: the variants become CAGD_BOUND_*"
+)]
+pub enum CagdBoundLevel {
+    /// No bound: the reduction alone (`cagd_report_bound` then returns
+    /// `CAGD_ERR_NOT_AVAILABLE`).
+    BOUND_NONE = 0,
+    /// A certified bound from one more precomputed linear map (the error curve split into
+    /// 4 pieces, convex hull of each): typically 1.2–2.5× the true error.
+    BOUND_FAST = 1,
+    /// A certified bound within 1.08× of the true error (plus a rounding allowance): the
+    /// fast bound, then branch and bound on the pieces that may hold the maximum. The
+    /// default.
+    BOUND_TIGHT = 2,
 }
 
 /// How a patch is reduced (`CagdReduceOptions.patch_method`, an `int32_t`).
@@ -271,6 +295,9 @@ pub struct CagdReduceOptions {
     /// `k` above the strategy's maximum is `CAGD_ERR_TOO_MANY_CONSTRAINTS`). Below `-1`:
     /// `CAGD_ERR_INVALID_ARGUMENT`.
     pub spline_continuity: i32,
+    /// `cagd_curve_reduce` and `cagd_curve_reduce_batch` only: a `CagdBoundLevel` value,
+    /// how much work the certified bound may take. Default `CAGD_BOUND_TIGHT`.
+    pub bound_level: i32,
 }
 
 /// The size of the first published version of `CagdReduceOptions` (this one: nothing is
@@ -298,6 +325,7 @@ impl Default for CagdReduceOptions {
             merge: CagdMerge::MERGE_EXACT as i32,
             spline_strategy: CagdSplineStrategy::SPLINE_FIT as i32,
             spline_continuity: -1,
+            bound_level: CagdBoundLevel::BOUND_TIGHT as i32,
         }
     }
 }
@@ -388,6 +416,22 @@ impl CagdReduceOptions {
         }
     }
 
+    /// The bound level these options name.
+    ///
+    /// # Errors
+    /// `CAGD_ERR_INVALID_ARGUMENT` for a `bound_level` code that is not a
+    /// `CagdBoundLevel`.
+    pub(crate) fn bound_level(&self) -> CResult<BoundLevel> {
+        match self.bound_level {
+            0 => Ok(BoundLevel::None),
+            1 => Ok(BoundLevel::Fast),
+            2 => Ok(BoundLevel::Tight),
+            other => Err(Failure::invalid(format!(
+                "opts->bound_level = {other} is not a CagdBoundLevel (0, 1 or 2)"
+            ))),
+        }
+    }
+
     /// The cagd-reduce options these options describe.
     ///
     /// # Errors
@@ -396,6 +440,7 @@ impl CagdReduceOptions {
         Ok(ReduceOptions {
             measure: self.measure,
             space: self.space()?,
+            bound: self.bound_level()?,
             ..ReduceOptions::new(self.method()?, self.target)
         })
     }

@@ -35,6 +35,13 @@ fn method_codes_are_pinned_and_translate() {
     }
     assert_eq!(CagdErrorSpace::SPACE_EUCLIDEAN as i32, 0);
     assert_eq!(CagdErrorSpace::SPACE_HOMOGENEOUS as i32, 1);
+    assert_eq!(CagdBoundLevel::BOUND_NONE as i32, 0);
+    assert_eq!(CagdBoundLevel::BOUND_FAST as i32, 1);
+    assert_eq!(CagdBoundLevel::BOUND_TIGHT as i32, 2);
+    assert_eq!(
+        CagdReduceOptions::default().bound_level,
+        CagdBoundLevel::BOUND_TIGHT as i32
+    );
     assert_eq!(
         CagdReduceOptions::default().method().unwrap().name(),
         "l2",
@@ -70,7 +77,11 @@ fn struct_size_rule() {
         offset_of!(CagdReduceOptions, spline_strategy)
             < offset_of!(CagdReduceOptions, spline_continuity)
     );
-    let end = offset_of!(CagdReduceOptions, spline_continuity) + size_of::<i32>();
+    assert!(
+        offset_of!(CagdReduceOptions, spline_continuity)
+            < offset_of!(CagdReduceOptions, bound_level)
+    );
+    let end = offset_of!(CagdReduceOptions, bound_level) + size_of::<i32>();
     assert!(size_of::<CagdReduceOptions>() - end < align_of::<CagdReduceOptions>());
     o.struct_size = OPTIONS_MIN_SIZE - 1;
     // SAFETY: as above.

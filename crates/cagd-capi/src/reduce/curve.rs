@@ -2,11 +2,11 @@
 //! of one degree through one cached operator (`cagd_curve_reduce_batch`).
 
 use cagd_core::{Error, check_points};
-use cagd_reduce::{operator, reduce_batch, reduce_with};
+use cagd_reduce::{BoundLevel, operator, reduce_batch, reduce_batch_with_bounds, reduce_with};
 
 use crate::boundary::{
-    Failure, OUT, boundary, checked_len, handle_ref, into_handle, nonnull, out_ref, points_in,
-    slice_out,
+    CResult, Failure, OUT, boundary, checked_len, disjoint, handle_ref, into_handle, nonnull,
+    out_ref, points_in, slice_out,
 };
 use crate::curve::CagdCurve;
 use crate::options::{CagdReduceOptions, read_options};
@@ -14,10 +14,12 @@ use crate::report::{CagdReport, ReportKind};
 use crate::status::CagdStatus;
 
 /// Reduces a curve of degree `n` to degree `opts->target` with `opts->method`, returning
-/// the reduced curve and a report with the certified error bound (and, with
-/// `opts->measure`, the measured error). Rational curves are reduced in homogeneous
-/// coordinates and stay rational. The operator of each `(method, n, m)` is computed once
-/// in exact rational arithmetic and cached process-wide (thread-safe).
+/// the reduced curve and a report with the certified error bound at `opts->bound_level`
+/// (default `CAGD_BOUND_TIGHT`: within 1.08× of the true error; `CAGD_BOUND_FAST`: one
+/// more linear map, typically 1.2–2.5×; `CAGD_BOUND_NONE`: no bound, the cheapest call)
+/// and, with `opts->measure`, the measured error. Rational curves are reduced in
+/// homogeneous coordinates and stay rational. The operator of each `(method, n, m)` is
+/// computed once in exact rational arithmetic and cached process-wide (thread-safe).
 ///
 /// Parameters:
 /// - `curve` (in): the curve, degree `n`.
@@ -34,7 +36,7 @@ use crate::status::CagdStatus;
 /// - `CAGD_ERR_NULL_POINTER`: `curve`, `opts`, `curve_out` or `report_out` is NULL.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` is below
 ///   `sizeof(CagdReduceOptions)` (options not made by `cagd_reduce_options_init`),
-///   `opts->method` or `opts->space` is not a valid code,
+///   `opts->method`, `opts->space` or `opts->bound_level` is not a valid code,
 ///   `l1` / `l2` of `CAGD_METHOD_PERTURB_G1` are not finite or not `> -1`,
 ///   `curve_out` and `report_out` are the same address, or a pointer is misaligned.
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n`, or `target` below the method's minimum
@@ -85,10 +87,12 @@ pub unsafe extern "C" fn cagd_curve_reduce(
 }
 
 /// Reduces `n_curves` polynomial curves of one degree `n` to degree `opts->target` with
-/// one cached operator and no per-curve allocation — the fast path for many curves. Only
-/// `opts->method`, `target`, `r`, `p`, `l1`, `l2` are used (no report: call
-/// `cagd_curve_reduce` for a certified bound per curve). Rational curves: pass their
-/// homogeneous points `(w_i P_i, w_i)` as polynomial curves of dimension `dim + 1`.
+/// one cached operator through a GEMM kernel, no per-curve allocation — the fast path for
+/// many curves — and, optionally, a certified error bound per curve (one more GEMM).
+/// Only `opts->method`, `target`, `r`, `p`, `l1`, `l2` and (with `bounds_out`)
+/// `bound_level` are used. Rational curves: pass their homogeneous points
+/// `(w_i P_i, w_i)` as polynomial curves of dimension `dim + 1` (the bounds are then
+/// homogeneous-space bounds).
 ///
 /// Parameters:
 /// - `points` (in): `n_curves * (n + 1) * dim` doubles, curve after curve, row-major inside
@@ -104,6 +108,12 @@ pub unsafe extern "C" fn cagd_curve_reduce(
 /// - `out_cap` (in): capacity of `out` in doubles.
 /// - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
 ///   `n_curves * (target + 1) * dim`.
+/// - `bounds_out` (out, optional): NULL for no bounds; otherwise a buffer of `n_curves`
+///   doubles that on `CAGD_OK` holds, for each curve, a certified upper bound of
+///   `max_t |P(t) - Q(t)|` (model units, Euclidean norm of the `dim` coordinates, the
+///   rounding of the reduced points included; `+inf` only if the computation overflowed)
+///   at `opts->bound_level` (`CAGD_BOUND_FAST` or `CAGD_BOUND_TIGHT`). Not written on
+///   failure.
 ///
 /// Returns:
 /// - `CAGD_OK`: the reduced curves are in `out`.
@@ -111,7 +121,8 @@ pub unsafe extern "C" fn cagd_curve_reduce(
 ///   with `out_cap > 0`.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a size formula overflows,
 ///   `opts->struct_size` below `sizeof(CagdReduceOptions)`, an invalid `opts->method` code
-///   or `l1` / `l2`, or a pointer is misaligned.
+///   or `l1` / `l2`, `bounds_out` given with an invalid `opts->bound_level` or with
+///   `CAGD_BOUND_NONE`, `bounds_out` overlapping `out`, or a pointer is misaligned.
 /// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
 /// - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
@@ -124,7 +135,8 @@ pub unsafe extern "C" fn cagd_curve_reduce(
 /// # Safety
 /// `points` must be NULL or point to `n_curves * (degree + 1) * dim` readable doubles;
 /// `opts` NULL or readable; `out` NULL or `out_cap` writable doubles not overlapping
-/// `points`; `out_needed` NULL or writable.
+/// `points`; `out_needed` NULL or writable; `bounds_out` NULL or `n_curves` writable
+/// doubles not overlapping `points`.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn cagd_curve_reduce_batch(
     points: *const f64,
@@ -135,6 +147,7 @@ pub unsafe extern "C" fn cagd_curve_reduce_batch(
     out: *mut f64,
     out_cap: usize,
     out_needed: *mut usize,
+    bounds_out: *mut f64,
 ) -> CagdStatus {
     boundary(|| {
         nonnull(points, "points")?;
@@ -153,8 +166,29 @@ pub unsafe extern "C" fn cagd_curve_reduce_batch(
         if n_curves > 0 {
             check_points(input, dim)?;
         }
+        let level = if bounds_out.is_null() {
+            None
+        } else {
+            match o.bound_level()? {
+                BoundLevel::None => {
+                    return Err(Failure::invalid(
+                        "`bounds_out` is given but opts->bound_level is CAGD_BOUND_NONE",
+                    ));
+                }
+                level => Some(level),
+            }
+        };
         let dst = dst.take(needed)?;
-        reduce_batch(&op, input, dim, dst).map_err(|e| match e {
+        let result = match level {
+            None => reduce_batch(&op, input, dim, dst),
+            Some(level) => {
+                // SAFETY: non-NULL; `n_curves` writable doubles by the caller's contract;
+                // checked for alignment and against overlapping `out` by the helper.
+                let bounds = unsafe { bounds_slice(bounds_out, n_curves, dst) }?;
+                reduce_batch_with_bounds(&op, input, dim, dst, bounds, level)
+            }
+        };
+        result.map_err(|e| match e {
             // Unreachable after the checks above; reported rather than hidden.
             Error::NonFinite { .. } | Error::LengthMismatch { .. } => Failure::new(
                 CagdStatus::ERR_PANIC,
@@ -163,4 +197,22 @@ pub unsafe extern "C" fn cagd_curve_reduce_batch(
             other => other.into(),
         })
     })
+}
+
+/// The caller's `bounds_out` as a slice of `n` doubles, after the alignment check and a
+/// check that it does not overlap the output slice `out`.
+///
+/// # Safety
+/// `ptr` must be non-NULL and point to `n` writable doubles that no other live reference
+/// covers except, possibly, `out` (rejected here).
+unsafe fn bounds_slice<'a>(ptr: *mut f64, n: usize, out: &[f64]) -> CResult<&'a mut [f64]> {
+    if !ptr.is_aligned() {
+        return Err(Failure::invalid("argument `bounds_out` is misaligned"));
+    }
+    disjoint(ptr, n, out.as_ptr(), out.len(), "`bounds_out` and `out`")?;
+    if n == 0 {
+        return Ok(&mut []);
+    }
+    // SAFETY: the caller's contract; non-NULL, aligned, not overlapping `out`.
+    Ok(unsafe { std::slice::from_raw_parts_mut(ptr, n) })
 }

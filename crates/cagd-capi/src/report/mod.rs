@@ -8,12 +8,12 @@ mod spline;
 pub use piecewise::{cagd_report_pieces, cagd_report_piecewise, cagd_report_step_bounds};
 pub use spline::{cagd_report_spline, cagd_report_spline_continuity, cagd_report_spline_strategy};
 
-use cagd_reduce::{ErrorSpace, PatchReport, PiecewiseReport, ReducedPiece, Report};
+use cagd_reduce::{BoundLevel, ErrorSpace, PatchReport, PiecewiseReport, ReducedPiece, Report};
 
 use crate::boundary::{
     CResult, Failure, boundary, boundary_void, free_handle, handle_ref, out_ref,
 };
-use crate::options::{CagdErrorSpace, CagdSplineStrategy};
+use crate::options::{CagdBoundLevel, CagdErrorSpace, CagdSplineStrategy};
 use crate::status::CagdStatus;
 
 /// Opaque handle to the report of a reduction: the method, the degrees, the certified
@@ -197,12 +197,14 @@ pub unsafe extern "C" fn cagd_report_method(
 ///
 /// Parameters:
 /// - `report` (in): the report.
-/// - `bound_out` (out): on `CAGD_OK`, the bound (finite, `>= 0`).
+/// - `bound_out` (out): on `CAGD_OK`, the bound (`>= 0`; `+inf` only if its computation
+///   overflowed).
 ///
 /// Returns:
 /// - `CAGD_OK`: `*bound_out` is written.
 /// - `CAGD_ERR_NULL_POINTER`: `report` or `bound_out` is NULL.
-/// - `CAGD_ERR_NOT_AVAILABLE`: no bound could be formed for this reduction.
+/// - `CAGD_ERR_NOT_AVAILABLE`: no bound was computed for this reduction (it ran with
+///   `opts->bound_level = CAGD_BOUND_NONE`).
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
@@ -219,6 +221,49 @@ pub unsafe extern "C" fn cagd_report_bound(
         // SAFETY: as above.
         let out = unsafe { out_ref(bound_out, "bound_out") }?;
         *out = available(r.common().2, "no certified bound for this reduction")?;
+        Ok(())
+    })
+}
+
+/// Reads the bound level a single-curve reduction (`cagd_curve_reduce`) ran with: the
+/// `CagdBoundLevel` of its options (`CAGD_BOUND_NONE`: no bound was computed, and
+/// `cagd_report_bound` returns `CAGD_ERR_NOT_AVAILABLE`).
+///
+/// Parameters:
+/// - `report` (in): the report.
+/// - `level_out` (out): on `CAGD_OK`, the `CagdBoundLevel` code.
+///
+/// Returns:
+/// - `CAGD_OK`: `*level_out` is written.
+/// - `CAGD_ERR_NULL_POINTER`: `report` or `level_out` is NULL.
+/// - `CAGD_ERR_NOT_AVAILABLE`: the report is not that of a single-curve reduction (the
+///   other reductions always certify, each in its own way; see their docs).
+/// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+/// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+///
+/// # Safety
+/// `report` must be NULL or a live report handle; `level_out` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cagd_report_bound_level(
+    report: *const CagdReport,
+    level_out: *mut i32,
+) -> CagdStatus {
+    boundary(|| {
+        // SAFETY: the caller's contract (see # Safety).
+        let r = unsafe { handle_ref(report, "report") }?;
+        // SAFETY: as above.
+        let out = unsafe { out_ref(level_out, "level_out") }?;
+        let Some(single) = r.as_report() else {
+            return Err(Failure::new(
+                CagdStatus::ERR_NOT_AVAILABLE,
+                "the bound level is reported by single-curve reductions only".to_owned(),
+            ));
+        };
+        *out = match single.bound_level {
+            BoundLevel::None => CagdBoundLevel::BOUND_NONE,
+            BoundLevel::Fast => CagdBoundLevel::BOUND_FAST,
+            _ => CagdBoundLevel::BOUND_TIGHT,
+        } as i32;
         Ok(())
     })
 }

@@ -1,9 +1,13 @@
-//! The batch entry point: one operator applied to many curves stored contiguously, with no
-//! allocation; [`Operator::apply_into`] and [`Operator::apply`] (one curve) are defined
-//! here, on top of it, so that `operator/` does not depend on this module.
+//! The batch entry points: one operator applied to many curves stored contiguously through
+//! the GEMM data path of `gemm.rs` ([`reduce_batch`]), optionally with a certified bound
+//! per curve from one more GEMM ([`reduce_batch_with_bounds`]); [`Operator::apply_into`]
+//! and [`Operator::apply`] (one curve) are defined here, on top of it, so that `operator/`
+//! does not depend on this module.
 
 use cagd_core::{Error, Result};
 
+use super::bound::{BoundLevel, Scratch};
+use super::gemm::all_finite;
 use super::operator::Operator;
 
 impl Operator {
@@ -35,7 +39,13 @@ impl Operator {
 /// Layout: `input` holds `n_curves` curves of `n + 1` points of `dim` coordinates each,
 /// curve-major and row-major inside a curve (`input[(c * (n+1) + j) * dim + k]`);
 /// `output` receives `n_curves * (m + 1) * dim` doubles in the same layout. `n_curves` is
-/// `input.len() / ((n + 1) * dim)`. No allocation; `dim = 1..=4` use unrolled kernels.
+/// `input.len() / ((n + 1) * dim)`.
+///
+/// Data path: blocks of curves (about 64 KiB of input each) through a GEMM kernel
+/// (nalgebra's `gemm` = the `matrixmultiply` crate) over a strided point-major view of
+/// the caller's array, no transposing copy and no allocation per curve (see the crate's
+/// benchmark notes for the figures). The results are the same sums as the definition up
+/// to the order of the additions.
 ///
 /// # Errors
 /// [`Error::ZeroDimension`]; [`Error::LengthMismatch`] when `input.len()` is not a multiple
@@ -43,6 +53,74 @@ impl Operator {
 /// (index = point index counted over the whole batch) when an input coordinate is NaN or
 /// infinite — `output` is then unspecified.
 pub fn reduce_batch(op: &Operator, input: &[f64], dim: usize, output: &mut [f64]) -> Result<()> {
+    let n_curves = check_batch(op, input, dim, output)?;
+    let _ = n_curves;
+    op.map().apply(input, dim, output);
+    check_output(input, dim, output)
+}
+
+/// [`reduce_batch`] plus, per curve `c`, a certified upper bound `bounds[c]` of
+/// `max_t ||P_c(t) - Q_c(t)||` (Euclidean, in the space of the given points, the `f64`
+/// rounding of `Q_c` included) at `level` (see [`BoundLevel`]; the same number
+/// [`Operator::certified_bound`] gives for that curve). The bound is one more GEMM per
+/// block of curves (the error curve's pieces, [`BoundLevel::Fast`]), plus, at
+/// [`BoundLevel::Tight`], midpoint splits of the few pieces that may hold the maximum.
+/// A bound that overflows is `+inf`.
+///
+/// # Errors
+/// As [`reduce_batch`], and [`Error::LengthMismatch`] when `bounds.len()` is not the number
+/// of curves, [`Error::BadParameter`] for `level = BoundLevel::None` (ask
+/// [`reduce_batch`] for no bounds).
+pub fn reduce_batch_with_bounds(
+    op: &Operator,
+    input: &[f64],
+    dim: usize,
+    output: &mut [f64],
+    bounds: &mut [f64],
+    level: BoundLevel,
+) -> Result<()> {
+    let n_curves = check_batch(op, input, dim, output)?;
+    if bounds.len() != n_curves {
+        return Err(Error::LengthMismatch {
+            what: "batch bounds (one per curve)",
+            got: bounds.len(),
+            expected: n_curves,
+        });
+    }
+    let Some(bm) = op.bound_map(level) else {
+        return Err(Error::BadParameter {
+            name: "level",
+            value: 0.0,
+            why: "bounds need a certified level (Fast or Tight)",
+        });
+    };
+    let map = op.map();
+    let (per_in, per_out, per_piece) = (map.cols() * dim, map.rows() * dim, bm.map.rows() * dim);
+    let block = map.block_curves(dim);
+    let mut pieces = vec![0.0; block.min(n_curves) * per_piece];
+    let mut scratch = Scratch::default();
+    let tight = level == BoundLevel::Tight;
+    for ((inp, out), bnd) in input
+        .chunks(block * per_in)
+        .zip(output.chunks_mut(block * per_out))
+        .zip(bounds.chunks_mut(block))
+    {
+        map.apply(inp, dim, out);
+        let pcs = &mut pieces[..bnd.len() * per_piece];
+        bm.map.apply(inp, dim, pcs);
+        for ((p, pc), b) in inp
+            .chunks_exact(per_in)
+            .zip(pcs.chunks_exact(per_piece))
+            .zip(bnd.iter_mut())
+        {
+            *b = op.curve_bound(bm, p, dim, pc, tight, &mut scratch);
+        }
+    }
+    check_output(input, dim, output)
+}
+
+/// Checks the lengths of a batch; returns the number of curves.
+fn check_batch(op: &Operator, input: &[f64], dim: usize, output: &[f64]) -> Result<usize> {
     if dim == 0 {
         return Err(Error::ZeroDimension);
     }
@@ -63,90 +141,28 @@ pub fn reduce_batch(op: &Operator, input: &[f64], dim: usize, output: &mut [f64]
             expected: n_curves * m1 * dim,
         });
     }
-    let a = op.matrix();
-    // Every output is a dense dot product over all inputs (zeros included), so a NaN or
-    // infinity anywhere in a curve makes its outputs non-finite: `x * 0` summed over the
-    // outputs detects it without a second pass over the input (`x * 0` is `0` for finite `x`, NaN
-    // otherwise).
-    let finite = match dim {
-        1 => kernel::<1>(a, n1, m1, input, output),
-        2 => kernel::<2>(a, n1, m1, input, output),
-        3 => kernel::<3>(a, n1, m1, input, output),
-        4 => kernel::<4>(a, n1, m1, input, output),
-        _ => kernel_dyn(a, n1, m1, dim, input, output),
-    };
-    if !finite {
-        if let Some(pos) = input.iter().position(|x| !x.is_finite()) {
-            return Err(Error::NonFinite {
-                index: pos / dim,
-                coord: pos % dim,
-                value: input[pos],
-            });
-        }
-        // Finite input can overflow to infinity only for |x| near f64::MAX.
-        if let Some(pos) = output.iter().position(|x| !x.is_finite()) {
-            return Err(Error::NonFinite {
-                index: pos / dim,
-                coord: pos % dim,
-                value: output[pos],
-            });
-        }
-    }
-    Ok(())
+    Ok(n_curves)
 }
 
-/// Fixed-dimension kernel; returns whether every output is finite.
-fn kernel<const D: usize>(
-    a: &[f64],
-    n1: usize,
-    m1: usize,
-    input: &[f64],
-    output: &mut [f64],
-) -> bool {
-    let mut check = 0.0f64;
-    for (inp, out) in input
-        .chunks_exact(n1 * D)
-        .zip(output.chunks_exact_mut(m1 * D))
-    {
-        for (row, o) in a.chunks_exact(n1).zip(out.chunks_exact_mut(D)) {
-            let mut acc = [0.0f64; D];
-            for (&c, x) in row.iter().zip(inp.chunks_exact(D)) {
-                for k in 0..D {
-                    acc[k] += c * x[k];
-                }
-            }
-            for k in 0..D {
-                o[k] = acc[k];
-                check += acc[k] * 0.0;
-            }
-        }
+/// Every output is a dense sum over all inputs of its curve (zeros included), so a NaN or
+/// infinity anywhere in the input makes an output non-finite: one pass over the output
+/// detects it, and only then is the input searched for the culprit.
+fn check_output(input: &[f64], dim: usize, output: &[f64]) -> Result<()> {
+    if all_finite(output) {
+        return Ok(());
     }
-    check == 0.0
-}
-
-/// Any-dimension kernel; returns whether every output is finite.
-fn kernel_dyn(
-    a: &[f64],
-    n1: usize,
-    m1: usize,
-    dim: usize,
-    input: &[f64],
-    output: &mut [f64],
-) -> bool {
-    let mut check = 0.0f64;
-    for (inp, out) in input
-        .chunks_exact(n1 * dim)
-        .zip(output.chunks_exact_mut(m1 * dim))
-    {
-        for (row, o) in a.chunks_exact(n1).zip(out.chunks_exact_mut(dim)) {
-            o.fill(0.0);
-            for (&c, x) in row.iter().zip(inp.chunks_exact(dim)) {
-                for (ok, xk) in o.iter_mut().zip(x) {
-                    *ok += c * xk;
-                }
-            }
-            check += o.iter().map(|v| v * 0.0).sum::<f64>();
-        }
+    if let Some(pos) = input.iter().position(|x| !x.is_finite()) {
+        return Err(Error::NonFinite {
+            index: pos / dim,
+            coord: pos % dim,
+            value: input[pos],
+        });
     }
-    check == 0.0
+    // Finite input can overflow to infinity only for |x| near f64::MAX.
+    let pos = output.iter().position(|x| !x.is_finite()).unwrap_or(0);
+    Err(Error::NonFinite {
+        index: pos / dim,
+        coord: pos % dim,
+        value: output[pos],
+    })
 }

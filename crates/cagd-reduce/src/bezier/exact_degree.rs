@@ -76,6 +76,7 @@ pub fn reduce_exact(curve: &BezierCurve) -> Result<Reduction> {
                 degree_from: n,
                 degree_to: n,
                 error_bound: Some(0.0),
+                bound_level: crate::BoundLevel::Tight,
                 max_error: None,
                 space: crate::ErrorSpace::Euclidean,
                 homogeneous_bound: curve.weights().map(|_| 0.0),

@@ -48,7 +48,7 @@ pub fn reduce_g1_optimal(curve: &BezierCurve, measure: bool) -> Result<Reduction
             }
         }
         let bound = hull_bound(pts, &q, dim);
-        Ok((q, bound, Method::PerturbG1 { l1, l2 }))
+        Ok((q, Some(bound), Method::PerturbG1 { l1, l2 }))
     })
 }
 

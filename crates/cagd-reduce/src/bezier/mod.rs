@@ -7,8 +7,10 @@
 //! and reduction to a tolerance by subdivision into a B-spline (`tolerance/`).
 
 mod batch;
+mod bound;
 mod exact_degree;
 mod g1;
+mod gemm;
 mod measure;
 mod method;
 mod operator;
@@ -16,7 +18,8 @@ mod reduce;
 mod tolerance;
 mod wn_table;
 
-pub use batch::reduce_batch;
+pub use batch::{reduce_batch, reduce_batch_with_bounds};
+pub use bound::BoundLevel;
 pub use exact_degree::{DEFAULT_REL_TOL, exact_degree, reduce_exact};
 pub use g1::reduce_g1_optimal;
 pub use measure::max_deviation;

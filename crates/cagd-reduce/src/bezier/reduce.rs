@@ -2,6 +2,7 @@
 
 use cagd_core::{BezierCurve, Error, ModelFrame, Result};
 
+use super::bound::BoundLevel;
 use super::measure::max_deviation;
 use super::method::Method;
 use super::operator::operator;
@@ -29,8 +30,13 @@ pub struct Report {
     /// Target degree `m`.
     pub degree_to: usize,
     /// Certified upper bound of the error in [`Report::space`] (never below the true
-    /// error, `f64` rounding included). `None` only if no bound could be formed.
+    /// error, `f64` rounding included). `None` when [`Report::bound_level`] is
+    /// [`BoundLevel::None`] (no bound asked for).
     pub error_bound: Option<f64>,
+    /// The bound level `error_bound` was computed at ([`ReduceOptions::bound`]; the
+    /// functions that always certify, such as [`crate::reduce_g1_optimal`], report
+    /// [`BoundLevel::Tight`]).
+    pub bound_level: BoundLevel,
     /// The sampled error in [`Report::space`] (on request, see [`crate::max_deviation`]).
     pub max_error: Option<f64>,
     /// Which space `error_bound` and `max_error` refer to.
@@ -64,6 +70,10 @@ pub struct ReduceOptions {
     pub measure: bool,
     /// The space the reported numbers refer to (matters for rational curves only).
     pub space: ErrorSpace,
+    /// How much work the certified bound may take (default [`BoundLevel::Tight`];
+    /// [`BoundLevel::None`]: no bound, the report's `error_bound` is `None`). Used by
+    /// [`reduce_with`]; the other reducers always certify.
+    pub bound: BoundLevel,
 }
 
 impl ReduceOptions {
@@ -74,6 +84,7 @@ impl ReduceOptions {
             target,
             measure: false,
             space: ErrorSpace::Euclidean,
+            bound: BoundLevel::Tight,
         }
     }
 }
@@ -114,16 +125,17 @@ pub fn reduce_with(curve: &BezierCurve, opts: &ReduceOptions) -> Result<Reductio
     let op = operator(opts.method, curve.degree(), opts.target)?;
     finish(curve, opts, |pts, dim| {
         let q = op.apply(pts, dim)?;
-        let bound = op.error_bound(pts, &q, dim)?;
+        let bound = op.direct_bound(pts, &q, dim, opts.bound);
         Ok((q, bound, opts.method))
     })
 }
 
-/// Runs a reduction `f(points, dim) -> (reduced points, certified bound, method used)` on
-/// the curve's (homogeneous, if rational) points and assembles the [`Reduction`].
+/// Runs a reduction `f(points, dim) -> (reduced points, certified bound or None, method
+/// used)` on the curve's (homogeneous, if rational) points and assembles the [`Reduction`]
+/// (with `opts.bound` as the reported bound level).
 pub(crate) fn finish<F>(curve: &BezierCurve, opts: &ReduceOptions, f: F) -> Result<Reduction>
 where
-    F: FnOnce(&[f64], usize) -> Result<(Vec<f64>, f64, Method)>,
+    F: FnOnce(&[f64], usize) -> Result<(Vec<f64>, Option<f64>, Method)>,
 {
     let dim = curve.dim();
     let Some(w) = curve.weights() else {
@@ -139,7 +151,8 @@ where
                 method,
                 degree_from: curve.degree(),
                 degree_to: reduced.degree(),
-                error_bound: Some(bound),
+                error_bound: bound,
+                bound_level: opts.bound,
                 max_error,
                 space: ErrorSpace::Euclidean,
                 homogeneous_bound: None,
@@ -160,7 +173,7 @@ where
     let inner = BezierCurve::from_homogeneous(&qh, hd)?;
     let wmin = w.iter().copied().fold(f64::INFINITY, f64::min);
     let vmin = v.iter().copied().fold(f64::INFINITY, f64::min);
-    let bound = frame.model_bound(eps_h, wmin, vmin) + frame.rounding(inner.points());
+    let bound = eps_h.map(|e| frame.model_bound(e, wmin, vmin) + frame.rounding(inner.points()));
     let reduced = BezierCurve::new_rational(frame.from_frame(inner.points()), v, dim)?;
     // In the input's own homogeneous coordinates `dA = s dA' + c dW`, `dW = dW'`; plus the
     // out-map's rounding times the largest reduced weight.
@@ -168,8 +181,10 @@ where
     let vmax = reduced
         .weights()
         .map_or(1.0, |x| x.iter().copied().fold(0.0, f64::max));
-    let homogeneous = eps_h * (frame.scale() + cnorm + 1.0) * (1.0 + 4.0 * f64::EPSILON)
-        + vmax * frame.rounding(inner.points());
+    let homogeneous = eps_h.map(|e| {
+        e * (frame.scale() + cnorm + 1.0) * (1.0 + 4.0 * f64::EPSILON)
+            + vmax * frame.rounding(inner.points())
+    });
     let max_error = if opts.measure {
         Some(max_deviation(curve, &reduced)?)
     } else {
@@ -180,10 +195,11 @@ where
             method,
             degree_from: curve.degree(),
             degree_to: reduced.degree(),
-            error_bound: Some(bound),
+            error_bound: bound,
+            bound_level: opts.bound,
             max_error,
             space: opts.space,
-            homogeneous_bound: Some(homogeneous),
+            homogeneous_bound: homogeneous,
         },
         curve: reduced,
     })
@@ -208,7 +224,7 @@ fn reduced_weights(qh: &[f64], hd: usize) -> Result<Vec<f64>> {
 /// `(w P, w)` reduced as they are, the bound and measure of the homogeneous curves.
 fn finish_homogeneous<F>(curve: &BezierCurve, opts: &ReduceOptions, f: F) -> Result<Reduction>
 where
-    F: FnOnce(&[f64], usize) -> Result<(Vec<f64>, f64, Method)>,
+    F: FnOnce(&[f64], usize) -> Result<(Vec<f64>, Option<f64>, Method)>,
 {
     let hd = curve.dim() + 1;
     let hom = curve.homogeneous_points();
@@ -229,10 +245,11 @@ where
             method,
             degree_from: curve.degree(),
             degree_to: reduced.degree(),
-            error_bound: Some(bound),
+            error_bound: bound,
+            bound_level: opts.bound,
             max_error,
             space: opts.space,
-            homogeneous_bound: Some(eps_h),
+            homogeneous_bound: eps_h,
         },
         curve: reduced,
     })

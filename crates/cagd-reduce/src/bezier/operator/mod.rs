@@ -9,10 +9,12 @@ use cagd_core::{Error, Result};
 
 mod chebyshev;
 mod ends;
+mod error_map;
 mod hull;
 mod least_squares;
 mod one_step;
 
+use super::gemm::LinearMap;
 use super::method::Method;
 use crate::exact::{RatMat, Row, Scaled};
 use chebyshev::{constrained, truncation};
@@ -20,6 +22,7 @@ use least_squares::{ginv_ends, l2};
 use one_step::{residual_term, step};
 
 pub use chebyshev::{ChebyshevTerms, constrained_chebyshev_terms};
+pub(crate) use error_map::BoundMap;
 pub use one_step::eck_lambdas;
 
 /// One term `coef * ||sum_j g_j P_j||` of a method's own error bound.
@@ -39,8 +42,11 @@ pub struct Operator {
     method: Method,
     n: usize,
     m: usize,
-    matrix: Vec<f64>,
+    /// The matrix and its GEMM data path.
+    map: LinearMap,
     terms: Vec<BoundTerm>,
+    /// The piecewise error maps of the fast and the tight bound level, built on first use.
+    bound_maps: [OnceLock<BoundMap>; 2],
     /// `max_i sum_j |a_ij|` (rounding amplification of the operator).
     op_norm: f64,
     /// `sum_t coef_t sum_j |g_tj|`.
@@ -150,8 +156,9 @@ impl Operator {
             method,
             n,
             m,
-            matrix: exact.to_f64(),
+            map: LinearMap::new(m + 1, n + 1, exact.to_f64()),
             terms,
+            bound_maps: Default::default(),
             op_norm,
             terms_norm,
         })
@@ -174,7 +181,56 @@ impl Operator {
 
     /// The matrix, row-major, `(m+1) x (n+1)`: `Q_i = sum_j matrix[i * (n+1) + j] P_j`.
     pub fn matrix(&self) -> &[f64] {
-        &self.matrix
+        self.map.matrix()
+    }
+
+    /// The matrix with its GEMM data path.
+    pub(crate) fn map(&self) -> &LinearMap {
+        &self.map
+    }
+
+    /// The piecewise error map in cache slot `slot` (0: the fast level's, 1: the tight
+    /// level's) with `levels` midpoint levels, built on first use (see
+    /// `bound/mod.rs`, which picks the slot and levels).
+    pub(crate) fn error_map(&self, slot: usize, levels: usize) -> &BoundMap {
+        self.bound_maps[slot]
+            .get_or_init(|| BoundMap::new(self.matrix(), self.n, self.m, self.op_norm, levels))
+    }
+
+    /// The method's own bound (e.g. `W_n ||F|| / (C(2n,n) - 2)` for [`Method::Perturb`],
+    /// eq. 14.5.2's bound for [`Method::ConstrainedChebyshev`]) for the reduced points
+    /// this operator computes from `points`, rounding included; `None` if the method has
+    /// none. Lengths are the caller's invariant.
+    pub(crate) fn own_bound(&self, points: &[f64], dim: usize) -> Option<f64> {
+        if self.terms.is_empty() {
+            return None;
+        }
+        let eps = f64::EPSILON;
+        let pmax = max_norm(points, dim);
+        let nf = self.n as f64;
+        // Method bound on the exact Q, plus the distance of the computed Q from it.
+        let mut own = 0.0;
+        let mut v = [0.0; 8];
+        let mut heap;
+        let v: &mut [f64] = if dim <= v.len() {
+            &mut v[..dim]
+        } else {
+            heap = vec![0.0; dim];
+            &mut heap
+        };
+        for t in &self.terms {
+            v.fill(0.0);
+            for (g, p) in t.functional.iter().zip(points.chunks_exact(dim)) {
+                for (a, b) in v.iter_mut().zip(p) {
+                    *a += g * b;
+                }
+            }
+            own += t.coef * v.iter().map(|x| x * x).sum::<f64>().sqrt();
+        }
+        Some(
+            own * (1.0 + 4.0 * eps)
+                + 2.0 * (nf + 3.0) * eps * (self.op_norm + self.terms_norm + 1.0) * pmax,
+        )
     }
 
     /// `max_i sum_j |a_ij|`: how much the operator can amplify input noise.
@@ -197,28 +253,11 @@ impl Operator {
     pub fn error_bound(&self, points: &[f64], reduced: &[f64], dim: usize) -> Result<f64> {
         check_len(points, self.n, dim, "points")?;
         check_len(reduced, self.m, dim, "reduced")?;
-        let eps = f64::EPSILON;
         let hull = hull_bound(points, reduced, dim);
-        let pmax = max_norm(points, dim);
-        let nf = self.n as f64;
-        if self.terms.is_empty() {
-            return Ok(hull);
-        }
-        // Method bound on the exact Q, plus the distance of the computed Q from it.
-        let mut own = 0.0;
-        let mut v = vec![0.0; dim];
-        for t in &self.terms {
-            v.fill(0.0);
-            for (g, p) in t.functional.iter().zip(points.chunks_exact(dim)) {
-                for (a, b) in v.iter_mut().zip(p) {
-                    *a += g * b;
-                }
-            }
-            own += t.coef * v.iter().map(|x| x * x).sum::<f64>().sqrt();
-        }
-        let own = own * (1.0 + 4.0 * eps)
-            + 2.0 * (nf + 3.0) * eps * (self.op_norm + self.terms_norm + 1.0) * pmax;
-        Ok(own.min(hull))
+        Ok(match self.own_bound(points, dim) {
+            Some(own) => own.min(hull),
+            None => hull,
+        })
     }
 }
 
