@@ -228,7 +228,7 @@ pub(crate) enum Command {
 fn value<'a>(it: &mut impl Iterator<Item = &'a String>, flag: &str) -> Result<&'a str, String> {
     it.next()
         .map(String::as_str)
-        .ok_or_else(|| format!("{flag} needs a value"))
+        .ok_or_else(|| format!("{flag}: needs a value"))
 }
 
 fn parse_num<T: std::str::FromStr>(s: &str, flag: &str) -> Result<T, String> {
@@ -317,6 +317,10 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
     let Some(cmd) = it.next() else {
         return Ok(Command::Help);
     };
+    // `--help` / `-h` anywhere after a subcommand (`cagd reduce --help`) is a help request.
+    if it.clone().any(|a| a == "--help" || a == "-h") {
+        return Ok(Command::Help);
+    }
     match cmd.as_str() {
         "--help" | "-h" | "help" => Ok(Command::Help),
         "demo" => {
@@ -400,7 +404,7 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
             }
             Ok(Command::Reduce(r))
         }
-        other => Err(format!("unknown command {other:?}")),
+        other => Err(format!("{other:?}: unknown command")),
     }
 }
 
@@ -583,12 +587,32 @@ mod tests {
         );
         assert_eq!(
             parse(&args("frobnicate")).unwrap_err(),
-            "unknown command \"frobnicate\""
+            "\"frobnicate\": unknown command"
         );
         assert_eq!(
             parse(&args("reduce --to")).unwrap_err(),
-            "--to needs a value"
+            "--to: needs a value"
         );
         assert_eq!(parse(&[]).unwrap(), Command::Help);
+    }
+
+    #[test]
+    fn help_after_any_subcommand() {
+        for line in [
+            "--help",
+            "-h",
+            "help",
+            "reduce --help",
+            "reduce -h",
+            "reduce --to 3 --frob --help",
+            "merge --help",
+            "convert -h",
+            "implicitize --help",
+            "intersect --help",
+            "check --help",
+            "demo -h",
+        ] {
+            assert_eq!(parse(&args(line)).unwrap(), Command::Help, "{line}");
+        }
     }
 }
