@@ -1,6 +1,6 @@
 //! The subprocess fuzz pass: the cases of the in-process fuzzer (`src/fuzz/`, included here
 //! by path) run against the built `cagd` binary, each with a timeout, so that a signal, an
-//! abort or a hang of the real process is seen too. `CAGD_FUZZ_CASES=N` (default 150) and
+//! abort or a hang of the real process is seen too. `CAGD_FUZZ_CASES=N` (default 100) and
 //! `CAGD_FUZZ_SEED=S` as for the in-process driver.
 
 #[allow(
@@ -79,7 +79,7 @@ fn run_child(case: &Case, dir: &std::path::Path) -> Ran {
 
 #[test]
 fn fuzz_the_binary() {
-    let (count, seed) = (case_count(150), seed());
+    let (count, seed) = (case_count(100), seed());
     // Another seed than the in-process run: more ground covered by the two together.
     let seed = seed ^ 0x5eed;
     let dir = scratch("subprocess");
@@ -92,5 +92,5 @@ fn fuzz_the_binary() {
     let _gone = std::fs::remove_dir_all(&dir);
     println!("seed {seed}: {}", summary.report());
     assert!(summary.failures.is_empty(), "{}", summary.report());
-    assert_eq!(summary.runs, count);
+    assert_eq!(summary.runs + summary.pending, count);
 }

@@ -338,7 +338,13 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
         "implicitize" => parse_implicitize(it).map(Command::Implicitize),
         "intersect" => parse_intersect(it).map(Command::Intersect),
         "check" => {
-            let files: Vec<PathBuf> = it.map(PathBuf::from).collect();
+            let mut files = Vec::new();
+            for a in it {
+                if a.starts_with('-') {
+                    return Err(format!("check: unknown argument {a:?}"));
+                }
+                files.push(PathBuf::from(a));
+            }
             if files.is_empty() {
                 return Err("check: name at least one vector file".to_string());
             }
@@ -594,6 +600,12 @@ mod tests {
             "--to: needs a value"
         );
         assert_eq!(parse(&[]).unwrap(), Command::Help);
+        // Found by the fuzzer: `check` took options for files, ran the vectors of the files
+        // before them and then failed (exit 2 after output on stdout).
+        assert_eq!(
+            parse(&args("check a.json --tol")).unwrap_err(),
+            "check: unknown argument \"--tol\""
+        );
     }
 
     #[test]

@@ -59,6 +59,8 @@ pub(crate) struct Summary {
     pub(crate) pending: usize,
     /// The slowest run.
     pub(crate) slowest: Duration,
+    /// The slowest case.
+    pub(crate) slowest_case: String,
     /// Total time.
     pub(crate) elapsed: Duration,
 }
@@ -79,6 +81,7 @@ impl Summary {
             self.per_command,
             self.failures.len()
         );
+        s.push_str(&format!("\nslowest: {:.300}", self.slowest_case));
         for (i, case, why) in self.failures.iter().take(20) {
             s.push_str(&format!("\n--- case {i}: {why}\n{case}"));
         }
@@ -181,7 +184,10 @@ pub(crate) fn campaign(
         progress(i, &case);
         let t = Instant::now();
         let ran = run(&case);
-        summary.slowest = summary.slowest.max(t.elapsed());
+        if t.elapsed() > summary.slowest {
+            summary.slowest = t.elapsed();
+            summary.slowest_case = case.describe();
+        }
         summary.runs += 1;
         if let Some(c @ 0..=2) = ran.code {
             summary.exits[usize::try_from(c).unwrap_or(0)] += 1;

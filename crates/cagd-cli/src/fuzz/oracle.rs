@@ -27,7 +27,14 @@ pub(crate) struct Ran {
 }
 
 /// Keys whose value may be `null` in the output.
-const NULL_OK: &[&str] = &["weights", "error_bound", "max_error", "bound", "svg"];
+const NULL_OK: &[&str] = &[
+    "weights",
+    "error_bound",
+    "max_error",
+    "bound",
+    "svg",
+    "method_params",
+];
 
 /// Checks the numbers, `null`s and bounds of an output value; `at` is its JSON path.
 fn check_value(v: &Value, at: &str, key: &str) -> Result<(), String> {
