@@ -23,7 +23,7 @@ use oracle::{Ran, judge};
 use rng::Rng;
 
 /// The default seed (issue 18).
-pub(crate) const DEFAULT_SEED: u64 = 0x18_c11_f022;
+pub(crate) const DEFAULT_SEED: u64 = 0x0001_8c11_f022;
 
 /// The longest a single run may take before it counts as a hang (debug builds included).
 pub(crate) const CASE_TIMEOUT: Duration = Duration::from_secs(60);
