@@ -9,16 +9,29 @@
 //! `cagd check FILE…` runs spec-vector files through the library (see [`check`]).
 //!
 //! Exit codes: 0 success; 2 bad input, bad usage or a reduction that cannot be done as asked
-//! (one line on stderr naming the field or option and index); 1 an I/O failure.
+//! (one line on stderr naming the field or option and index); 1 an I/O failure. Inputs are
+//! bounded by [`limits`]. `cagd --help` (or `-h`, or either after any subcommand) prints the
+//! usage and exits 0.
+//!
+//! [`run`] is the whole command as a function of its arguments; [`console`] lets it run
+//! in-process with buffers for its streams, as the fuzzer ([`fuzz`], tests only) does.
 //!
 //! Map: [`commands`] (the command line and one module per subcommand; `reduce` has one
 //! part per shape), [`input`] (reading the JSON shapes), [`output`] (JSON, SVG and the
 //! pictures), [`check`] (the spec-vector runner), [`demo`] (one part per demo family).
 
+// First, with its macros: they replace print!/eprintln! in every module below.
+#[macro_use]
+mod console;
 mod check;
 mod commands;
 mod demo;
+#[cfg(test)]
+mod fuzz;
+#[cfg(test)]
+mod fuzz_in_process;
 mod input;
+mod limits;
 mod output;
 
 use std::process::ExitCode;
@@ -27,9 +40,14 @@ use commands::{args, convert, implicit, merge, reduce};
 
 fn main() -> ExitCode {
     let argv: Vec<String> = std::env::args().skip(1).collect();
-    match args::parse(&argv) {
+    run(&argv)
+}
+
+/// The command: `argv` without the program name; the exit code.
+fn run(argv: &[String]) -> ExitCode {
+    match args::parse(argv) {
         Ok(args::Command::Help) => {
-            print!("{}", args::USAGE);
+            print!("{}\n{}", args::USAGE, limits::LIMITS_TEXT);
             ExitCode::SUCCESS
         }
         Ok(args::Command::Reduce(r)) => reduce::command(&r),
@@ -53,8 +71,7 @@ fn main() -> ExitCode {
             }
         },
         Err(msg) => {
-            eprintln!("cagd: {msg}");
-            eprint!("{}", args::USAGE);
+            eprintln!("cagd: {msg} (cagd --help prints the usage)");
             ExitCode::from(2)
         }
     }

@@ -185,8 +185,8 @@ mod patch;
 mod rational_to_polynomial;
 
 pub use ball::{
-    WsgbMethod, WsgbPiece, WsgbPiecewise, WsgbReduction, WsgbReport, WsgbStep, reduce_wsgb,
-    reduce_wsgb_to_tolerance, reduce_wsgb_via_bezier, reduce_wsgb_with,
+    MAX_WSGB_PIECES, WsgbMethod, WsgbPiece, WsgbPiecewise, WsgbReduction, WsgbReport, WsgbStep,
+    reduce_wsgb, reduce_wsgb_to_tolerance, reduce_wsgb_via_bezier, reduce_wsgb_with,
     wsgb_chebyshev_coefficients, wsgb_paper_bound_11, wsgb_perturbation_error_factor,
     wsgb_perturbation_step, wsgb_perturbed_points, wsgb_sampled_error_inf, wsgb_uniform_points,
     wsgb_uniform_step_exact,

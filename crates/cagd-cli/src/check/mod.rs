@@ -180,7 +180,7 @@ pub(crate) fn run_files(files: &[std::path::PathBuf]) -> Result<bool, String> {
 
 /// Reads one file and runs its vectors.
 fn read_file(file: &Path) -> Result<Vec<Verdict>, String> {
-    let text = std::fs::read_to_string(file).map_err(|e| format!("{}: {e}", file.display()))?;
+    let text = crate::input::read_file(file)?;
     let value: Value =
         serde_json::from_str(&text).map_err(|e| format!("{}: {e}", file.display()))?;
     let list = match &value {

@@ -235,7 +235,7 @@ pub(crate) enum Command {
 fn value<'a>(it: &mut impl Iterator<Item = &'a String>, flag: &str) -> Result<&'a str, String> {
     it.next()
         .map(String::as_str)
-        .ok_or_else(|| format!("{flag} needs a value"))
+        .ok_or_else(|| format!("{flag}: needs a value"))
 }
 
 fn parse_num<T: std::str::FromStr>(s: &str, flag: &str) -> Result<T, String> {
@@ -324,6 +324,10 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
     let Some(cmd) = it.next() else {
         return Ok(Command::Help);
     };
+    // `--help` / `-h` anywhere after a subcommand (`cagd reduce --help`) is a help request.
+    if it.clone().any(|a| a == "--help" || a == "-h") {
+        return Ok(Command::Help);
+    }
     match cmd.as_str() {
         "--help" | "-h" | "help" => Ok(Command::Help),
         "demo" => {
@@ -341,7 +345,13 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
         "implicitize" => parse_implicitize(it).map(Command::Implicitize),
         "intersect" => parse_intersect(it).map(Command::Intersect),
         "check" => {
-            let files: Vec<PathBuf> = it.map(PathBuf::from).collect();
+            let mut files = Vec::new();
+            for a in it {
+                if a.starts_with('-') {
+                    return Err(format!("check: unknown argument {a:?}"));
+                }
+                files.push(PathBuf::from(a));
+            }
             if files.is_empty() {
                 return Err("check: name at least one vector file".to_string());
             }
@@ -417,7 +427,7 @@ pub(crate) fn parse(args: &[String]) -> Result<Command, String> {
             }
             Ok(Command::Reduce(r))
         }
-        other => Err(format!("unknown command {other:?}")),
+        other => Err(format!("{other:?}: unknown command")),
     }
 }
 
@@ -600,12 +610,38 @@ mod tests {
         );
         assert_eq!(
             parse(&args("frobnicate")).unwrap_err(),
-            "unknown command \"frobnicate\""
+            "\"frobnicate\": unknown command"
         );
         assert_eq!(
             parse(&args("reduce --to")).unwrap_err(),
-            "--to needs a value"
+            "--to: needs a value"
         );
         assert_eq!(parse(&[]).unwrap(), Command::Help);
+        // Found by the fuzzer: `check` took options for files, ran the vectors of the files
+        // before them and then failed (exit 2 after output on stdout).
+        assert_eq!(
+            parse(&args("check a.json --tol")).unwrap_err(),
+            "check: unknown argument \"--tol\""
+        );
+    }
+
+    #[test]
+    fn help_after_any_subcommand() {
+        for line in [
+            "--help",
+            "-h",
+            "help",
+            "reduce --help",
+            "reduce -h",
+            "reduce --to 3 --frob --help",
+            "merge --help",
+            "convert -h",
+            "implicitize --help",
+            "intersect --help",
+            "check --help",
+            "demo -h",
+        ] {
+            assert_eq!(parse(&args(line)).unwrap(), Command::Help, "{line}");
+        }
     }
 }

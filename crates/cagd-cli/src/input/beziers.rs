@@ -7,7 +7,9 @@
 use cagd_core::BezierCurve;
 use serde_json::Value;
 
+use crate::input::fields::check_total;
 use crate::input::{InputError, field, numbers, point_list};
+use crate::limits::{MAX_OBJECTS, MAX_TOTAL_POINTS};
 
 /// The validated input of a merge: the segments (same degree `>= 1` and dimension) and
 /// the strictly increasing breaks, one more than the segments.
@@ -46,10 +48,13 @@ pub(crate) fn parse(text: &str) -> Result<Beziers, InputError> {
         ));
     }
     let weights = weight_lists(&obj, segs.len())?;
-    let mut segments = Vec::with_capacity(segs.len());
+    let mut segments = Vec::with_capacity(segs.len().min(MAX_OBJECTS));
+    let mut total = 0usize;
     for (i, s) in segs.iter().enumerate() {
         let path = format!("input.segments[{i}]");
         let pts = point_list(s, &path)?;
+        total = total.saturating_add(pts.len());
+        check_total(total, MAX_TOTAL_POINTS, &path)?;
         if let Some(first) = segments.first() {
             check_like_first(first, pts.len(), pts.dim, &path)?;
         } else if pts.len() < 2 {

@@ -5,6 +5,8 @@ use std::fmt;
 
 use serde_json::Value;
 
+use crate::limits::{MAX_DEGREE, MAX_DIM, MAX_POINTS};
+
 /// A bad input: the JSON path of the field and what is wrong with it.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct InputError {
@@ -56,16 +58,53 @@ pub(crate) fn number(v: &Value, path: &str) -> Result<f64, InputError> {
     }
 }
 
+/// A degree (or WSGB `L`): a non-negative integer `<=` [`MAX_DEGREE`] (the reader's limit,
+/// so that the counts derived from it cannot overflow).
 pub(crate) fn count(v: &Value, path: &str) -> Result<usize, InputError> {
-    v.as_u64()
+    let n = v
+        .as_u64()
         .and_then(|x| usize::try_from(x).ok())
-        .ok_or_else(|| InputError::new(path, format!("expected a non-negative integer, got {v}")))
+        .ok_or_else(|| {
+            InputError::new(path, format!("expected a non-negative integer, got {v}"))
+        })?;
+    if n > MAX_DEGREE {
+        return Err(InputError::new(
+            path,
+            format!("{n} is above the limit of {MAX_DEGREE}"),
+        ));
+    }
+    Ok(n)
+}
+
+/// Refuses `total` control points above `limit` ([`MAX_POINTS`] for one object,
+/// [`crate::limits::MAX_TOTAL_POINTS`] for a whole input); `path` names where the count was
+/// passed.
+pub(crate) fn check_total(total: usize, limit: usize, path: &str) -> Result<(), InputError> {
+    if total > limit {
+        return Err(InputError::new(
+            path,
+            format!("{total} control points in all, above the limit of {limit}"),
+        ));
+    }
+    Ok(())
+}
+
+/// Refuses an array of more than [`MAX_POINTS`] entries.
+fn check_len(arr: &[Value], path: &str) -> Result<(), InputError> {
+    if arr.len() > MAX_POINTS {
+        return Err(InputError::new(
+            path,
+            format!("has {} entries, above the limit of {MAX_POINTS}", arr.len()),
+        ));
+    }
+    Ok(())
 }
 
 pub(crate) fn numbers(v: &Value, path: &str) -> Result<Vec<f64>, InputError> {
     let arr = v
         .as_array()
         .ok_or_else(|| InputError::new(path, "expected an array of numbers"))?;
+    check_len(arr, path)?;
     arr.iter()
         .enumerate()
         .map(|(i, x)| number(x, &format!("{path}[{i}]")))
@@ -76,6 +115,7 @@ pub(crate) fn point_list(v: &Value, path: &str) -> Result<PointList, InputError>
     let arr = v
         .as_array()
         .ok_or_else(|| InputError::new(path, "expected an array of points"))?;
+    check_len(arr, path)?;
     if arr.is_empty() {
         return Err(InputError::new(path, "expected at least one point"));
     }
@@ -87,6 +127,12 @@ pub(crate) fn point_list(v: &Value, path: &str) -> Result<PointList, InputError>
         if i == 0 {
             if c.is_empty() {
                 return Err(InputError::new(pp, "a point needs at least one coordinate"));
+            }
+            if c.len() > MAX_DIM {
+                return Err(InputError::new(
+                    pp,
+                    format!("has {} coordinates, above the limit of {MAX_DIM}", c.len()),
+                ));
             }
             dim = c.len();
         } else if c.len() != dim {

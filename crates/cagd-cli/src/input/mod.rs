@@ -15,7 +15,7 @@
 //! Every error names the JSON path of the offending field (`input[2].points[3][1]`).
 
 pub(crate) mod beziers;
-mod fields;
+pub(crate) mod fields;
 mod file;
 pub(crate) mod json_path;
 mod raw;
@@ -23,7 +23,10 @@ pub(crate) mod shape;
 mod surface;
 
 pub(crate) use fields::{InputError, PointList, count, field, numbers, point_list};
-pub(crate) use file::read_input;
+
+use crate::input::fields::check_total;
+use crate::limits::{MAX_OBJECTS, MAX_TOTAL_POINTS};
+pub(crate) use file::{read_file, read_input};
 pub(crate) use raw::RawShape;
 
 use serde_json::Value;
@@ -36,11 +39,29 @@ pub(crate) fn parse_input(text: &str) -> Result<Vec<RawShape>, InputError> {
         InputError::new(path, format!("not valid JSON: {e}"))
     })?;
     match &value {
-        Value::Array(items) => items
-            .iter()
-            .enumerate()
-            .map(|(i, v)| parse_shape(v, &format!("input[{i}]")))
-            .collect(),
+        Value::Array(items) => {
+            if items.len() > MAX_OBJECTS {
+                return Err(InputError::new(
+                    "input",
+                    format!(
+                        "has {} objects, above the limit of {MAX_OBJECTS}",
+                        items.len()
+                    ),
+                ));
+            }
+            let mut total = 0usize;
+            items
+                .iter()
+                .enumerate()
+                .map(|(i, v)| {
+                    let path = format!("input[{i}]");
+                    let shape = parse_shape(v, &path)?;
+                    total = total.saturating_add(shape.point_count());
+                    check_total(total, MAX_TOTAL_POINTS, &path)?;
+                    Ok(shape)
+                })
+                .collect()
+        }
         Value::Object(_) => Ok(vec![parse_shape(&value, "input")?]),
         _ => Err(InputError::new(
             "input",

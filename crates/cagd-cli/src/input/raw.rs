@@ -44,3 +44,18 @@ pub(crate) enum RawShape {
         weights: Option<Vec<f64>>,
     },
 }
+
+impl RawShape {
+    /// The number of control points (both nets of an interval triangle).
+    pub(crate) fn point_count(&self) -> usize {
+        match self {
+            RawShape::Bezier { points, .. }
+            | RawShape::BSpline { points, .. }
+            | RawShape::Tensor { points, .. }
+            | RawShape::Triangle { points, .. }
+            | RawShape::Wsgb { points, .. }
+            | RawShape::BSplineSurface { points, .. } => points.len(),
+            RawShape::IntervalTriangle { lo, hi, .. } => lo.len() + hi.len(),
+        }
+    }
+}

@@ -9,7 +9,9 @@
 
 use serde_json::Value;
 
+use crate::input::fields::check_total;
 use crate::input::{InputError, PointList, RawShape, count, field, numbers, point_list};
+use crate::limits::MAX_POINTS;
 
 /// The degree pair `[p, q]` at `path`.
 fn degree_pair(obj: &Value, path: &str) -> Result<(usize, usize), InputError> {
@@ -52,6 +54,7 @@ fn grid(v: &Value, path: &str) -> Result<(PointList, (usize, usize)), InputError
             ));
         }
         coords.extend(r.coords);
+        check_total(coords.len() / dim, MAX_POINTS, &rp)?;
     }
     Ok((PointList { coords, dim }, (rows.len(), nv)))
 }

@@ -1,6 +1,5 @@
 //! Writing the command's output: text to a file or stdout, JSON pretty-printed.
 
-use std::io::Write;
 use std::path::Path;
 use std::process::ExitCode;
 
@@ -10,12 +9,7 @@ use serde_json::Value;
 pub(crate) fn write_output(path: Option<&Path>, text: &str) -> Result<(), String> {
     match path {
         Some(p) => std::fs::write(p, text).map_err(|e| format!("{}: {e}", p.display())),
-        None => {
-            let mut out = std::io::stdout().lock();
-            out.write_all(text.as_bytes())
-                .and_then(|()| out.flush())
-                .map_err(|e| format!("stdout: {e}"))
-        }
+        None => crate::console::out(format_args!("{text}")).map_err(|e| format!("stdout: {e}")),
     }
 }
 

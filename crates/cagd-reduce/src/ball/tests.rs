@@ -212,6 +212,15 @@ fn to_tolerance_subdivides() {
     ));
 }
 
+/// Found by the CLI fuzzer (issue 18): a degree-8 WSGB curve to degree 0 within 1e-6 needs
+/// about 10^6 pieces; it ran for minutes and is now refused after `MAX_WSGB_PIECES`.
+#[test]
+fn to_tolerance_refuses_past_the_piece_limit() {
+    let c = curve(8, 3, 2, 5);
+    let r = reduce_wsgb_to_tolerance(&c, 0, WsgbMethod::Bezier(Method::Eck), 1e-6);
+    assert!(matches!(r, Err(Error::NoConvergence { .. })), "{r:?}");
+}
+
 #[test]
 fn bad_input_is_a_named_error() {
     let c = curve(5, 1, 2, 1);

@@ -6,7 +6,12 @@ use cagd_core::{Error, Result, WsgbCurve, check_tolerance};
 
 use super::measure::norm_inf;
 use super::{WsgbMethod, WsgbReduction, reduce_wsgb};
-use crate::{DEFAULT_MAX_DEPTH, MAX_PIECES};
+use crate::DEFAULT_MAX_DEPTH;
+
+/// The most pieces [`reduce_wsgb_to_tolerance`] makes before it refuses (2^10; beyond the
+/// seed: a bound on its work, issue 18 — the fuzzer's WSGB curve of degree 8 reduced to
+/// degree 0 within 1e-6 ran for minutes under the former limit of 2^20).
+pub const MAX_WSGB_PIECES: usize = 1 << 10;
 
 /// One reduced piece of a WSGB curve.
 #[derive(Debug, Clone, PartialEq)]
@@ -39,7 +44,7 @@ pub struct WsgbPiecewise {
 /// Reduces `curve` to degree `m` with `method` so that the certified Euclidean error of
 /// every piece is at most `tolerance`, splitting at parameter midpoints (through the exact
 /// Bézier form: de Casteljau subdivision, exact conversion back) as often as needed, at most
-/// [`DEFAULT_MAX_DEPTH`] levels and [`MAX_PIECES`] pieces.
+/// [`DEFAULT_MAX_DEPTH`] levels and [`MAX_WSGB_PIECES`] pieces.
 ///
 /// The pieces join continuously (`C^0`) only when the method interpolates the end points
 /// (perturbation for `m >= 2`, Bézier methods with `end_orders >= 0`); the uniform method
@@ -82,7 +87,7 @@ pub fn reduce_wsgb_to_tolerance(
             });
             continue;
         }
-        if depth >= DEFAULT_MAX_DEPTH || done.len() + stack.len() + 2 > MAX_PIECES {
+        if depth >= DEFAULT_MAX_DEPTH || done.len() + stack.len() + 2 > MAX_WSGB_PIECES {
             return Err(Error::NoConvergence {
                 tolerance,
                 achieved: e,

@@ -71,6 +71,8 @@ pub(crate) fn run(shapes: &[(String, Shape)], args: &ReduceArgs) -> Result<Vec<O
                     let k = args.continuity.unwrap_or(0);
                     let opts = ToleranceOptions {
                         measure: true,
+                        // The command's bound on the work (crate::limits).
+                        max_depth: crate::limits::MAX_TOLERANCE_DEPTH,
                         ..ToleranceOptions::new(method, args.to.0, tol, k)
                     };
                     let red = reduce_to_tolerance(c, &opts).map_err(fail)?;

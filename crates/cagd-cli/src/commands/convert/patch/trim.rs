@@ -23,7 +23,7 @@ use crate::input::{field, numbers};
 
 /// Reads and parses a trimming file.
 pub(crate) fn read(path: &Path) -> Result<TrimChain, String> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let text = crate::input::read_file(path)?;
     let v: Value = serde_json::from_str(&text)
         .map_err(|e| format!("{}: not valid JSON: {e}", path.display()))?;
     parse(&v).map_err(|e| format!("{}: {e}", path.display()))
