@@ -83,4 +83,19 @@ echo "== C tests under valgrind"
 "${vg[@]}" "$out/ctests"
 echo "== C++ example under valgrind"
 "${vg[@]}" "$out/cpp-example" >/dev/null
+
+# C ABI fuzz harness (fuzz/capi, issue 18): random call sequences over every cagd_* function
+# with the "no silent garbage" oracle (documented status, never CAGD_ERR_PANIC, finite
+# outputs, consistent sizes, bounds above measured errors; see fuzz/capi/README.md). A short
+# run with a fixed seed natively, then a shorter one under valgrind (no leak: every handle
+# the harness creates is freed; no invalid access). Any violation abort()s: CI fails.
+echo "== C ABI fuzz harness: build (fuzz/capi, C11, -Werror)"
+# shellcheck disable=SC2086
+"$CC" -std=c11 -Wall -Wextra -Wpedantic -Werror -O2 -g -Iinclude \
+    fuzz/capi/harness.c fuzz/capi/ops.c fuzz/capi/main.c "$lib" $native_libs -lm \
+    -o "$out/capi-fuzz"
+echo "== C ABI fuzz harness: short seeded run"
+"$out/capi-fuzz" --calls 100000 --seed 20261126 --quiet
+echo "== C ABI fuzz harness under valgrind"
+"${vg[@]}" "$out/capi-fuzz" --calls 4000 --seed 7 --quiet
 echo "== C ABI checks passed"

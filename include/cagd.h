@@ -19,6 +19,10 @@
  * - A NULL pointer argument gives CAGD_ERR_NULL_POINTER, never a crash; a pointer that is
  *   misaligned for its type gives CAGD_ERR_INVALID_ARGUMENT. A Rust panic (a bug in cagd)
  *   is caught and gives CAGD_ERR_PANIC.
+ * - No silent garbage: on CAGD_OK every number written is finite. A result that would hold
+ *   NaN or infinity (an overflow, e.g. evaluating a curve far outside its domain) is
+ *   refused with CAGD_ERR_NON_FINITE and nothing is written, whether or not the function's
+ *   comment lists that status.
  * - Thread safety: handles are immutable after creation, so any number of threads may
  *   call functions taking `const CagdX *` on the same handle concurrently. A handle must
  *   not be freed while another thread uses it. The error message is per thread.
@@ -3767,6 +3771,7 @@ CagdStatus cagd_implicit_bezout(const struct CagdImplicit *implicit,
  * - `CAGD_OK`: the three outputs written.
  * - `CAGD_ERR_NULL_POINTER`: a pointer is NULL.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `x` or `y` not finite, or a misaligned pointer.
+ * - `CAGD_ERR_NON_FINITE`: `f(x, y)` overflows f64 (a point far from the curve).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -6407,7 +6412,8 @@ CagdStatus cagd_wsgblist_copy(const struct CagdWsgbCurveList *list,
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n`; the perturbation method with `target < 1`
  *   (it needs `n >= 2` at every step); a target below the Bézier method's minimum.
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` (Bézier methods with ends).
- * - `CAGD_ERR_NON_FINITE`: a reduced coordinate overflows to infinity.
+ * - `CAGD_ERR_NON_FINITE`: a reduced coordinate, the certified bound or the measured
+ *   error overflows to infinity.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety

@@ -39,6 +39,25 @@ fn main() {
         .flag("-Werror")
         .compile("cagd_ctests");
 
+    // The C ABI fuzz harness (fuzz/capi, issue 18): its infrastructure and operations, run
+    // in-process by src/fuzz.rs (a short seeded run under the debug build, whose overflow
+    // checks turn arithmetic overflows into caught panics the oracle reports).
+    let fuzz = here.join("../../fuzz/capi");
+    println!("cargo:rerun-if-changed={}", fuzz.display());
+    let fuzz_files = [fuzz.join("harness.c"), fuzz.join("ops.c")];
+    for f in sources(&fuzz, "h").iter().chain(&fuzz_files) {
+        println!("cargo:rerun-if-changed={}", f.display());
+    }
+    cc::Build::new()
+        .files(&fuzz_files)
+        .include(&include)
+        .std("c11")
+        .flag("-Wall")
+        .flag("-Wextra")
+        .flag("-Wpedantic")
+        .flag("-Werror")
+        .compile("cagd_capi_fuzz");
+
     let cpp_files = sources(&here.join("cpp"), "cpp");
     cc::Build::new()
         .cpp(true)

@@ -229,10 +229,74 @@ impl<'a, T: Copy> SliceOut<'a, T> {
         Ok(unsafe { std::slice::from_raw_parts_mut(self.out, needed) })
     }
 
-    /// [`SliceOut::take`] of `data.len()` elements, then copies `data` in.
-    pub(crate) fn copy_from(self, data: &[T]) -> CResult<()> {
+    /// [`SliceOut::take`] of `data.len()` elements, then copies `data` in. A value that
+    /// is not finite (an overflow in the computation, e.g. evaluating far outside the
+    /// domain) fails with `CAGD_ERR_NON_FINITE` before anything is written, `*out_needed`
+    /// included: the C ABI never hands out NaN or infinity as a result (issue 18, "no
+    /// silent garbage"; found by the fuzz harness of fuzz/capi).
+    pub(crate) fn copy_from(self, data: &[T]) -> CResult<()>
+    where
+        T: OutValue,
+    {
+        check_finite_out(data, self.names.out)?;
         self.take(data.len())?.copy_from_slice(data);
         Ok(())
+    }
+
+    /// [`SliceOut::take`] of `needed` elements filled by `fill` in a scratch buffer first,
+    /// copied to the caller only when every value is finite (as [`SliceOut::copy_from`]).
+    /// For entry points that write in place (evaluations).
+    pub(crate) fn fill_with(self, needed: usize, fill: impl FnOnce(&mut [T])) -> CResult<()>
+    where
+        T: OutValue + Default,
+    {
+        let mut scratch = vec![T::default(); needed];
+        fill(&mut scratch);
+        self.copy_from(&scratch)
+    }
+}
+
+/// An element type of a caller buffer: `f64` (checked finite) or an integer.
+pub(crate) trait OutValue: Copy {
+    /// Whether the value may be handed to C (`f64`: finite).
+    fn is_valid_out(&self) -> bool;
+}
+
+impl OutValue for f64 {
+    fn is_valid_out(&self) -> bool {
+        self.is_finite()
+    }
+}
+
+impl OutValue for i32 {
+    fn is_valid_out(&self) -> bool {
+        true
+    }
+}
+
+/// `CAGD_ERR_NON_FINITE` naming the first output value that is NaN or infinite.
+pub(crate) fn check_finite_out<T: OutValue>(data: &[T], name: &str) -> CResult<()> {
+    match data.iter().position(|v| !v.is_valid_out()) {
+        None => Ok(()),
+        Some(i) => Err(Failure::new(
+            CagdStatus::ERR_NON_FINITE,
+            format!(
+                "`{name}`: result value {i} is not finite (the computation overflowed f64); \
+                 nothing was written"
+            ),
+        )),
+    }
+}
+
+/// A scalar result for C: `CAGD_ERR_NON_FINITE` naming it when NaN or infinite.
+pub(crate) fn finite_scalar(value: f64, name: &str) -> CResult<f64> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Failure::new(
+            CagdStatus::ERR_NON_FINITE,
+            format!("`{name}` = {value} is not finite (the computation overflowed f64)"),
+        ))
     }
 }
 
@@ -335,9 +399,39 @@ mod tests {
     }
 
     /// `copy_from` through `slice_out`, as the entry points use it.
-    fn copy<T: Copy>(data: &[T], out: *mut T, cap: usize, needed: *mut usize) -> CResult<()> {
+    fn copy<T: OutValue>(data: &[T], out: *mut T, cap: usize, needed: *mut usize) -> CResult<()> {
         // SAFETY: the tests pass pointers to locals of the stated sizes, or NULL.
         unsafe { slice_out(out, cap, needed, &OUT) }?.copy_from(data)
+    }
+
+    /// Regression (fuzz harness, issue 18): a non-finite result is refused with
+    /// `CAGD_ERR_NON_FINITE`, and neither the buffer nor `*out_needed` is written.
+    #[test]
+    fn copy_from_refuses_non_finite_values() {
+        for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            let data = [1.0, bad, 3.0];
+            let mut buf = [9.0; 4];
+            let mut needed = 7usize;
+            let r = copy(&data, buf.as_mut_ptr(), 4, &mut needed);
+            let f = r.unwrap_err();
+            assert_eq!(f.status, CagdStatus::ERR_NON_FINITE);
+            assert!(f.message.contains("value 1"), "{}", f.message);
+            assert_eq!((needed, buf), (7, [9.0; 4]));
+        }
+        let mut needed = 0usize;
+        copy(
+            &[1.0, -0.0, 1e-320, f64::MAX],
+            std::ptr::null_mut(),
+            0,
+            &mut needed,
+        )
+        .unwrap_err();
+        assert_eq!(needed, 4, "extreme finite values pass");
+        assert_eq!(
+            finite_scalar(f64::NAN, "x").unwrap_err().status,
+            CagdStatus::ERR_NON_FINITE
+        );
+        assert_eq!(finite_scalar(-0.0, "x").unwrap(), 0.0);
     }
 
     #[test]

@@ -16,8 +16,8 @@ use cagd_convert::{
 use cagd_core::{BSplineCurve, Error};
 
 use crate::boundary::{
-    CResult, Failure, boundary, disjoint, handle_ref, into_handle, nonnull, out_ref, points_in,
-    slice_in,
+    CResult, Failure, boundary, check_finite_out, disjoint, finite_scalar, handle_ref, into_handle,
+    nonnull, out_ref, points_in, slice_in,
 };
 use crate::bspline::CagdBSpline;
 use crate::curve::{CagdCurve, CagdCurveList, Piece};
@@ -217,6 +217,10 @@ pub unsafe extern "C" fn cagd_nurbs22_span_to_bezier(
         // SAFETY: as above.
         let (po, wo) = unsafe { patch_outputs(points_out, weights_out, dim) }?;
         let (bp, bw) = biquadratic_to_bezier(uk, vk, p, &w, dim)?;
+        // Knots far apart in magnitude can overflow the maps (issue 18, fuzz harness):
+        // CAGD_ERR_NON_FINITE, nothing written.
+        check_finite_out(&bp, "points_out")?;
+        check_finite_out(&bw, "weights_out")?;
         po.copy_from_slice(&bp);
         wo.copy_from_slice(&bw);
         Ok(())
@@ -271,12 +275,17 @@ pub unsafe extern "C" fn cagd_bezier22_to_nurbs22_span(
             Some(unsafe { out_ref(extrapolation_out, "extrapolation_out") }?)
         };
         let s = bezier_to_biquadratic(uk, vk, p, &w, dim)?;
+        let weights: Vec<f64> = (0..9)
+            .map(|k| s.u_weights[k / 3] * s.v_weights[k % 3])
+            .collect();
+        // As cagd_nurbs22_span_to_bezier: a non-finite result is CAGD_ERR_NON_FINITE.
+        check_finite_out(&s.points, "points_out")?;
+        check_finite_out(&weights, "weights_out")?;
+        let extrapolation = finite_scalar(s.extrapolation, "extrapolation_out")?;
         po.copy_from_slice(&s.points);
-        for (k, x) in wo.iter_mut().enumerate() {
-            *x = s.u_weights[k / 3] * s.v_weights[k % 3];
-        }
+        wo.copy_from_slice(&weights);
         if let Some(e) = extra {
-            *e = s.extrapolation;
+            *e = extrapolation;
         }
         Ok(())
     })

@@ -53,7 +53,8 @@ fn normalized(c: &BezierCurve, centre: [f64; 2], scale: f64) -> Result<BezierCur
 /// # Errors
 /// [`Error::NotPlanar`], [`Error::NotEnoughPoints`], [`Error::DegreeOutOfRange`];
 /// [`Error::BasePoint`] when a curve is a
-/// single point; [`Error::Coincident`] when the curves overlap along an arc;
+/// single point; [`Error::DegreeOutOfRange`] when `deg a * deg b` exceeds
+/// [`cagd_core::MAX_BINOMIAL_N`]; [`Error::Coincident`] when the curves overlap along an arc;
 /// [`Error::ConditionNotMet`] when an implicit coefficient overflows `f64`.
 ///
 /// ```
@@ -73,6 +74,16 @@ fn normalized(c: &BezierCurve, centre: [f64; 2], scale: f64) -> Result<BezierCur
 pub fn intersect(a: &BezierCurve, b: &BezierCurve) -> Result<Vec<Intersection>> {
     check_planar(a)?;
     check_planar(b)?;
+    // The substituted polynomial has degree `deg a * deg b`; its Bernstein binomials are
+    // exact only up to MAX_BINOMIAL_N (beyond the seed; found by the C ABI fuzz harness,
+    // issue 18: two degree-16 curves panicked in the binomial table).
+    let product = a.degree().saturating_mul(b.degree());
+    if product > cagd_core::MAX_BINOMIAL_N {
+        return Err(Error::DegreeOutOfRange {
+            degree: product,
+            max: cagd_core::MAX_BINOMIAL_N,
+        });
+    }
     // Common similarity to the unit box.
     let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
     for c in [a, b] {

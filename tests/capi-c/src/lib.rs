@@ -8,6 +8,8 @@
 // references are undefined (checked: rust-lld reports each of them).
 use cagd_capi as _;
 
+mod fuzz;
+
 /// Declares each C test and the Rust test that runs it, and the list of wired names.
 macro_rules! c_tests {
     ($($name:ident),* $(,)?) => {
@@ -40,6 +42,11 @@ macro_rules! c_tests {
 }
 
 c_tests![
+    // c/fuzz_regressions.c
+    fuzz_eval_overflow_is_non_finite,
+    fuzz_intersect_degree_product_refused,
+    fuzz_split_curve_piece_degree_refused,
+    fuzz_report_bound_never_infinite,
     // c/interval.c
     intervaltri_example_1,
     intervaltri_elevation_matrix,

@@ -96,11 +96,11 @@ pub unsafe extern "C" fn cagd_bspline_derivatives(
         let dst = unsafe { slice_out(out, out_cap, out_needed, &OUT) }?;
         let ders = s.0.derivatives(t, order)?;
         let needed = checked_len(ders.len(), s.0.dim(), "(order + 1) * dim")?;
-        let buf = dst.take(needed)?;
-        for (chunk, d) in buf.chunks_exact_mut(s.0.dim()).zip(&ders) {
-            chunk.copy_from_slice(d);
-        }
-        Ok(())
+        dst.fill_with(needed, |buf| {
+            for (chunk, d) in buf.chunks_exact_mut(s.0.dim()).zip(&ders) {
+                chunk.copy_from_slice(d);
+            }
+        })
     })
 }
 

@@ -45,8 +45,7 @@ pub unsafe extern "C" fn cagd_curve_eval(
         // SAFETY: as above.
         let dst = unsafe { slice_out(out, out_cap, out_needed, &OUT) }?;
         check_finite_param("t", t)?;
-        c.0.eval_into(t, dst.take(c.0.dim())?);
-        Ok(())
+        dst.fill_with(c.0.dim(), |p| c.0.eval_into(t, p))
     })
 }
 
@@ -102,11 +101,11 @@ pub unsafe extern "C" fn cagd_curve_eval_many(
         }
         let dim = c.0.dim();
         let needed = checked_len(n_params, dim, "n_params * dim")?;
-        let dst = dst.take(needed)?;
-        for (t, p) in ts.iter().zip(dst.chunks_exact_mut(dim)) {
-            c.0.eval_into(*t, p);
-        }
-        Ok(())
+        dst.fill_with(needed, |out| {
+            for (t, p) in ts.iter().zip(out.chunks_exact_mut(dim)) {
+                c.0.eval_into(*t, p);
+            }
+        })
     })
 }
 

@@ -225,6 +225,7 @@ pub unsafe extern "C" fn cagd_implicit_bezout(
 /// - `CAGD_OK`: the three outputs written.
 /// - `CAGD_ERR_NULL_POINTER`: a pointer is NULL.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `x` or `y` not finite, or a misaligned pointer.
+/// - `CAGD_ERR_NON_FINITE`: `f(x, y)` overflows f64 (a point far from the curve).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -250,7 +251,15 @@ pub unsafe extern "C" fn cagd_implicit_classify(
         cagd_core::check_finite_param("x", x)?;
         cagd_core::check_finite_param("y", y)?;
         let c = imp.0.classify(x, y);
-        *v = c.value;
+        // Far from the curve f(x, y) overflows (issue 18, fuzz harness): refused, not inf.
+        let value = crate::boundary::finite_scalar(c.value, "value_out")?;
+        if c.distance.is_nan() {
+            return Err(crate::boundary::Failure::new(
+                CagdStatus::ERR_NON_FINITE,
+                "`distance_out` is NaN (f and its gradient overflowed f64)",
+            ));
+        }
+        *v = value;
         *s = i32::from(c.sign);
         *d = c.distance;
         Ok(())

@@ -123,9 +123,18 @@ impl CagdReport {
     }
 }
 
-/// `CAGD_ERR_NOT_AVAILABLE` for an absent value.
+/// `CAGD_ERR_NOT_AVAILABLE` for an absent value, and for one that is not finite (a bound
+/// that overflowed f64 on coordinates near the f64 limit is no bound: issue 18, found by
+/// the C ABI fuzz harness, where `cagd_report_bound` handed out `inf` with `CAGD_OK`).
 fn available(value: Option<f64>, what: &str) -> CResult<f64> {
-    value.ok_or_else(|| Failure::new(CagdStatus::ERR_NOT_AVAILABLE, what.to_owned()))
+    match value {
+        Some(v) if v.is_finite() => Ok(v),
+        Some(v) => Err(Failure::new(
+            CagdStatus::ERR_NOT_AVAILABLE,
+            format!("{what}: the value overflowed f64 ({v})"),
+        )),
+        None => Err(Failure::new(CagdStatus::ERR_NOT_AVAILABLE, what.to_owned())),
+    }
 }
 
 /// Releases a report. NULL is accepted and ignored (freeing NULL twice is fine); a

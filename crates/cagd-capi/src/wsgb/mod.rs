@@ -211,8 +211,7 @@ pub unsafe extern "C" fn cagd_wsgb_eval(
         // SAFETY: as above.
         let dst = unsafe { slice_out(out, out_cap, out_needed, &OUT) }?;
         check_finite_param("u", u)?;
-        c.0.eval_into(u, dst.take(c.0.dim())?);
-        Ok(())
+        dst.fill_with(c.0.dim(), |p| c.0.eval_into(u, p))
     })
 }
 

@@ -110,7 +110,8 @@ impl Default for CagdWsgbReport {
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n`; the perturbation method with `target < 1`
 ///   (it needs `n >= 2` at every step); a target below the Bézier method's minimum.
 /// - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` (Bézier methods with ends).
-/// - `CAGD_ERR_NON_FINITE`: a reduced coordinate overflows to infinity.
+/// - `CAGD_ERR_NON_FINITE`: a reduced coordinate, the certified bound or the measured
+///   error overflows to infinity.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -160,6 +161,12 @@ pub unsafe extern "C" fn cagd_wsgb_reduce(
         let out = unsafe { out_ref(curve_out, "curve_out") }?;
         let red = reduce_wsgb_with(&c.0, o.target, method, o.measure)?;
         let r = &red.report;
+        // Coordinates near the f64 limit overflow the bound (issue 18, found by the C ABI
+        // fuzz harness: error_bound = inf with CAGD_OK): a bound that is no bound is refused.
+        crate::boundary::finite_scalar(r.error_bound, "report error_bound")?;
+        if let Some(e) = r.max_error {
+            crate::boundary::finite_scalar(e, "report max_error")?;
+        }
         let seed = |f: fn(&cagd_reduce::WsgbStep) -> f64| {
             if r.steps.is_empty() {
                 f64::NAN

@@ -156,7 +156,8 @@ pub(crate) fn transpose(h: &TensorPatch) -> TensorPatch {
 ///
 /// # Errors
 /// [`Error::BadParameter`] when `lo` or `hi` leaves `[0, 1]`, when `lo > hi` somewhere, or
-/// when `0 <= v0 < v1 <= 1` fails; [`Error::NonPositiveWeight`] cannot occur for valid
+/// when `0 <= v0 < v1 <= 1` fails; [`Error::DegreeOutOfRange`] when the piece's degree
+/// `n + m max(kl, kh)` exceeds [`cagd_core::MAX_DEGREE`]; [`Error::NonPositiveWeight`] cannot occur for valid
 /// input (convex combinations of positive weights).
 pub fn ruled_subpatch(
     p: &TensorSurface,
@@ -186,6 +187,11 @@ pub fn ruled_subpatch(
     if transposed {
         h = transpose(&h);
     }
+    // The piece's degree `n + m max(kl, kh)` must be one cagd supports (its binomials are
+    // exact up to MAX_DEGREE); beyond the seed, found by the C ABI fuzz harness (issue 18:
+    // a degree-131 piece panicked in the binomial table).
+    let ((m, n), k) = (h.degrees(), lo.len().max(hi.len()).saturating_sub(1));
+    cagd_core::check_degree(m.saturating_mul(k).saturating_add(n))?;
     let net = ruled_net(&h, lo, hi, v0, v1);
     Ok(PatchPiece {
         surface: PatchSurface::Tensor(TensorSurface::from_homogeneous(net, p.weights().is_some())?),

@@ -1,0 +1,109 @@
+/* Regressions found by the C ABI fuzz harness (fuzz/capi, issue 18): each was a silent
+ * garbage result (NaN / inf with CAGD_OK) or a caught panic (CAGD_ERR_PANIC). */
+#include <float.h>
+
+#include "ctest.h"
+
+/* Evaluating far outside [0, 1] overflows: CAGD_ERR_NON_FINITE, nothing written (was
+ * CAGD_OK with inf / NaN in the buffer). */
+int cagd_ctest_fuzz_eval_overflow_is_non_finite(void) {
+    int rc = 1;
+    CagdCurve *c = NULL;
+    const double pts[3] = {1e300, -1e300, 1e300};
+    double out[4] = {9.0, 9.0, 9.0, 9.0};
+    const double ts[2] = {0.5, 1e10};
+    size_t needed = 77;
+    CHECK_OK(cagd_curve_new(pts, 3, 1, &c));
+    CHECK_STATUS(cagd_curve_eval(c, 1e10, out, 4, &needed), CAGD_ERR_NON_FINITE);
+    CHECK_MESSAGE_HAS("not finite");
+    CHECK(needed == 77 && out[0] == 9.0);
+    CHECK_STATUS(cagd_curve_eval_many(c, ts, 2, out, 4, &needed), CAGD_ERR_NON_FINITE);
+    CHECK(needed == 77 && out[0] == 9.0 && out[1] == 9.0);
+    /* inside the domain the same curve is fine */
+    CHECK_OK(cagd_curve_eval(c, 0.5, out, 4, &needed));
+    CHECK(needed == 1 && isfinite(out[0]));
+    rc = 0;
+cleanup:
+    cagd_curve_free(c);
+    return rc;
+}
+
+/* Two degree-16 curves: the substituted polynomial has degree 256, beyond the exact
+ * binomials: CAGD_ERR_DEGREE_OUT_OF_RANGE (was CAGD_ERR_PANIC, "binomial(256, 0) beyond
+ * the exact table"). */
+int cagd_ctest_fuzz_intersect_degree_product_refused(void) {
+    int rc = 1;
+    CagdCurve *a = NULL, *b = NULL;
+    double pa[17 * 2], pb[17 * 2];
+    size_t needed = 0;
+    for (int i = 0; i <= 16; ++i) {
+        pa[2 * i] = i / 16.0;
+        pa[2 * i + 1] = (i % 3) * 0.25;
+        pb[2 * i] = (i % 2) * 0.5;
+        pb[2 * i + 1] = i / 16.0;
+    }
+    CHECK_OK(cagd_curve_new(pa, 17, 2, &a));
+    CHECK_OK(cagd_curve_new(pb, 17, 2, &b));
+    CHECK_STATUS(cagd_curve_intersect(a, b, NULL, 0, &needed), CAGD_ERR_DEGREE_OUT_OF_RANGE);
+    CHECK_MESSAGE_HAS("256");
+    rc = 0;
+cleanup:
+    cagd_curve_free(a);
+    cagd_curve_free(b);
+    return rc;
+}
+
+/* Splitting a bicubic patch along a curve of degree 29 gives pieces of degree
+ * 3 + 3 * 29 = 90 > 64: CAGD_ERR_DEGREE_OUT_OF_RANGE (was CAGD_ERR_PANIC in the binomial
+ * table). Degree 20 (3 + 60 = 63) still works. */
+int cagd_ctest_fuzz_split_curve_piece_degree_refused(void) {
+    int rc = 1;
+    CagdTensorPatch *p = NULL;
+    CagdPatchPieceList *l = NULL;
+    double pts[16 * 3];
+    double coeffs[30];
+    for (int i = 0; i < 16; ++i) {
+        pts[3 * i] = (i / 4) / 3.0;
+        pts[3 * i + 1] = (i % 4) / 3.0;
+        pts[3 * i + 2] = 0.1 * i;
+    }
+    for (int i = 0; i < 30; ++i) coeffs[i] = 0.5;
+    CHECK_OK(cagd_tensorpatch_new(pts, 3, 3, 3, &p));
+    CHECK_STATUS(cagd_tensorpatch_split_curve(p, NULL, coeffs, 30, &l),
+                 CAGD_ERR_DEGREE_OUT_OF_RANGE);
+    CHECK(l == NULL);
+    CHECK_OK(cagd_tensorpatch_split_curve(p, NULL, coeffs, 21, &l));
+    rc = 0;
+cleanup:
+    cagd_patchpiecelist_free(l);
+    cagd_tensorpatch_free(p);
+    return rc;
+}
+
+/* Coordinates near DBL_MAX: a reduction either fails with a status or reports a finite
+ * bound; cagd_report_bound never gives inf with CAGD_OK (it did). */
+int cagd_ctest_fuzz_report_bound_never_infinite(void) {
+    int rc = 1;
+    CagdCurve *c = NULL, *r = NULL;
+    CagdReport *rep = NULL;
+    CagdReduceOptions o;
+    const double pts[4 * 2] = {DBL_MAX, -DBL_MAX, -DBL_MAX, DBL_MAX,
+                               DBL_MAX, DBL_MAX,  -DBL_MAX, -DBL_MAX};
+    double bound = -1.0;
+    CHECK_OK(cagd_curve_new(pts, 4, 2, &c));
+    CHECK_OK(cagd_reduce_options_init(&o));
+    o.target = 2;
+    CagdStatus st = cagd_curve_reduce(c, &o, &r, &rep);
+    if (st == CAGD_OK) {
+        st = cagd_report_bound(rep, &bound);
+        CHECK(st == CAGD_ERR_NOT_AVAILABLE || (st == CAGD_OK && isfinite(bound) && bound >= 0));
+    } else {
+        CHECK(st != CAGD_ERR_PANIC && r == NULL && rep == NULL);
+    }
+    rc = 0;
+cleanup:
+    cagd_report_free(rep);
+    cagd_curve_free(r);
+    cagd_curve_free(c);
+    return rc;
+}
