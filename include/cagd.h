@@ -1035,7 +1035,7 @@ typedef struct CagdBezierReport {
   size_t degree_to;
   /**
    * Certified upper bound of `max_t |P(t) - Q(t)|` in model units, in `space`
-   * (`cagd_report_bound`); NaN when no bound was formed.
+   * (`cagd_report_bound`); NaN when no bound was formed or it overflowed f64.
    */
   double bound;
   /**
@@ -1045,7 +1045,8 @@ typedef struct CagdBezierReport {
   double max_error;
   /**
    * The certified bound in homogeneous space for a rational curve, the Euclidean bound
-   * for a polynomial one (`cagd_report_space`); NaN when no bound was formed.
+   * for a polynomial one (`cagd_report_space`); NaN when no bound was formed or it
+   * overflowed f64.
    */
   double homogeneous_bound;
 } CagdBezierReport;
