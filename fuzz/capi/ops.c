@@ -2371,7 +2371,52 @@ static void lens_patchlist(const void *p, size_t *len) {
     len[3] = s->bounds_len;
 }
 
+/* The list pools fill slowly (the to-tolerance reductions seldom succeed on random
+ * options): now and then a list of a small random source reduced with good options, so
+ * that the copies run on real lists. */
+static void seed_list(FzType t) {
+    if (fz_r(2) || fz.pools[t].n >= 2) return;
+    double p[64];
+    for (size_t i = 0; i < 64; ++i) p[i] = 2.0 * fz_unit() - 1.0;
+    CagdReduceOptions o;
+    (void)cagd_reduce_options_init(&o);
+    o.target = 2;
+    o.target_v = 2;
+    o.tolerance = 0.01 + 0.5 * fz_unit();
+    struct CagdReport *rep = NULL;
+    CagdStatus st = CAGD_OK;
+    if (t == FZ_TENSORLIST) {
+        struct CagdTensorPatch *src = NULL;
+        struct CagdTensorPatchList *l = NULL;
+        if (cagd_tensorpatch_new(p, 3, 1 + fz_r(3), 1 + fz_r(3), &src) == CAGD_OK) {
+            st = cagd_tensorpatch_reduce_to_tolerance(src, &o, &l, &rep);
+            if (st == CAGD_OK) fz_put(t, l);
+        }
+        cagd_tensorpatch_free(src);
+    } else if (t == FZ_TRILIST) {
+        struct CagdTriPatch *src = NULL;
+        struct CagdTriPatchList *l = NULL;
+        if (cagd_tripatch_new(p, 3 + fz_r(2), 1 + fz_r(3), &src) == CAGD_OK) {
+            st = cagd_tripatch_reduce_to_tolerance(src, &o, &l, &rep);
+            if (st == CAGD_OK) fz_put(t, l);
+        }
+        cagd_tripatch_free(src);
+    } else {
+        struct CagdWsgbCurve *src = NULL;
+        struct CagdWsgbCurveList *l = NULL;
+        o.target = 3 + fz_r(2);
+        if (cagd_wsgb_new(p, 6 + fz_r(3), 1 + fz_r(3), fz_r(2), &src) == CAGD_OK) {
+            st = cagd_wsgb_reduce_to_tolerance(src, (int32_t)fz_r(3), &o, &l);
+            if (st == CAGD_OK) fz_put(t, l);
+        }
+        cagd_wsgb_free(src);
+    }
+    check_raw(st, "a to-tolerance reduction (list for a copy)");
+    cagd_report_free(rep);
+}
+
 static void patchlist_copy(FzType t) {
+    seed_list(t);
     const void *l = fz_pick(t);
     fz.call_null |= l == NULL;
     static const int dbl[] = {0, 1, 1, 1};
@@ -2420,6 +2465,7 @@ static void lens_wsgblist(const void *p, size_t *len) {
 }
 
 static void op_cagd_wsgblist_copy(void) {
+    seed_list(FZ_WSGBLIST);
     IN_H(FZ_WSGBLIST, CagdWsgbCurveList, l);
     static const int dbl[] = {0, 0, 1, 1, 1};
     static const char *const names[] = {"degrees_out", "orders_out", "intervals_out",
