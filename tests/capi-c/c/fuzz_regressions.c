@@ -165,3 +165,28 @@ cleanup:
     cagd_curve_free(c);
     return rc;
 }
+
+/* A batch whose reduced coordinates overflow (input at the f64 limit): the checked input is
+ * finite, so the overflow is CAGD_ERR_NON_FINITE (was CAGD_ERR_PANIC, "internal error:
+ * batch failed after validation"), with and without bounds. */
+int cagd_ctest_fuzz_curve_reduce_batch_overflow_is_non_finite(void) {
+    int rc = 1;
+    CagdReduceOptions o;
+    const double pts[2 * 4] = {DBL_MAX, -DBL_MAX, -DBL_MAX, -DBL_MAX,
+                               1.0,     2.0,      3.0,      4.0};
+    double out[2 * 3], bounds[2];
+    size_t needed = 0;
+    CHECK_OK(cagd_reduce_options_init(&o));
+    o.target = 2;
+    CHECK_STATUS(cagd_curve_reduce_batch(pts, 2, 3, 1, &o, out, 6, &needed, NULL),
+                 CAGD_ERR_NON_FINITE);
+    CHECK_MESSAGE_HAS("overflows");
+    CHECK_STATUS(cagd_curve_reduce_batch(pts, 2, 3, 1, &o, out, 6, &needed, bounds),
+                 CAGD_ERR_NON_FINITE);
+    /* the second curve alone is fine, with a finite bound */
+    CHECK_OK(cagd_curve_reduce_batch(pts + 4, 1, 3, 1, &o, out, 6, &needed, bounds));
+    CHECK(needed == 3 && isfinite(bounds[0]) && bounds[0] >= 0.0);
+    rc = 0;
+cleanup:
+    return rc;
+}
