@@ -2102,6 +2102,32 @@ static void wout_check(const Wout *w, CagdStatus st, int rational, size_t len) {
             fz_ob_check(&ob, st, 1);                                                       \
     } while (0)
 
+/* The documented equivalence of a handle-free call and its handle form: the same
+ * control points (and weights) bit for bit. `out` holds `n_out` points of `dim`. */
+static void check_same_as_handle(const struct CagdCurve *h, const double *out,
+                                 const double *wout, size_t n_out, size_t dim,
+                                 const char *what) {
+    static double hp[MB_STRIDE], hw[MB_STRIDE];
+    size_t need = 0;
+    if (h == NULL || n_out * dim > MB_STRIDE) return;
+    if (cagd_curve_points(h, hp, MB_STRIDE, &need) != CAGD_OK) return;
+    if (need != n_out * dim || memcmp(hp, out, need * sizeof(double)) != 0) {
+        fz_fail("points differ from those of %s", what);
+    }
+    if (wout != NULL && cagd_curve_weights(h, hw, MB_STRIDE, &need) == CAGD_OK &&
+        (need != n_out || memcmp(hw, wout, need * sizeof(double)) != 0)) {
+        fz_fail("weights differ from those of %s", what);
+    }
+}
+
+/* A handle curve of the same input (NULL when it cannot be made). */
+static struct CagdCurve *same_curve(const double *pts, const double *w, size_t n, size_t dim) {
+    struct CagdCurve *c = NULL;
+    CagdStatus st = w != NULL ? cagd_curve_new_rational(pts, w, n, dim, &c)
+                              : cagd_curve_new(pts, n, dim, &c);
+    return st == CAGD_OK ? c : NULL;
+}
+
 static void op_cagd_bezier_elevate(void) {
     size_t deg = fz_deg(), dim = fz_dim(), n = fz_count(fz_add(deg, 1));
     const double *pts = fz_in(fz_mul(n, dim), FZ_VALUES);
@@ -2118,6 +2144,15 @@ static void op_cagd_bezier_elevate(void) {
         fz_fail("out_needed %zu is not (n_points + r) dim", ob.needed);
     }
     wout_check(&wo, st, rational, st == CAGD_OK ? n + r : 0);
+    if (st == CAGD_OK && ob.p != NULL) {
+        struct CagdCurve *c = same_curve(pts, w, n, dim), *e = NULL;
+        if (c != NULL && cagd_curve_elevate(c, r, &e) == CAGD_OK) {
+            check_same_as_handle(e, ob.p, rational ? wo.p : NULL, n + r, dim,
+                                 "cagd_curve_elevate");
+        }
+        cagd_curve_free(e);
+        cagd_curve_free(c);
+    }
 }
 
 static void op_cagd_bezier_reduce(void) {
@@ -2141,6 +2176,17 @@ static void op_cagd_bezier_reduce(void) {
         fz_fail("out_needed %zu is not (target + 1) dim", ob.needed);
     }
     wout_check(&wo, st, rational, st == CAGD_OK ? o->target + 1 : 0);
+    if (st == CAGD_OK && ob.p != NULL && fz_r(2)) {
+        struct CagdCurve *c = same_curve(pts, w, n, dim), *e = NULL;
+        struct CagdReport *hr = NULL;
+        if (c != NULL && cagd_curve_reduce(c, o, &e, &hr) == CAGD_OK) {
+            check_same_as_handle(e, ob.p, rational ? wo.p : NULL, o->target + 1, dim,
+                                 "cagd_curve_reduce");
+        }
+        cagd_report_free(hr);
+        cagd_curve_free(e);
+        cagd_curve_free(c);
+    }
     if (st == CAGD_OK && !rep_n) {
         if (rep.struct_size < sizeof rep) fz_fail("CAGD_OK with report struct_size %zu", rep.struct_size);
         if (rep.degree_from != n - 1 || rep.degree_to != o->target) {
