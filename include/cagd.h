@@ -1035,7 +1035,7 @@ typedef struct CagdBezierReport {
   size_t degree_to;
   /**
    * Certified upper bound of `max_t |P(t) - Q(t)|` in model units, in `space`
-   * (`cagd_report_bound`); NaN when no bound was formed.
+   * (`cagd_report_bound`); NaN when no bound was formed or it overflowed f64.
    */
   double bound;
   /**
@@ -1045,7 +1045,8 @@ typedef struct CagdBezierReport {
   double max_error;
   /**
    * The certified bound in homogeneous space for a rational curve, the Euclidean bound
-   * for a polynomial one (`cagd_report_space`); NaN when no bound was formed.
+   * for a polynomial one (`cagd_report_space`); NaN when no bound was formed or it
+   * overflowed f64.
    */
   double homogeneous_bound;
 } CagdBezierReport;
@@ -4971,7 +4972,8 @@ CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
  * - `opts` (in): the options. Borrowed for the call.
  * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
  *   `n_curves * (target + 1) * dim` doubles hold the reduced curves in the same layout.
- *   May be NULL only when `out_cap == 0`. Not written on failure.
+ *   May be NULL only when `out_cap == 0`. Not written on failure (but for the overflow
+ *   of `CAGD_ERR_NON_FINITE`).
  * - `out_cap` (in): capacity of `out` in doubles.
  * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
  *   `n_curves * (target + 1) * dim`.
@@ -4980,7 +4982,7 @@ CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
  *   `max_t |P(t) - Q(t)|` (model units, Euclidean norm of the `dim` coordinates, the
  *   rounding of the reduced points included; `+inf` only if the computation overflowed)
  *   at `opts->bound_level` (`CAGD_BOUND_FAST` or `CAGD_BOUND_TIGHT`). Not written on
- *   failure.
+ *   failure (but for the overflow of `CAGD_ERR_NON_FINITE`).
  *
  * Returns:
  * - `CAGD_OK`: the reduced curves are in `out`.
@@ -4994,7 +4996,9 @@ CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
  * - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message gives
- *   the point index counted over the whole batch).
+ *   the point index counted over the whole batch; nothing but `*out_needed` is
+ *   written), or a reduced coordinate overflows to infinity (input near the largest
+ *   double; `out` and `bounds_out` are then partly written).
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
  *   written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.

@@ -70,7 +70,13 @@
     X(cagd_wsgb_eval) X(cagd_wsgb_to_bezier) X(cagd_wsgb_from_bezier) \
     X(cagd_wsgb_elevate) X(cagd_wsgb_leading_coefficient) \
     X(cagd_wsgb_reduce_to_tolerance) X(cagd_wsgblist_free) X(cagd_wsgblist_count) \
-    X(cagd_wsgblist_get) X(cagd_wsgb_reduce)
+    X(cagd_wsgblist_get) X(cagd_wsgb_reduce) X(cagd_bezier_elevate) \
+    X(cagd_bezier_elevate_batch) X(cagd_bezier_reduce) X(cagd_bezier_reduce_batch) \
+    X(cagd_bspline_copy) X(cagd_bspline_outer_knots) \
+    X(cagd_bsplinesurface_to_bezier_patches) X(cagd_curvelist_copy) \
+    X(cagd_curvelist_to_bspline_unclamped) X(cagd_patchpiecelist_to_bsplinesurface) \
+    X(cagd_report_bound_level) X(cagd_tensorpatchlist_copy) X(cagd_tripatchlist_copy) \
+    X(cagd_wsgblist_copy)
 /* clang-format on */
 
 #define X(name) FN_##name,
@@ -136,7 +142,7 @@ static const CagdReduceOptions *gen_opts(void) {
     (void)cagd_reduce_options_init(o);
     unsigned k = fz_r(4);
     for (unsigned i = 0; i < k; ++i) {
-        switch (fz_r(19)) {
+        switch (fz_r(20)) {
         case 0: o->method = fz_enum(12); break;
         case 1: o->target = fz_small_deg(); break;
         case 2: o->r = fz_r(8) ? (int32_t)fz_r(5) - 1 : fz_enum(4); break;
@@ -155,6 +161,7 @@ static const CagdReduceOptions *gen_opts(void) {
         case 15: o->spline_strategy = fz_enum(3); break;
         case 16: o->spline_continuity = fz_r(8) ? (int32_t)fz_r(4) - 1 : fz_enum(3); break;
         case 17: o->struct_size = fz_r(2) ? fz_r(sizeof *o) : sizeof *o + fz_r(256); break;
+        case 18: o->bound_level = fz_enum(3); break;
         default: o->target = fz_r(4); break;
         }
     }
@@ -258,6 +265,162 @@ static size_t tri_degree(const struct CagdTriPatch *p) {
     size_t d, dim;
     return p != NULL && cagd_tripatch_shape(p, &d, &dim) == CAGD_OK ? d : fz_r(4);
 }
+
+/* ---------------------------------------------------------------- multi-buffer copies */
+
+/* The copy functions (cagd_*_copy) fill several caller buffers at once and report the
+ * sizes in a struct. Each buffer lives in its own region of mb_store (doubles and
+ * size_t alike: 8 bytes each), poisoned before the call. */
+#define MB_MAX 6
+#define MB_STRIDE 4096
+static double mb_store[MB_MAX][MB_STRIDE + 16];
+
+static double mb_poison(void) {
+    const uint64_t bits = 0x7FF4DEADBEEF0002ull;
+    double d;
+    memcpy(&d, &bits, sizeof d);
+    return d;
+}
+
+static int mb_is_poison(double d) {
+    uint64_t b;
+    memcpy(&b, &d, sizeof b);
+    return b == 0x7FF4DEADBEEF0002ull;
+}
+
+typedef struct Mb {
+    void *p;
+    size_t cap;
+    int misaligned;
+} Mb;
+
+static void mb_poison_all(void) {
+    for (size_t k = 0; k < MB_MAX; ++k)
+        for (size_t i = 0; i < MB_STRIDE + 16; ++i) mb_store[k][i] = mb_poison();
+}
+
+/* A random buffer k: size query, NULL with a capacity, short, misaligned or roomy. */
+static void mb_draw(Mb *b, size_t k) {
+    b->misaligned = 0;
+    switch (fz_r(12)) {
+    case 0:
+        b->p = NULL;
+        b->cap = 0;
+        break;
+    case 1:
+        b->p = NULL;
+        b->cap = 1 + fz_r(8);
+        fz.call_null = 1;
+        break;
+    case 2:
+        b->p = mb_store[k];
+        b->cap = fz_r(8);
+        break;
+    case 3:
+        b->p = (char *)mb_store[k] + 4;
+        b->cap = 1 + fz_r(64);
+        b->misaligned = 1;
+        fz.call_misaligned = 1;
+        break;
+    default:
+        b->p = mb_store[k];
+        b->cap = MB_STRIDE;
+        break;
+    }
+}
+
+/* Exactly `len` elements (NULL when 0 now and then); 0 when it does not fit. */
+static int mb_exact(Mb *b, size_t k, size_t len) {
+    b->misaligned = 0;
+    if (len > MB_STRIDE) return 0;
+    b->p = len == 0 && fz_r(2) ? NULL : mb_store[k];
+    b->cap = len;
+    return 1;
+}
+
+/* After CAGD_OK: the first `len` elements written (finite doubles when `dbl`), nothing
+ * after them. After a failure: nothing written. */
+static void mb_check(const Mb *b, size_t k, CagdStatus st, size_t len, int dbl,
+                     const char *what) {
+    if (b->p == NULL || b->misaligned) return;
+    const double *d = mb_store[k];
+    if (st != CAGD_OK) {
+        for (size_t i = 0; i < b->cap + 8 && i < MB_STRIDE + 16; ++i) {
+            if (!mb_is_poison(d[i])) fz_fail("%s[%zu] written on failure", what, i);
+        }
+        return;
+    }
+    if (len > b->cap) fz_fail("CAGD_OK but %s needs %zu > capacity %zu", what, len, b->cap);
+    for (size_t i = 0; i < len; ++i) {
+        if (mb_is_poison(d[i])) fz_fail("CAGD_OK but %s[%zu] of %zu not written", what, i, len);
+        if (dbl && !isfinite(d[i])) fz_fail("CAGD_OK but %s[%zu] = %g", what, i, d[i]);
+    }
+    for (size_t i = len; i < b->cap + 8 && i < len + 8; ++i) {
+        if (!mb_is_poison(d[i])) fz_fail("%s[%zu] written beyond its %zu", what, i, len);
+    }
+}
+
+/* BUFFER_TOO_SMALL must name a buffer whose capacity is below its length. */
+static void mb_too_small(CagdStatus st, const Mb *b, const size_t *len, size_t n) {
+    if (st != CAGD_ERR_BUFFER_TOO_SMALL) return;
+    for (size_t k = 0; k < n; ++k) {
+        if (b[k].cap < len[k]) return;
+    }
+    fz_fail("CAGD_ERR_BUFFER_TOO_SMALL but every capacity holds its size");
+}
+
+typedef CagdStatus (*MbCall)(Mb *b, void *sizes);
+typedef void (*MbLens)(const void *sizes, size_t *len);
+static const void *mb_h; /* the handle of the current copy */
+
+/* One copy call (or a size query and then exactly the sizes it gave): `n` buffers,
+ * `dbl[k]` when buffer k holds doubles; `len` receives the lengths of the sizes. */
+static CagdStatus mb_run(size_t n, const int *dbl, const char *const *names, MbCall call,
+                         MbLens lens, void *sizes, size_t sizes_bytes, size_t *len, Mb *b) {
+    int sizes_null = fz_r(48) == 0;
+    fz.call_null |= sizes_null;
+    int exact = fz_r(3) == 0;
+    CagdStatus st = CAGD_OK;
+    for (size_t k = 0; k < n; ++k) len[k] = 0;
+    for (int phase = 0;; ++phase) {
+        if (exact && phase == 1) {
+            int fits = 1;
+            for (size_t k = 0; k < n; ++k) fits &= len[k] <= MB_STRIDE;
+            if (!fits) break;
+        }
+        mb_poison_all();
+        memset(sizes, 0xFF, sizes_bytes);
+        for (size_t k = 0; k < n; ++k) {
+            if (!exact) {
+                mb_draw(&b[k], k);
+            } else if (phase == 0) {
+                b[k].p = NULL;
+                b[k].cap = 0;
+                b[k].misaligned = 0;
+            } else {
+                (void)mb_exact(&b[k], k, len[k]);
+            }
+        }
+        st = fz_status(call(b, sizes_null ? NULL : sizes));
+        if ((st == CAGD_OK || st == CAGD_ERR_BUFFER_TOO_SMALL) && !sizes_null) {
+            lens(sizes, len);
+        } else {
+            for (size_t k = 0; k < n; ++k) len[k] = 0;
+        }
+        if (exact && phase == 1 && st == CAGD_ERR_BUFFER_TOO_SMALL) {
+            fz_fail("buffers of exactly the queried sizes are too small");
+        }
+        if (!(exact && phase == 0 && st == CAGD_ERR_BUFFER_TOO_SMALL && !sizes_null)) break;
+    }
+    if (!sizes_null) mb_too_small(st, b, len, n);
+    for (size_t k = 0; k < n; ++k) mb_check(&b[k], k, st, len[k], dbl[k], names[k]);
+    return st;
+}
+
+static size_t mb_sz(size_t k, size_t i) { return ((const size_t *)(const void *)mb_store[k])[i]; }
+
+#define MB_SZ(k) ((size_t *)b[k].p), b[k].cap
+#define MB_D(k) ((double *)b[k].p), b[k].cap
 
 /* ---------------------------------------------------------------- curves */
 
@@ -431,9 +594,34 @@ static void op_cagd_curve_reduce_batch(void) {
     const double *pts = fz_in(fz_mul(fz_mul(nc, fz_add(deg, 1)), dim), FZ_VALUES);
     SKIP_IF_NEEDED;
     const CagdReduceOptions *o = gen_opts();
+    /* bounds_out: NULL (no bounds) or a buffer of n_curves doubles (poisoned) */
+    static double bounds[4096 + 8];
+    double *bp = NULL;
+    if (nc <= 4096 && fz_r(2)) {
+        bp = bounds;
+        for (size_t i = 0; i < nc + 8; ++i) bounds[i] = mb_poison();
+    }
     FzOb ob;
     CagdStatus st;
-    OUTCALL(ob, cagd_curve_reduce_batch(pts, nc, deg, dim, o, ob.p, ob.cap, ob.needed_p));
+    OUTCALL(ob, cagd_curve_reduce_batch(pts, nc, deg, dim, o, ob.p, ob.cap, ob.needed_p, bp));
+    if (st == CAGD_OK && bp != NULL) {
+        if (o->bound_level != CAGD_BOUND_FAST && o->bound_level != CAGD_BOUND_TIGHT) {
+            fz_fail("CAGD_OK with bounds_out and bound_level %d", (int)o->bound_level);
+        }
+        for (size_t i = 0; i < nc; ++i) {
+            if (mb_is_poison(bounds[i])) fz_fail("bounds_out[%zu] of %zu not written", i, nc);
+            /* documented: "+inf only if the computation overflowed" (no NaN, no sign) */
+            if (isnan(bounds[i]) || bounds[i] < 0.0 || bounds[i] == -INFINITY)
+                fz_fail("bounds_out[%zu] = %g is not a bound (>= 0 or +inf)", i, bounds[i]);
+        }
+        if (!mb_is_poison(bounds[nc])) fz_fail("bounds_out written beyond n_curves = %zu", nc);
+    }
+    /* not written on failure, but for an overflow of the reduced points (documented) */
+    if (st != CAGD_OK && st != CAGD_ERR_NON_FINITE && bp != NULL) {
+        for (size_t i = 0; i < nc; ++i) {
+            if (!mb_is_poison(bounds[i])) fz_fail("bounds_out[%zu] written on failure", i);
+        }
+    }
 }
 
 static void op_cagd_curve_reduce_exact(void) {
@@ -1800,6 +1988,553 @@ static void op_cagd_wsgblist_get(void) {
     FIN(b);
     FIN(bd);
     KEEP(FZ_WSGB, c);
+}
+
+/* ---------------------------------------------------------------- handle-free Bézier */
+
+/* n_threads: 0..3 mostly; now and then a count above the limit (256) or huge. */
+static size_t gen_threads(void) {
+    switch (fz_r(32)) {
+    case 0: return 300;
+    case 1: return fz_huge();
+    case 2: return 4 + fz_r(5);
+    default: return fz_r(4);
+    }
+}
+
+/* Curves per batch: a few mostly, sometimes enough (>= 1024) to use the worker pool. */
+static size_t gen_batch_count(size_t deg, size_t dim) {
+    if (fz_r(24) == 0 && deg <= 8 && dim <= 3) return 1024 + fz_r(64);
+    return fz_count(1 + fz_r(4));
+}
+
+static void op_cagd_bezier_elevate_batch(void) {
+    size_t deg = fz_deg(), dim = fz_dim(), nc = gen_batch_count(deg, dim);
+    const double *pts = fz_in(fz_mul(fz_mul(nc, fz_add(deg, 1)), dim), FZ_VALUES);
+    SKIP_IF_NEEDED;
+    int32_t layout = fz_enum(2);
+    size_t r = fz_small_deg();
+    size_t nt = gen_threads();
+    FzOb ob;
+    CagdStatus st;
+    OUTCALL(ob, cagd_bezier_elevate_batch(pts, nc, deg, dim, layout, r, nt, ob.p, ob.cap,
+                                          ob.needed_p));
+    if (st == CAGD_OK && ob.needed != fz_mul(fz_mul(nc, fz_add(fz_add(deg, r), 1)), dim)) {
+        fz_fail("out_needed %zu is not n_curves (n + r + 1) dim", ob.needed);
+    }
+}
+
+static void op_cagd_bezier_reduce_batch(void) {
+    size_t deg = fz_deg(), dim = fz_dim(), nc = gen_batch_count(deg, dim);
+    const double *pts = fz_in(fz_mul(fz_mul(nc, fz_add(deg, 1)), dim), FZ_VALUES);
+    SKIP_IF_NEEDED;
+    int32_t layout = fz_enum(2);
+    const CagdReduceOptions *o = gen_opts();
+    size_t nt = gen_threads();
+    FzOb ob;
+    CagdStatus st;
+    OUTCALL(ob, cagd_bezier_reduce_batch(pts, nc, deg, dim, layout, o, nt, ob.p, ob.cap,
+                                         ob.needed_p));
+    if (st == CAGD_OK && ob.needed != fz_mul(fz_mul(nc, fz_add(o->target, 1)), dim)) {
+        fz_fail("out_needed %zu is not n_curves (target + 1) dim", ob.needed);
+    }
+}
+
+/* The weights output of cagd_bezier_elevate / cagd_bezier_reduce (rational curves). */
+static double wout_store[MB_STRIDE + 16];
+
+typedef struct Wout {
+    double *p;
+    size_t cap;
+    int roomy;
+} Wout;
+
+static void wout_draw(Wout *w, int rational, int exact) {
+    for (size_t i = 0; i < MB_STRIDE + 16; ++i) wout_store[i] = mb_poison();
+    uint32_t k = exact ? 9 : fz_r(10);
+    w->roomy = 0;
+    if (k == 0) {
+        w->p = NULL;
+        w->cap = fz_r(2) ? 0 : 1 + fz_r(8);
+        fz.call_null |= rational;
+    } else if (k == 1) {
+        w->p = wout_store;
+        w->cap = fz_r(8);
+    } else {
+        w->p = wout_store;
+        w->cap = MB_STRIDE;
+        w->roomy = 1;
+    }
+}
+
+static void wout_check(const Wout *w, CagdStatus st, int rational, size_t len) {
+    if (w->p == NULL) return;
+    if (st != CAGD_OK || !rational) {
+        for (size_t i = 0; i < w->cap + 8 && i < MB_STRIDE + 16; ++i) {
+            if (!mb_is_poison(wout_store[i])) {
+                fz_fail("weights_out[%zu] written (failure or polynomial curve)", i);
+            }
+        }
+        return;
+    }
+    if (len > w->cap) fz_fail("CAGD_OK but weights_out cap %zu < %zu", w->cap, len);
+    for (size_t i = 0; i < len; ++i) {
+        if (mb_is_poison(wout_store[i])) fz_fail("weights_out[%zu] not written", i);
+        if (!isfinite(wout_store[i]) || !(wout_store[i] > 0.0)) {
+            fz_fail("CAGD_OK but weights_out[%zu] = %g", i, wout_store[i]);
+        }
+    }
+    if (!mb_is_poison(wout_store[len])) fz_fail("weights_out written beyond %zu", len);
+}
+
+/* The buffer call with a second (weights) output: the exact mode gets roomy weights;
+ * CAGD_ERR_BUFFER_TOO_SMALL may come from a short weights buffer alone. */
+#define OUTCALL_W(ob, w, rational, expr)                                                   \
+    do {                                                                                   \
+        fz_ob_init(&ob);                                                                   \
+        wout_draw(&w, rational, ob.mode == FZ_OB_EXACT);                                   \
+        for (;;) {                                                                         \
+            st = fz_status(expr);                                                          \
+            if (!fz_ob_again(&ob, st)) break;                                              \
+        }                                                                                  \
+        if (!(st == CAGD_ERR_BUFFER_TOO_SMALL && rational && !w.roomy &&                   \
+              ob.needed != (size_t)-7 && ob.needed <= ob.cap))                             \
+            fz_ob_check(&ob, st, 1);                                                       \
+    } while (0)
+
+/* The documented equivalence of a handle-free call and its handle form: the same
+ * control points (and weights) bit for bit. `out` holds `n_out` points of `dim`. */
+static void check_same_as_handle(const struct CagdCurve *h, const double *out,
+                                 const double *wout, size_t n_out, size_t dim,
+                                 const char *what) {
+    static double hp[MB_STRIDE], hw[MB_STRIDE];
+    size_t need = 0;
+    if (h == NULL || n_out * dim > MB_STRIDE) return;
+    if (cagd_curve_points(h, hp, MB_STRIDE, &need) != CAGD_OK) return;
+    if (need != n_out * dim || memcmp(hp, out, need * sizeof(double)) != 0) {
+        fz_fail("points differ from those of %s", what);
+    }
+    if (wout != NULL && cagd_curve_weights(h, hw, MB_STRIDE, &need) == CAGD_OK &&
+        (need != n_out || memcmp(hw, wout, need * sizeof(double)) != 0)) {
+        fz_fail("weights differ from those of %s", what);
+    }
+}
+
+/* A handle curve of the same input (NULL when it cannot be made). */
+static struct CagdCurve *same_curve(const double *pts, const double *w, size_t n, size_t dim) {
+    struct CagdCurve *c = NULL;
+    CagdStatus st = w != NULL ? cagd_curve_new_rational(pts, w, n, dim, &c)
+                              : cagd_curve_new(pts, n, dim, &c);
+    return st == CAGD_OK ? c : NULL;
+}
+
+static void op_cagd_bezier_elevate(void) {
+    size_t deg = fz_deg(), dim = fz_dim(), n = fz_count(fz_add(deg, 1));
+    const double *pts = fz_in(fz_mul(n, dim), FZ_VALUES);
+    const double *w = fz_r(2) ? fz_in_opt(n, FZ_WEIGHTS) : NULL;
+    SKIP_IF_NEEDED;
+    size_t r = fz_small_deg();
+    int rational = w != NULL;
+    Wout wo;
+    FzOb ob;
+    CagdStatus st;
+    OUTCALL_W(ob, wo, rational,
+              cagd_bezier_elevate(pts, n, dim, w, r, ob.p, ob.cap, ob.needed_p, wo.p, wo.cap));
+    if (st == CAGD_OK && ob.needed != fz_mul(fz_add(n, r), dim)) {
+        fz_fail("out_needed %zu is not (n_points + r) dim", ob.needed);
+    }
+    wout_check(&wo, st, rational, st == CAGD_OK ? n + r : 0);
+    if (st == CAGD_OK && ob.p != NULL) {
+        struct CagdCurve *c = same_curve(pts, w, n, dim), *e = NULL;
+        if (c != NULL && cagd_curve_elevate(c, r, &e) == CAGD_OK) {
+            check_same_as_handle(e, ob.p, rational ? wo.p : NULL, n + r, dim,
+                                 "cagd_curve_elevate");
+        }
+        cagd_curve_free(e);
+        cagd_curve_free(c);
+    }
+}
+
+static void op_cagd_bezier_reduce(void) {
+    size_t deg = fz_deg(), dim = fz_dim(), n = fz_count(fz_add(deg, 1));
+    const double *pts = fz_in(fz_mul(n, dim), FZ_VALUES);
+    const double *w = fz_r(2) ? fz_in_opt(n, FZ_WEIGHTS) : NULL;
+    SKIP_IF_NEEDED;
+    const CagdReduceOptions *o = gen_opts();
+    int rational = w != NULL;
+    CagdBezierReport rep;
+    memset(&rep, 0xFF, sizeof rep);
+    rep.struct_size = fz_r(16) ? sizeof rep : fz_r(sizeof rep);
+    int rep_n = fz_r(3) == 0;
+    Wout wo;
+    FzOb ob;
+    CagdStatus st;
+    OUTCALL_W(ob, wo, rational,
+              cagd_bezier_reduce(pts, n, dim, w, o, ob.p, ob.cap, ob.needed_p, wo.p, wo.cap,
+                                 rep_n ? NULL : &rep));
+    if (st == CAGD_OK && ob.needed != fz_mul(fz_add(o->target, 1), dim)) {
+        fz_fail("out_needed %zu is not (target + 1) dim", ob.needed);
+    }
+    wout_check(&wo, st, rational, st == CAGD_OK ? o->target + 1 : 0);
+    if (st == CAGD_OK && ob.p != NULL && fz_r(2)) {
+        struct CagdCurve *c = same_curve(pts, w, n, dim), *e = NULL;
+        struct CagdReport *hr = NULL;
+        if (c != NULL && cagd_curve_reduce(c, o, &e, &hr) == CAGD_OK) {
+            check_same_as_handle(e, ob.p, rational ? wo.p : NULL, o->target + 1, dim,
+                                 "cagd_curve_reduce");
+        }
+        cagd_report_free(hr);
+        cagd_curve_free(e);
+        cagd_curve_free(c);
+    }
+    if (st == CAGD_OK && !rep_n) {
+        if (rep.struct_size < sizeof rep) fz_fail("CAGD_OK with report struct_size %zu", rep.struct_size);
+        if (rep.degree_from != n - 1 || rep.degree_to != o->target) {
+            fz_fail("report degrees %zu -> %zu, expected %zu -> %zu", rep.degree_from,
+                    rep.degree_to, n - 1, o->target);
+        }
+        if (!isnan(rep.bound) && (!isfinite(rep.bound) || rep.bound < 0.0)) {
+            fz_fail("report bound %g is not finite and >= 0", rep.bound);
+        }
+        if (!isnan(rep.homogeneous_bound) &&
+            (!isfinite(rep.homogeneous_bound) || rep.homogeneous_bound < 0.0)) {
+            fz_fail("report homogeneous_bound %g is not finite and >= 0", rep.homogeneous_bound);
+        }
+        if (!isnan(rep.max_error)) {
+            if (!isfinite(rep.max_error) || rep.max_error < 0.0)
+                fz_fail("report max_error %g is not finite and >= 0", rep.max_error);
+            if (!isnan(rep.bound) && rep.max_error > rep.bound * (1.0 + 1e-12))
+                fz_fail("measured error %.17g exceeds the certified bound %.17g",
+                        rep.max_error, rep.bound);
+        }
+    }
+    if (st != CAGD_OK && !rep_n && rep.degree_from != (size_t)-1) {
+        fz_fail("report written on failure");
+    }
+}
+
+/* ---------------------------------------------------------------- B-spline conversions */
+
+static void op_cagd_bspline_outer_knots(void) {
+    IN_H(FZ_BSPLINE, CagdBSpline, s);
+    int32_t side = fz_enum(2);
+    FzOb ob;
+    CagdStatus st;
+    OUTCALL(ob, cagd_bspline_outer_knots(s, side, ob.p, ob.cap, ob.needed_p));
+    if (st == CAGD_OK) {
+        size_t d = 0;
+        if (cagd_bspline_degree(s, &d) == CAGD_OK && ob.needed < d) {
+            fz_fail("%zu outer knots, below the degree %zu", ob.needed, d);
+        }
+        for (size_t i = 1; ob.p != NULL && i < ob.needed && i < 16384; ++i) {
+            if (ob.p[i] < ob.p[i - 1]) fz_fail("outer knots decrease at %zu", i);
+        }
+    }
+}
+
+static void op_cagd_curvelist_to_bspline_unclamped(void) {
+    static double lk[512], rk[512];
+    const struct CagdCurveList *l = NULL;
+    struct CagdCurveList *tmp = NULL;
+    const double *left = NULL, *right = NULL;
+    size_t nl = 0, nr = 0;
+    if (fz_r(2)) {
+        /* the pieces of a spline from the pool, with its own outer knots */
+        const struct CagdBSpline *s = fz_pick(FZ_BSPLINE);
+        size_t a = 0, b = 0;
+        if (s != NULL && cagd_bspline_to_bezier_pieces(s, &tmp) == CAGD_OK &&
+            cagd_bspline_outer_knots(s, CAGD_SIDE_LEFT, lk, 512, &a) == CAGD_OK &&
+            cagd_bspline_outer_knots(s, CAGD_SIDE_RIGHT, rk, 512, &b) == CAGD_OK) {
+            l = tmp;
+            left = lk;
+            right = rk;
+            nl = a;
+            nr = b;
+            if (fz_r(8) == 0) nl = fz_count(nl);
+            if (fz_r(8) == 0) nr = fz_count(nr);
+            if (nl > 512 || nr > 512) {
+                left = fz_in(nl, FZ_SORTED);
+                right = fz_in(nr, FZ_SORTED);
+            } else {
+                for (size_t i = a; i < 512; ++i) lk[i] = a > 0 ? lk[a - 1] : 0.0;
+                for (size_t i = b; i < 512; ++i) rk[i] = b > 0 ? rk[b - 1] : 0.0;
+                if (fz_r(8) == 0 && nl > 0) lk[fz_r((uint32_t)nl)] = fz_double();
+            }
+            if (fz_r(48) == 0) left = NULL;
+            if (fz_r(48) == 0) right = NULL;
+        }
+    }
+    if (l == NULL) {
+        l = fz_pick(FZ_CURVELIST);
+        size_t d = 3;
+        struct CagdCurve *c0 = NULL;
+        if (l != NULL && cagd_curvelist_get(l, 0, &c0) == CAGD_OK) {
+            d = curve_degree(c0, 3);
+            cagd_curve_free(c0);
+        }
+        nl = fz_count(d);
+        nr = fz_count(d);
+        left = fz_in(nl, FZ_SORTED);
+        right = fz_in(nr, FZ_SORTED);
+    }
+    fz.call_null |= l == NULL || left == NULL || right == NULL;
+    double tol = fz_r(4) ? 0.0 : fz_tol();
+    if (!fz.skip) {
+        OUT_H(CagdBSpline, s);
+        CagdStatus st =
+            fz_status(cagd_curvelist_to_bspline_unclamped(l, tol, left, nl, right, nr, HP(s)));
+        KEEP(FZ_BSPLINE, s);
+    }
+    if (tmp != NULL) fz_put(FZ_CURVELIST, tmp);
+}
+
+static void op_cagd_bsplinesurface_to_bezier_patches(void) {
+    IN_H(FZ_BSURF, CagdBSplineSurface, s);
+    OUT_H(CagdPatchPieceList, l);
+    CagdStatus st = fz_status(cagd_bsplinesurface_to_bezier_patches(s, HP(l)));
+    KEEP(FZ_PPLIST, l);
+}
+
+static void op_cagd_patchpiecelist_to_bsplinesurface(void) {
+    IN_H(FZ_PPLIST, CagdPatchPieceList, l);
+    double tol = fz_r(4) ? 0.0 : fz_tol();
+    OUT_H(CagdBSplineSurface, s);
+    OUT_SO(double, bound);
+    CagdStatus st = fz_status(cagd_patchpiecelist_to_bsplinesurface(l, tol, HP(s), SP(bound)));
+    FIN(bound);
+    if (st == CAGD_OK && !bound_n && bound < 0.0) fz_fail("negative bound %g", bound);
+    KEEP(FZ_BSURF, s);
+}
+
+static void op_cagd_report_bound_level(void) {
+    IN_H(FZ_REPORT, CagdReport, r);
+    OUT_S(int32_t, level);
+    CagdStatus st = fz_status(cagd_report_bound_level(r, SP(level)));
+    if (st == CAGD_OK && (level < CAGD_BOUND_NONE || level > CAGD_BOUND_TIGHT)) {
+        fz_fail("bound level %d is not a CagdBoundLevel", (int)level);
+    }
+}
+
+/* ---------------------------------------------------------------- copies */
+
+static CagdStatus call_bspline_copy(Mb *b, void *sz) {
+    return cagd_bspline_copy(mb_h, MB_D(0), MB_D(1), MB_D(2), sz);
+}
+static void lens_bspline(const void *p, size_t *len) {
+    const CagdBSplineSizes *s = p;
+    len[0] = s->knots_len;
+    len[1] = s->points_len;
+    len[2] = s->weights_len;
+}
+
+static void op_cagd_bspline_copy(void) {
+    IN_H(FZ_BSPLINE, CagdBSpline, s);
+    static const int dbl[] = {1, 1, 1};
+    static const char *const names[] = {"knots_out", "points_out", "weights_out"};
+    Mb b[3];
+    size_t len[3];
+    CagdBSplineSizes sz;
+    mb_h = s;
+    CagdStatus st = mb_run(3, dbl, names, call_bspline_copy, lens_bspline, &sz, sizeof sz, len, b);
+    if (st == CAGD_OK && (sz.knots_len != sz.n_points + sz.degree + 1 ||
+                          sz.points_len != sz.n_points * sz.dim ||
+                          sz.weights_len != (sz.rational ? sz.n_points : 0))) {
+        fz_fail("inconsistent CagdBSplineSizes");
+    }
+    if (st == CAGD_OK && b[0].p != NULL) {
+        for (size_t i = 1; i < len[0]; ++i) {
+            if (mb_store[0][i] < mb_store[0][i - 1]) fz_fail("knots_out decrease at %zu", i);
+        }
+    }
+    if (st == CAGD_OK && b[2].p != NULL) {
+        for (size_t i = 0; i < len[2]; ++i) {
+            if (!(mb_store[2][i] > 0.0)) fz_fail("weights_out[%zu] = %g", i, mb_store[2][i]);
+        }
+    }
+}
+
+static CagdStatus call_curvelist_copy(Mb *b, void *sz) {
+    return cagd_curvelist_copy(mb_h, MB_SZ(0), MB_D(1), MB_D(2), MB_D(3), MB_D(4), sz);
+}
+static void lens_curvelist(const void *p, size_t *len) {
+    const CagdCurveListSizes *s = p;
+    len[0] = s->n_pieces;
+    len[1] = s->intervals_len;
+    len[2] = s->points_len;
+    len[3] = s->weights_len;
+    len[4] = s->bounds_len;
+}
+
+static void op_cagd_curvelist_copy(void) {
+    IN_H(FZ_CURVELIST, CagdCurveList, l);
+    static const int dbl[] = {0, 1, 1, 1, 1};
+    static const char *const names[] = {"degrees_out", "intervals_out", "points_out",
+                                        "weights_out", "bounds_out"};
+    Mb b[5];
+    size_t len[5];
+    CagdCurveListSizes sz;
+    mb_h = l;
+    CagdStatus st =
+        mb_run(5, dbl, names, call_curvelist_copy, lens_curvelist, &sz, sizeof sz, len, b);
+    if (st != CAGD_OK) return;
+    if (sz.intervals_len != 2 * sz.n_pieces ||
+        (sz.bounds_len != 0 && sz.bounds_len != sz.n_pieces) ||
+        (sz.rational != (sz.weights_len > 0)) || sz.n_pieces != list_count(FZ_CURVELIST, l)) {
+        fz_fail("inconsistent CagdCurveListSizes");
+    }
+    if (b[0].p != NULL) {
+        size_t pts = 0, ws = 0;
+        for (size_t i = 0; i < sz.n_pieces; ++i) {
+            pts += (mb_sz(0, i) + 1) * sz.dim;
+            ws += mb_sz(0, i) + 1;
+        }
+        if (pts != sz.points_len || (sz.rational && ws != sz.weights_len)) {
+            fz_fail("points_len / weights_len do not match the degrees");
+        }
+    }
+    if (b[1].p != NULL) {
+        for (size_t i = 0; i < sz.n_pieces; ++i) {
+            if (!(mb_store[1][2 * i] < mb_store[1][2 * i + 1])) fz_fail("empty interval %zu", i);
+        }
+    }
+    for (size_t i = 0; b[3].p != NULL && i < sz.weights_len; ++i) {
+        if (!(mb_store[3][i] > 0.0)) fz_fail("weights_out[%zu] = %g", i, mb_store[3][i]);
+    }
+    for (size_t i = 0; b[4].p != NULL && i < sz.bounds_len; ++i) {
+        if (mb_store[4][i] < 0.0) fz_fail("bounds_out[%zu] = %g", i, mb_store[4][i]);
+    }
+}
+
+static CagdStatus call_tensorlist_copy(Mb *b, void *sz) {
+    return cagd_tensorpatchlist_copy(mb_h, MB_SZ(0), MB_D(1), MB_D(2), MB_D(3), sz);
+}
+static CagdStatus call_trilist_copy(Mb *b, void *sz) {
+    return cagd_tripatchlist_copy(mb_h, MB_SZ(0), MB_D(1), MB_D(2), MB_D(3), sz);
+}
+static void lens_patchlist(const void *p, size_t *len) {
+    const CagdPatchListSizes *s = p;
+    len[0] = s->degrees_len;
+    len[1] = s->domains_len;
+    len[2] = s->points_len;
+    len[3] = s->bounds_len;
+}
+
+/* The list pools fill slowly (the to-tolerance reductions seldom succeed on random
+ * options): now and then a list of a small random source reduced with good options, so
+ * that the copies run on real lists. */
+static void seed_list(FzType t) {
+    if (fz_r(2) || fz.pools[t].n >= 2) return;
+    double p[64];
+    for (size_t i = 0; i < 64; ++i) p[i] = 2.0 * fz_unit() - 1.0;
+    CagdReduceOptions o;
+    (void)cagd_reduce_options_init(&o);
+    o.target = 2;
+    o.target_v = 2;
+    o.tolerance = 0.01 + 0.5 * fz_unit();
+    struct CagdReport *rep = NULL;
+    CagdStatus st = CAGD_OK;
+    if (t == FZ_TENSORLIST) {
+        struct CagdTensorPatch *src = NULL;
+        struct CagdTensorPatchList *l = NULL;
+        if (cagd_tensorpatch_new(p, 3, 1 + fz_r(3), 1 + fz_r(3), &src) == CAGD_OK) {
+            st = cagd_tensorpatch_reduce_to_tolerance(src, &o, &l, &rep);
+            if (st == CAGD_OK) fz_put(t, l);
+        }
+        cagd_tensorpatch_free(src);
+    } else if (t == FZ_TRILIST) {
+        struct CagdTriPatch *src = NULL;
+        struct CagdTriPatchList *l = NULL;
+        if (cagd_tripatch_new(p, 3 + fz_r(2), 1 + fz_r(3), &src) == CAGD_OK) {
+            st = cagd_tripatch_reduce_to_tolerance(src, &o, &l, &rep);
+            if (st == CAGD_OK) fz_put(t, l);
+        }
+        cagd_tripatch_free(src);
+    } else {
+        struct CagdWsgbCurve *src = NULL;
+        struct CagdWsgbCurveList *l = NULL;
+        o.target = 3 + fz_r(2);
+        if (cagd_wsgb_new(p, 6 + fz_r(3), 1 + fz_r(3), fz_r(2), &src) == CAGD_OK) {
+            st = cagd_wsgb_reduce_to_tolerance(src, (int32_t)fz_r(3), &o, &l);
+            if (st == CAGD_OK) fz_put(t, l);
+        }
+        cagd_wsgb_free(src);
+    }
+    check_raw(st, "a to-tolerance reduction (list for a copy)");
+    cagd_report_free(rep);
+}
+
+static void patchlist_copy(FzType t) {
+    seed_list(t);
+    const void *l = fz_pick(t);
+    fz.call_null |= l == NULL;
+    static const int dbl[] = {0, 1, 1, 1};
+    static const char *const names[] = {"degrees_out", "domains_out", "points_out",
+                                        "bounds_out"};
+    Mb b[4];
+    size_t len[4];
+    CagdPatchListSizes sz;
+    mb_h = l;
+    int tensor = t == FZ_TENSORLIST;
+    CagdStatus st = mb_run(4, dbl, names, tensor ? call_tensorlist_copy : call_trilist_copy,
+                           lens_patchlist, &sz, sizeof sz, len, b);
+    if (st != CAGD_OK) return;
+    size_t n = sz.n_pieces;
+    if (sz.degrees_len != (tensor ? 2 : 1) * n || sz.domains_len != (tensor ? 4 : 6) * n ||
+        sz.bounds_len != n || n != list_count(t, l)) {
+        fz_fail("inconsistent CagdPatchListSizes");
+    }
+    if (b[0].p != NULL) {
+        size_t pts = 0;
+        for (size_t i = 0; i < n; ++i) {
+            pts += tensor ? (mb_sz(0, 2 * i) + 1) * (mb_sz(0, 2 * i + 1) + 1) * sz.dim
+                          : fz_tri(mb_sz(0, i)) * sz.dim;
+        }
+        if (pts != sz.points_len) fz_fail("points_len %zu does not match the degrees", pts);
+    }
+    for (size_t i = 0; b[3].p != NULL && i < n; ++i) {
+        if (mb_store[3][i] < 0.0) fz_fail("bounds_out[%zu] = %g", i, mb_store[3][i]);
+    }
+}
+
+static void op_cagd_tensorpatchlist_copy(void) { patchlist_copy(FZ_TENSORLIST); }
+
+static void op_cagd_tripatchlist_copy(void) { patchlist_copy(FZ_TRILIST); }
+
+static CagdStatus call_wsgblist_copy(Mb *b, void *sz) {
+    return cagd_wsgblist_copy(mb_h, MB_SZ(0), MB_SZ(1), MB_D(2), MB_D(3), MB_D(4), sz);
+}
+static void lens_wsgblist(const void *p, size_t *len) {
+    const CagdWsgbListSizes *s = p;
+    len[0] = s->n_pieces;
+    len[1] = s->n_pieces;
+    len[2] = s->intervals_len;
+    len[3] = s->points_len;
+    len[4] = s->n_pieces;
+}
+
+static void op_cagd_wsgblist_copy(void) {
+    seed_list(FZ_WSGBLIST);
+    IN_H(FZ_WSGBLIST, CagdWsgbCurveList, l);
+    static const int dbl[] = {0, 0, 1, 1, 1};
+    static const char *const names[] = {"degrees_out", "orders_out", "intervals_out",
+                                        "points_out", "bounds_out"};
+    Mb b[5];
+    size_t len[5];
+    CagdWsgbListSizes sz;
+    mb_h = l;
+    CagdStatus st = mb_run(5, dbl, names, call_wsgblist_copy, lens_wsgblist, &sz, sizeof sz, len, b);
+    if (st != CAGD_OK) return;
+    if (sz.intervals_len != 2 * sz.n_pieces || sz.n_pieces != list_count(FZ_WSGBLIST, l)) {
+        fz_fail("inconsistent CagdWsgbListSizes");
+    }
+    if (b[0].p != NULL) {
+        size_t pts = 0;
+        for (size_t i = 0; i < sz.n_pieces; ++i) pts += (mb_sz(0, i) + 1) * sz.dim;
+        if (pts != sz.points_len) fz_fail("points_len does not match the degrees");
+    }
+    for (size_t i = 0; b[4].p != NULL && i < sz.n_pieces; ++i) {
+        if (mb_store[4][i] < 0.0) fz_fail("bounds_out[%zu] = %g", i, mb_store[4][i]);
+    }
 }
 
 /* ---------------------------------------------------------------- the table */

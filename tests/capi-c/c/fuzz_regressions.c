@@ -107,3 +107,86 @@ cleanup:
     cagd_curve_free(c);
     return rc;
 }
+
+/* A rational curve whose elevated Euclidean points overflow (w P = 4 DBL_MAX):
+ * cagd_bezier_elevate fails with CAGD_ERR_NON_FINITE and writes no point (was CAGD_OK
+ * with inf in `out`; the handle path refuses the same points in cagd_curve_points). */
+int cagd_ctest_fuzz_bezier_elevate_overflow_is_non_finite(void) {
+    int rc = 1;
+    const double pts[2] = {DBL_MAX, DBL_MAX};
+    const double w[2] = {4.0, 4.0};
+    double out[4] = {9.0, 9.0, 9.0, 9.0}, wout[4] = {9.0, 9.0, 9.0, 9.0};
+    size_t needed = 0;
+    CHECK_STATUS(cagd_bezier_elevate(pts, 2, 1, w, 1, out, 4, &needed, wout, 4),
+                 CAGD_ERR_NON_FINITE);
+    CHECK_MESSAGE_HAS("overflows");
+    CHECK(out[0] == 9.0 && out[1] == 9.0 && out[2] == 9.0 && wout[0] == 9.0);
+    /* the same curve with moderate coordinates is fine */
+    const double small[2] = {1.0, 2.0};
+    CHECK_OK(cagd_bezier_elevate(small, 2, 1, w, 1, out, 4, &needed, wout, 4));
+    CHECK(needed == 3 && isfinite(out[0]) && isfinite(out[1]) && isfinite(out[2]));
+    rc = 0;
+cleanup:
+    return rc;
+}
+
+/* Coordinates at the f64 limit: the certified bound of cagd_bezier_reduce overflows. The
+ * CagdBezierReport holds NaN there (no bound; cagd_report_bound answers
+ * CAGD_ERR_NOT_AVAILABLE for the same reduction), never inf (was bound = inf with
+ * CAGD_OK). */
+int cagd_ctest_fuzz_bezier_report_bound_never_infinite(void) {
+    int rc = 1;
+    CagdReduceOptions o;
+    CagdBezierReport rep;
+    CagdCurve *c = NULL, *r = NULL;
+    CagdReport *hr = NULL;
+    double bound = -1.0;
+    const double pts[4] = {1e306, -1e306, 1e306, -1e306};
+    double out[3];
+    size_t needed = 0;
+    CHECK_OK(cagd_reduce_options_init(&o));
+    o.target = 2;
+    rep.struct_size = sizeof rep;
+    CHECK_OK(cagd_bezier_reduce(pts, 4, 1, NULL, &o, out, 3, &needed, NULL, 0, &rep));
+    CHECK(needed == 3 && isfinite(out[0]) && isfinite(out[1]) && isfinite(out[2]));
+    CHECK(isnan(rep.bound) || (isfinite(rep.bound) && rep.bound >= 0.0));
+    CHECK(isnan(rep.homogeneous_bound) ||
+          (isfinite(rep.homogeneous_bound) && rep.homogeneous_bound >= 0.0));
+    CHECK(isnan(rep.max_error) || isfinite(rep.max_error));
+    /* the handle call agrees: no bound there either when the struct holds NaN */
+    CHECK_OK(cagd_curve_new(pts, 4, 1, &c));
+    CHECK_OK(cagd_curve_reduce(c, &o, &r, &hr));
+    CagdStatus st = cagd_report_bound(hr, &bound);
+    CHECK(isnan(rep.bound) ? st == CAGD_ERR_NOT_AVAILABLE : (st == CAGD_OK && bound == rep.bound));
+    rc = 0;
+cleanup:
+    cagd_report_free(hr);
+    cagd_curve_free(r);
+    cagd_curve_free(c);
+    return rc;
+}
+
+/* A batch whose reduced coordinates overflow (input at the f64 limit): the checked input is
+ * finite, so the overflow is CAGD_ERR_NON_FINITE (was CAGD_ERR_PANIC, "internal error:
+ * batch failed after validation"), with and without bounds. */
+int cagd_ctest_fuzz_curve_reduce_batch_overflow_is_non_finite(void) {
+    int rc = 1;
+    CagdReduceOptions o;
+    const double pts[2 * 4] = {DBL_MAX, -DBL_MAX, -DBL_MAX, -DBL_MAX,
+                               1.0,     2.0,      3.0,      4.0};
+    double out[2 * 3], bounds[2];
+    size_t needed = 0;
+    CHECK_OK(cagd_reduce_options_init(&o));
+    o.target = 2;
+    CHECK_STATUS(cagd_curve_reduce_batch(pts, 2, 3, 1, &o, out, 6, &needed, NULL),
+                 CAGD_ERR_NON_FINITE);
+    CHECK_MESSAGE_HAS("overflows");
+    CHECK_STATUS(cagd_curve_reduce_batch(pts, 2, 3, 1, &o, out, 6, &needed, bounds),
+                 CAGD_ERR_NON_FINITE);
+    /* the second curve alone is fine, with a finite bound */
+    CHECK_OK(cagd_curve_reduce_batch(pts + 4, 1, 3, 1, &o, out, 6, &needed, bounds));
+    CHECK(needed == 3 && isfinite(bounds[0]) && bounds[0] >= 0.0);
+    rc = 0;
+cleanup:
+    return rc;
+}

@@ -47,6 +47,9 @@ c_tests![
     fuzz_intersect_degree_product_refused,
     fuzz_split_curve_piece_degree_refused,
     fuzz_report_bound_never_infinite,
+    fuzz_bezier_elevate_overflow_is_non_finite,
+    fuzz_bezier_report_bound_never_infinite,
+    fuzz_curve_reduce_batch_overflow_is_non_finite,
     // c/interval.c
     intervaltri_example_1,
     intervaltri_elevation_matrix,

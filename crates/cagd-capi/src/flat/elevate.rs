@@ -93,8 +93,15 @@ pub unsafe extern "C" fn cagd_bezier_elevate(
             (Some(w), Some(wd)) => {
                 let c = BezierCurve::new_rational(curve.points.to_vec(), w.to_vec(), dim)?;
                 let e = c.elevate(r)?;
+                let we = e.weights().unwrap_or_default();
+                // The Euclidean points of the elevated curve (homogeneous points over the
+                // elevated weights) may overflow where the homogeneous ones do not: no
+                // result then (found by the C ABI fuzz harness: `-inf` with `CAGD_OK`).
+                if !e.points().iter().chain(we).all(|x| x.is_finite()) {
+                    return Err(Overflow::failure(0));
+                }
                 dst.copy_from_slice(e.points());
-                wd.copy_from_slice(e.weights().unwrap_or_default());
+                wd.copy_from_slice(we);
             }
             _ => {
                 // The kernel `BezierCurve::elevate` uses for a polynomial curve, straight

@@ -31,13 +31,14 @@ pub struct CagdBezierReport {
     /// Target degree `m`.
     pub degree_to: usize,
     /// Certified upper bound of `max_t |P(t) - Q(t)|` in model units, in `space`
-    /// (`cagd_report_bound`); NaN when no bound was formed.
+    /// (`cagd_report_bound`); NaN when no bound was formed or it overflowed f64.
     pub bound: f64,
     /// The error measured by dense sampling with `opts->measure` (`cagd_report_max_error`);
     /// NaN when not measured.
     pub max_error: f64,
     /// The certified bound in homogeneous space for a rational curve, the Euclidean bound
-    /// for a polynomial one (`cagd_report_space`); NaN when no bound was formed.
+    /// for a polynomial one (`cagd_report_space`); NaN when no bound was formed or it
+    /// overflowed f64.
     pub homogeneous_bound: f64,
 }
 
@@ -58,11 +59,19 @@ impl CagdBezierReport {
             space: space as i32,
             degree_from: r.degree_from,
             degree_to: r.degree_to,
-            bound: r.error_bound.unwrap_or(f64::NAN),
-            max_error: r.max_error.unwrap_or(f64::NAN),
-            homogeneous_bound: r.homogeneous_bound.or(r.error_bound).unwrap_or(f64::NAN),
+            bound: finite_or_nan(r.error_bound),
+            max_error: finite_or_nan(r.max_error),
+            homogeneous_bound: finite_or_nan(r.homogeneous_bound.or(r.error_bound)),
         }
     }
+}
+
+/// NaN for an absent value and for one that is not finite (a bound that overflowed f64 on
+/// coordinates near the f64 limit is no bound, and the handle accessors answer
+/// `CAGD_ERR_NOT_AVAILABLE` for it; found by the C ABI fuzz harness, where
+/// `cagd_bezier_reduce` wrote `bound = inf` with `CAGD_OK`).
+fn finite_or_nan(value: Option<f64>) -> f64 {
+    value.filter(|v| v.is_finite()).unwrap_or(f64::NAN)
 }
 
 /// A checked caller report struct, not yet written.

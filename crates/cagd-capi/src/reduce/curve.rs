@@ -104,7 +104,8 @@ pub unsafe extern "C" fn cagd_curve_reduce(
 /// - `opts` (in): the options. Borrowed for the call.
 /// - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
 ///   `n_curves * (target + 1) * dim` doubles hold the reduced curves in the same layout.
-///   May be NULL only when `out_cap == 0`. Not written on failure.
+///   May be NULL only when `out_cap == 0`. Not written on failure (but for the overflow
+///   of `CAGD_ERR_NON_FINITE`).
 /// - `out_cap` (in): capacity of `out` in doubles.
 /// - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
 ///   `n_curves * (target + 1) * dim`.
@@ -113,7 +114,7 @@ pub unsafe extern "C" fn cagd_curve_reduce(
 ///   `max_t |P(t) - Q(t)|` (model units, Euclidean norm of the `dim` coordinates, the
 ///   rounding of the reduced points included; `+inf` only if the computation overflowed)
 ///   at `opts->bound_level` (`CAGD_BOUND_FAST` or `CAGD_BOUND_TIGHT`). Not written on
-///   failure.
+///   failure (but for the overflow of `CAGD_ERR_NON_FINITE`).
 ///
 /// Returns:
 /// - `CAGD_OK`: the reduced curves are in `out`.
@@ -127,7 +128,9 @@ pub unsafe extern "C" fn cagd_curve_reduce(
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
 /// - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
 /// - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message gives
-///   the point index counted over the whole batch).
+///   the point index counted over the whole batch; nothing but `*out_needed` is
+///   written), or a reduced coordinate overflows to infinity (input near the largest
+///   double; `out` and `bounds_out` are then partly written).
 /// - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
 ///   written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
@@ -189,8 +192,18 @@ pub unsafe extern "C" fn cagd_curve_reduce_batch(
             }
         };
         result.map_err(|e| match e {
+            // The input was checked finite above: a reduced coordinate overflowed (input
+            // near the largest double; found by the C ABI fuzz harness, where this was
+            // reported as CAGD_ERR_PANIC).
+            Error::NonFinite { .. } => Failure::new(
+                CagdStatus::ERR_NON_FINITE,
+                format!(
+                    "a reduced coordinate overflows to infinity (input coordinates near the \
+                     largest double): {e}"
+                ),
+            ),
             // Unreachable after the checks above; reported rather than hidden.
-            Error::NonFinite { .. } | Error::LengthMismatch { .. } => Failure::new(
+            Error::LengthMismatch { .. } => Failure::new(
                 CagdStatus::ERR_PANIC,
                 format!("internal error: batch failed after validation: {e}"),
             ),
