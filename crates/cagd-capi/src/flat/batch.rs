@@ -159,8 +159,10 @@ unsafe fn batch_in<'a>(
 
 /// Reduces `n_curves` polynomial Bézier curves of one degree `n` to degree `opts->target`
 /// with one cached operator, on `n_threads` threads: `cagd_curve_reduce_batch` with a
-/// choice of layout and threads, and the same reduced points bit for bit (and, in either
-/// layout, the points `cagd_curve_reduce` / `cagd_bezier_reduce` give for each curve).
+/// choice of layout and threads. Curve-major input gives `cagd_curve_reduce_batch`'s points
+/// bit for bit, whatever the thread count; point-major input gives the same points up to
+/// rounding (its sums run in another order than the GEMM kernel's: a few ulps of
+/// `sum_j |a_ij| |P_j|`).
 /// Only `opts->method`, `target`, `r`, `p`, `l1`, `l2` are used; no report (call
 /// `cagd_bezier_reduce` for a certified bound per curve). Rational curves: pass their
 /// homogeneous points `(w_i P_i, w_i)` as polynomial curves of dimension `dim + 1`.

@@ -14,7 +14,8 @@
 //! No algorithm lives here: single curves go through the same cagd-core / cagd-reduce
 //! functions as the handle API (so the results are equal bit for bit, which the tests
 //! check), and the batches go through `kernel.rs`, the one place that knows the batch
-//! internals of cagd-reduce.
+//! internals of cagd-reduce (batch reductions sum in the GEMM kernel's order, so they equal
+//! the single-curve route up to rounding).
 
 mod batch;
 mod elevate;

@@ -147,6 +147,25 @@ impl BSplineCurve {
         }
     }
 
+    /// The working points (as [`Self::work_points`]) of indices `first..first + count` only:
+    /// what one span's evaluation needs, without converting or copying the whole net (an
+    /// evaluation stays O(p^2), not O(number of points)).
+    pub(crate) fn local_work(&self, first: usize, count: usize) -> (Vec<f64>, usize) {
+        let d = self.dim;
+        let pts = &self.points[first * d..(first + count) * d];
+        match &self.weights {
+            None => (pts.to_vec(), d),
+            Some(w) => {
+                let mut out = Vec::with_capacity(count * (d + 1));
+                for (p, &wi) in pts.chunks_exact(d).zip(&w[first..first + count]) {
+                    out.extend(p.iter().map(|x| x * wi));
+                    out.push(wi);
+                }
+                (out, d + 1)
+            }
+        }
+    }
+
     /// Rebuilds a curve of the same kind from working points (see `work_points`) and a new
     /// knot vector, re-validating everything (so a numerical accident is an error, never an
     /// invalid object).
