@@ -2167,7 +2167,8 @@ CagdStatus cagd_nurbs_span_to_bezier(size_t degree,
  *   `w_{n-degree+index}` and its value).
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: the curve's degree is not 2 or 3.
  * - `CAGD_ERR_BAD_KNOTS`, `CAGD_ERR_NON_FINITE`, `CAGD_ERR_INVALID_ARGUMENT`: as for
- *   `cagd_nurbs_span_to_bezier`.
+ *   `cagd_nurbs_span_to_bezier`; `CAGD_ERR_NON_FINITE` also when the extrapolation factor
+ *   overflows (knot intervals of wildly different lengths).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety

@@ -761,6 +761,15 @@ uint64_t cagd_fuzz_run_seed(uint64_t seed, uint64_t calls, uint64_t session_call
     const char *budget_s = getenv("CAGD_FUZZ_SECONDS");
     double budget = budget_s != NULL ? atof(budget_s) : 0.0;
     time_t t0 = time(NULL);
+    /* CAGD_FUZZ_REPLAY=<session seed>: replays that one session (the seed a violation
+     * report prints), `session_calls` calls long. */
+    const char *replay_s = getenv("CAGD_FUZZ_REPLAY");
+    if (replay_s != NULL) {
+        fz.session_seed = strtoull(replay_s, NULL, 0);
+        fz.state = fz.session_seed | 1;
+        run_session(session_calls);
+        return fz.total_calls;
+    }
     while (fz.total_calls < calls) {
         if (budget > 0.0 && difftime(time(NULL), t0) > budget) {
             break;

@@ -129,7 +129,8 @@ pub unsafe extern "C" fn cagd_nurbs_span_to_bezier(
 ///   `w_{n-degree+index}` and its value).
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`: the curve's degree is not 2 or 3.
 /// - `CAGD_ERR_BAD_KNOTS`, `CAGD_ERR_NON_FINITE`, `CAGD_ERR_INVALID_ARGUMENT`: as for
-///   `cagd_nurbs_span_to_bezier`.
+///   `cagd_nurbs_span_to_bezier`; `CAGD_ERR_NON_FINITE` also when the extrapolation factor
+///   overflows (knot intervals of wildly different lengths).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -163,6 +164,16 @@ pub unsafe extern "C" fn cagd_bezier_to_nurbs_span(
         } else {
             bezier_to_cubic_span(&c.0, k)
         }?;
+        if !span.extrapolation.is_finite() {
+            // Knot intervals of wildly different lengths: the inverse maps' coefficients
+            // overflow, so nothing can be said about how errors grow.
+            return Err(Error::NonFinite {
+                index: 0,
+                coord: 0,
+                value: span.extrapolation,
+            }
+            .into());
+        }
         let mut full = Vec::with_capacity(2 * degree + 2);
         full.push(k[0]);
         full.extend_from_slice(k);

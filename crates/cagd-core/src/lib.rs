@@ -79,9 +79,9 @@ pub use binomial::{
     try_binomial,
 };
 pub use bspline::{
-    BSplineCurve, BSplineSurface, BezierSegment, KnotRemoval, SurfacePatchPiece, basis_functions,
-    check_knots, find_span, knot_multiplicity, s_matrix, s_matrix_exact, s_matrix_inverse,
-    s_matrix_inverse_exact,
+    BSplineCurve, BSplineSurface, BezierSegment, KnotRemoval, MAX_KNOT, SurfacePatchPiece,
+    basis_functions, check_knots, find_span, knot_multiplicity, s_matrix, s_matrix_exact,
+    s_matrix_inverse, s_matrix_inverse_exact,
 };
 pub use distance::{
     Domain2, curve_distance, max_distance_1d, max_distance_2d, tensor_patch_distance,

@@ -190,3 +190,28 @@ int cagd_ctest_fuzz_curve_reduce_batch_overflow_is_non_finite(void) {
 cleanup:
     return rc;
 }
+
+/* A cubic with weights near 3e307: the span's extrapolation factor overflowed and came back
+ * as inf with CAGD_OK; now CAGD_ERR_NON_FINITE and no handle. */
+int cagd_ctest_fuzz_nurbs_span_extrapolation_overflow_refused(void) {
+    int rc = 1;
+    CagdCurve *c = NULL;
+    CagdBSpline *s = NULL;
+    const double pts[12] = {-0.81734078177096192, -0.69626782334772352, -0.1418372106881125,
+                            -0.81734078177096203, -0.69626782334772364, -0.14183721068811253,
+                            -0.81734078177096203, -0.69626782334772375, -0.1418372106881125,
+                            -0.81734078177096192, -0.69626782334772364, -0.1418372106881125};
+    const double w[4] = {2.9034141281968608e+307, 3.3749686795364603e+307,
+                         3.8684986447012899e+307, 4.3548541185563846e+307};
+    const double knots[6] = {0, 0.43506026258100694, 0.50245346866153107,
+                             0.63790735483377092, 0.9754764859999433, 1.4307827005976057};
+    double x = 9.0;
+    CHECK_OK(cagd_curve_new_rational(pts, w, 4, 3, &c));
+    CHECK_STATUS(cagd_bezier_to_nurbs_span(c, knots, &s, &x), CAGD_ERR_NON_FINITE);
+    CHECK(s == NULL && x == 9.0);
+    rc = 0;
+cleanup:
+    cagd_bspline_free(s);
+    cagd_curve_free(c);
+    return rc;
+}

@@ -8,18 +8,24 @@
 use crate::binomial::check_degree;
 use crate::{Error, Result};
 
+/// The largest knot magnitude accepted (`1e300`). Beyond it a domain such as
+/// `[267, 1.8e308]` is finite but its parameter arithmetic is not (a sampling parameter
+/// `a + s (b - a)`, a sum of two knots, overflows), and a measured error or a bound
+/// computed on it would be meaningless; the C ABI fuzz harness found one such case.
+pub const MAX_KNOT: f64 = 1e300;
+
 /// Checks a knot vector for `n_points` control points of degree `degree` and returns the
 /// domain `(u_p, u_n)`.
 ///
 /// Checked in this order: the degree (`<= MAX_DEGREE`), `n_points >= degree + 1`, the
-/// knot count `n_points + degree + 1`, finiteness, monotonicity, multiplicities
-/// `<= degree + 1`, and a domain of positive length.
+/// knot count `n_points + degree + 1`, finiteness and magnitude (`|u_i| <= MAX_KNOT`),
+/// monotonicity, multiplicities `<= degree + 1`, and a domain of positive length.
 ///
 /// # Errors
 /// [`Error::DegreeOutOfRange`], [`Error::NotEnoughPoints`], [`Error::KnotCount`],
 /// [`Error::NonFiniteKnot`], [`Error::KnotsNotNondecreasing`] (first decreasing index),
 /// [`Error::MultiplicityAboveDegree`], and [`Error::BadParameter`] (name `"knots"`) when
-/// `u_p == u_n` (an empty domain).
+/// `u_p == u_n` (an empty domain) or a knot exceeds [`MAX_KNOT`] in magnitude.
 ///
 /// ```
 /// # use cagd_core::check_knots;
@@ -46,6 +52,14 @@ pub fn check_knots(knots: &[f64], n_points: usize, degree: usize) -> Result<(f64
         return Err(Error::NonFiniteKnot {
             index,
             value: knots[index],
+        });
+    }
+    if let Some(index) = knots.iter().position(|k| k.abs() > MAX_KNOT) {
+        return Err(Error::BadParameter {
+            name: "knots",
+            value: knots[index],
+            why: "knot values must lie within +-1e300 (sums, differences and quotients of \
+                  parameters must stay finite and resolvable)",
         });
     }
     if let Some(i) = knots.windows(2).position(|w| w[1] < w[0]) {
@@ -114,6 +128,32 @@ pub fn find_span(knots: &[f64], degree: usize, n_points: usize, t: f64) -> usize
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn knots_beyond_the_resolvable_range_are_refused() {
+        // The C ABI fuzz harness's case: domain [267, 1.8e308], finite but not computable
+        // (a reduction reported a bound of 9e-13 beside a measured error of 3e-7).
+        let mut k = vec![266.98315011236474; 6];
+        k.push(8.988_465_674_311_578e307);
+        k.extend([f64::MAX; 6]);
+        let e = check_knots(&k, 7, 5).unwrap_err();
+        assert!(
+            matches!(e, Error::BadParameter { name: "knots", .. }),
+            "{e}"
+        );
+        // The same vector on a domain of 1e300 is accepted.
+        let k: Vec<f64> = [0.0; 6]
+            .into_iter()
+            .chain([0.5e300])
+            .chain([1e300; 6])
+            .collect();
+        assert_eq!(check_knots(&k, 7, 5).unwrap(), (0.0, 1e300));
+        let neg: Vec<f64> = k.iter().map(|x| -x).rev().collect();
+        assert!(check_knots(&neg, 7, 5).is_ok());
+        let mut far = neg;
+        far[0] = -1.0001e300;
+        assert!(check_knots(&far, 7, 5).is_err());
+    }
 
     #[test]
     fn each_error_variant() {

@@ -18,7 +18,7 @@ mod uniform;
 pub use basis::basis_functions;
 pub use curve::BSplineCurve;
 pub use extract::BezierSegment;
-pub use knots::{check_knots, find_span, knot_multiplicity};
+pub use knots::{MAX_KNOT, check_knots, find_span, knot_multiplicity};
 pub use removal::KnotRemoval;
 pub use surface::{BSplineSurface, SurfacePatchPiece};
 pub use uniform::{s_matrix, s_matrix_exact, s_matrix_inverse, s_matrix_inverse_exact};

@@ -90,9 +90,18 @@ impl IntervalTriPatch {
     /// Thickness (SPEC-convert I.1, reconstruction of the lost seed 004 §2 definition): the mean
     /// box width over control boxes and coordinates,
     /// `delta = (1 / (dim N_n)) sum_ijk sum_c (hi - lo)`. Unchanged by degree elevation.
+    /// When the plain sum overflows (many widths near `f64::MAX`), each width is divided by
+    /// the count before summing, so a mean of finite widths stays finite; a width that
+    /// itself overflows gives infinity.
     pub fn thickness(&self) -> f64 {
-        let total: f64 = self.hi.iter().zip(&self.lo).map(|(h, l)| h - l).sum();
-        total / self.lo.len() as f64
+        let count = self.lo.len() as f64;
+        let widths = || self.hi.iter().zip(&self.lo).map(|(h, l)| h - l);
+        let total: f64 = widths().sum();
+        if total.is_finite() {
+            total / count
+        } else {
+            widths().map(|w| w / count).sum()
+        }
     }
 
     /// The box of the surface at the domain point `(u, v)` (`w = 1 - u - v`), evaluated in

@@ -52,7 +52,9 @@ const CROSSING_TOL: f64 = 1e-11;
 /// [`Error::BadDegreePair`] unless `m < n`, or when `N < n`; [`Error::DegreeOutOfRange`]
 /// for `N > 64`; [`Error::LpInfeasible`] / [`Error::LpUnbounded`] if the solver says so
 /// (impossible by SPEC-convert I.2: the LP is feasible and bounded),
-/// [`Error::LpSolverFailed`] (solver failure or caught panic), [`Error::NotCertified`].
+/// [`Error::LpSolverFailed`] (solver failure or caught panic), [`Error::NotCertified`];
+/// [`Error::NonFinite`] when the LP objective overflows or a reduced box is wider than
+/// `f64` can represent (the value is the objective or the width).
 ///
 /// ```
 /// use cagd_reduce::{IntervalOptions, IntervalTriPatch, reduce_interval_triangle};
@@ -115,6 +117,24 @@ pub fn reduce_interval_triangle(
             lo[q * d + c] = l[q];
             hi[q * d + c] = u[q];
         }
+    }
+    // Finite bounds whose difference overflows (boxes wider than f64 can say, from inputs
+    // near +-1.8e308) would certify nothing: a named error, not an infinite thickness.
+    if !(objective.is_finite() && objective_decoupled.is_finite()) {
+        // The LP's objective (a sum of widths) overflowed: its vertex cannot be trusted to
+        // be optimal, and a report with an infinite objective would be garbage.
+        return Err(Error::NonFinite {
+            index: 0,
+            coord: 0,
+            value: objective + objective_decoupled,
+        });
+    }
+    if let Some(k) = lo.iter().zip(&hi).position(|(a, b)| !(b - a).is_finite()) {
+        return Err(Error::NonFinite {
+            index: k / d,
+            coord: k % d,
+            value: hi[k] - lo[k],
+        });
     }
     let patch = IntervalTriPatch::new(lo, hi, m, d)?;
     let (max_viol, samples) = if opts.sample_grid == 0 {

@@ -531,3 +531,37 @@ fn adversarial_scales_are_certified() {
         }
     }
 }
+
+#[test]
+fn boxes_near_the_largest_double_give_a_finite_report_or_a_named_error() {
+    // The C ABI fuzz harness's case: finite boxes near +-1.8e308 made the thickness (a sum
+    // of widths) and the LP objective infinite beside an Ok result.
+    let n = 2;
+    let lo: Vec<f64> = (0..tri_count(n))
+        .map(|i| -1.7e308 + i as f64 * 1e300)
+        .collect();
+    let hi: Vec<f64> = lo.iter().map(|x| x + 1.6e308).collect();
+    let p = IntervalTriPatch::new(lo, hi, n, 1).unwrap();
+    // Each width is finite and their mean is too (the old sum overflowed).
+    assert!(p.thickness().is_finite());
+    match reduce_interval_triangle(&p, &IntervalOptions::new(1)) {
+        Ok(r) => {
+            let rep = &r.report;
+            assert!(rep.thickness_out.is_finite() && rep.objective.is_finite());
+            assert!(
+                r.patch
+                    .lo()
+                    .iter()
+                    .chain(r.patch.hi())
+                    .all(|x| x.is_finite())
+            );
+        }
+        Err(e) => assert!(
+            matches!(
+                e,
+                Error::NonFinite { .. } | Error::NotCertified { .. } | Error::LpSolverFailed { .. }
+            ),
+            "{e}"
+        ),
+    }
+}
