@@ -4875,7 +4875,7 @@ CagdStatus cagd_bspline_to_polynomial(const struct CagdBSpline *spline,
  * `cagd_bspline_to_polynomial` on the tensor product (a separable least-squares fit on a
  * grid of Gauss nodes, a certified bound of `|A - W S| / W` per patch, refinement, knot
  * lines removed within the rest). Weights all equal (or none): the polynomial surface of
- * the same control points (bound 0), reduced by the global fit of
+ * the same control points (bound at rounding level), reduced by the global fit of
  * `cagd_bsplinesurface_reduce_to_tolerance` where a target is below the input's degree.
  *
  * Parameters:

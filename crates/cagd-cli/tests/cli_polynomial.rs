@@ -134,7 +134,9 @@ fn equal_weights_come_back_unchanged() {
     assert_eq!(pts(&out), pts(&v));
     assert_eq!(flat(&out["knots"]), flat(&v["knots"]));
     assert_eq!(out["report"]["equal_weights"], true);
-    assert_eq!(out["report"]["error_bound"], 0.0);
+    // The same curve: the bound is the evaluation rounding only (never below a measurement).
+    let bound = out["report"]["error_bound"].as_f64().unwrap();
+    assert!((0.0..1e-13).contains(&bound), "{bound}");
     assert_eq!(out["report"]["spans_out"], 2);
 }
 

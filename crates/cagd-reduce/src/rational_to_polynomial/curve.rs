@@ -168,7 +168,8 @@ pub(crate) fn target_degree(p: usize, m: Option<usize>) -> Result<usize> {
 /// on the machinery of [`crate::reduce_bspline`]).
 ///
 /// Weights all equal (or no weights) are recognised exactly: the polynomial spline of the
-/// same control points is returned unchanged when `m >= p` (bound 0, no spans added) and
+/// same control points is returned unchanged when `m >= p` (bound at the rounding level of
+/// evaluating the rational form, no spans added) and
 /// reduced by [`crate::reduce_bspline`] when `m < p`.
 ///
 /// # Errors
@@ -254,15 +255,25 @@ fn exact_case(
     let continuity = continuity_report(curve.knots(), p, m.min(p), breaks)?;
     if m >= p {
         let max_error = spline_max_deviation(curve, &poly)?;
+        // The same curve: the true error is 0, and what a caller measures is the rounding of
+        // evaluating `sum w N P / sum w N` beside `sum N P` (de Boor, a few (p + 2) ulps of
+        // the largest point). The bound covers that rounding, so it is never below a
+        // measurement (the fuzz harness measured 5.7e-17 beside a reported 0).
+        let pmax = curve
+            .points()
+            .chunks_exact(curve.dim())
+            .map(|q| q.iter().map(|x| x * x).sum::<f64>().sqrt())
+            .fold(0.0, f64::max);
+        let rounding = 8.0 * (p as f64 + 2.0) * f64::EPSILON * pmax;
+        let bound = rounding.max(max_error);
         return Ok(PolynomialReduction {
             report: PolynomialReport {
                 degree_from: p,
                 degree_to: p,
                 tolerance: tol,
                 equal_weights: true,
-                // The same curve (the measured value is the rounding of evaluating x w / w).
-                error_bound: 0.0,
-                segment_bound: 0.0,
+                error_bound: bound,
+                segment_bound: bound,
                 max_error,
                 pieces: spans_in,
                 continuity,

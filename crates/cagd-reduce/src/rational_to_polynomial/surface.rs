@@ -204,6 +204,19 @@ fn exact_case(
         (r.surface, r.error_bound)
     };
     let max_error = surface_max_deviation(s, &surface)?;
+    // The same surface (target (p, q)): the true error is 0 and a measurement is the
+    // rounding of evaluating the rational form beside the polynomial one, a few (p + q + 2)
+    // ulps of the largest point; the bound covers it, so it is never below a measurement.
+    let bound = if target == (p, q) {
+        let pmax = s
+            .points()
+            .chunks_exact(s.dim())
+            .map(|x| x.iter().map(|c| c * c).sum::<f64>().sqrt())
+            .fold(0.0, f64::max);
+        (8.0 * (p + q + 2) as f64 * f64::EPSILON * pmax).max(max_error)
+    } else {
+        bound
+    };
     let (a, b) = surface.degrees();
     let spans_out = (
         span_count(surface.knots_u(), a),

@@ -263,7 +263,7 @@ fn cubic_rational_to_cubic_and_to_quadratic() {
 }
 
 /// Equal weights (any common factor): exactly the polynomial spline, same knots, no spans
-/// added, bound 0; also with no weights, and unclamped. `m < p` reduces it.
+/// added, bound at rounding level; also with no weights, and unclamped. `m < p` reduces it.
 #[test]
 fn equal_weights_are_exact() {
     let knots = vec![-1.0, -0.5, 0.0, 0.2, 0.7, 1.0, 1.5, 2.0];
@@ -276,7 +276,10 @@ fn equal_weights_are_exact() {
             r.curve,
             BSplineCurve::new(2, knots.clone(), pts.clone(), 2).unwrap()
         );
-        assert_eq!((r.spans_in, r.spans_out, r.report.error_bound), (3, 3, 0.0));
+        assert_eq!((r.spans_in, r.spans_out), (3, 3));
+        // The bound is the evaluation rounding only, and never below a measurement (it was
+        // 0 beside a measured 5.7e-17 in the C ABI fuzz run).
+        assert!(r.report.error_bound < 1e-13 && r.report.max_error <= r.report.error_bound);
         assert!(r.report.max_error < 1e-14);
     }
     let poly = BSplineCurve::new(2, knots.clone(), pts.clone(), 2).unwrap();
