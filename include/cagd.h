@@ -403,7 +403,7 @@ typedef int32_t CagdErrorSpace;
 
 /**
  * How much work the certified error bound of `cagd_curve_reduce` (and of the optional
- * per-curve bounds of `cagd_curve_reduce_batch`) may take. Stored in
+ * per-curve bounds of `cagd_curve_reduce_batch_bounded`) may take. Stored in
  * `CagdReduceOptions.bound_level` as an `int32_t`.
  *
  */
@@ -955,7 +955,7 @@ typedef struct CagdReduceOptions {
    */
   int32_t spline_continuity;
   /**
-   * `cagd_curve_reduce` and `cagd_curve_reduce_batch` only: a `CagdBoundLevel` value,
+   * `cagd_curve_reduce` and `cagd_curve_reduce_batch_bounded` only: a `CagdBoundLevel` value,
    * how much work the certified bound may take. Default `CAGD_BOUND_TIGHT`.
    */
   int32_t bound_level;
@@ -4957,9 +4957,10 @@ CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
                              struct CagdReport **report_out);
 
 /**
- * Reduces `n_curves` polynomial curves of one degree `n` to degree `opts->target` with
- * one cached operator through a GEMM kernel, no per-curve allocation — the fast path for
- * many curves — and, optionally, a certified error bound per curve (one more GEMM).
+ * [`cagd_curve_reduce_batch`] with, optionally, a certified error bound per curve:
+ * reduces `n_curves` polynomial curves of one degree `n` to degree `opts->target` with
+ * one cached operator through a GEMM kernel, no per-curve allocation. With
+ * `bounds_out == NULL` it is exactly `cagd_curve_reduce_batch`.
  * Only `opts->method`, `target`, `r`, `p`, `l1`, `l2` and (with `bounds_out`)
  * `bound_level` are used. Rational curves: pass their homogeneous points
  * `(w_i P_i, w_i)` as polynomial curves of dimension `dim + 1` (the bounds are then
@@ -5012,6 +5013,62 @@ CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
  * `points`; `out_needed` NULL or writable; `bounds_out` NULL or `n_curves` writable
  * doubles not overlapping `points`.
  */
+CagdStatus cagd_curve_reduce_batch_bounded(const double *points,
+                                           size_t n_curves,
+                                           size_t degree,
+                                           size_t dim,
+                                           const struct CagdReduceOptions *opts,
+                                           double *out,
+                                           size_t out_cap,
+                                           size_t *out_needed,
+                                           double *bounds_out);
+
+/**
+ * Reduces `n_curves` polynomial curves of one degree `n` to degree `opts->target` with
+ * one cached operator through a GEMM kernel, no per-curve allocation — the fast path for
+ * many curves. The signature of the first C ABI, kept: per-curve certified bounds are
+ * [`cagd_curve_reduce_batch_bounded`]'s `bounds_out`. Only `opts->method`, `target`, `r`,
+ * `p`, `l1` and `l2` are used. Rational curves: pass their homogeneous points
+ * `(w_i P_i, w_i)` as polynomial curves of dimension `dim + 1`.
+ *
+ * Parameters:
+ * - `points` (in): `n_curves * (n + 1) * dim` doubles, curve after curve, row-major inside
+ *   a curve: coordinate k of point j of curve c at `points[(c * (n + 1) + j) * dim + k]`.
+ *   Borrowed for the call.
+ * - `n_curves` (in): number of curves; 0 is allowed (`*out_needed = 0`).
+ * - `degree` (in): the common source degree `n`, `0..=64`.
+ * - `dim` (in): coordinates per point, `>= 1`.
+ * - `opts` (in): the options. Borrowed for the call.
+ * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
+ *   `n_curves * (target + 1) * dim` doubles hold the reduced curves in the same layout.
+ *   May be NULL only when `out_cap == 0`. Not written on failure (but for the overflow
+ *   of `CAGD_ERR_NON_FINITE`).
+ * - `out_cap` (in): capacity of `out` in doubles.
+ * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
+ *   `n_curves * (target + 1) * dim`.
+ *
+ * Returns:
+ * - `CAGD_OK`: the reduced curves are in `out`.
+ * - `CAGD_ERR_NULL_POINTER`: `points`, `opts` or `out_needed` is NULL, or `out` is NULL
+ *   with `out_cap > 0`.
+ * - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a size formula overflows,
+ *   `opts->struct_size` below `sizeof(CagdReduceOptions)`, an invalid `opts->method` code
+ *   or `l1` / `l2`, or a pointer is misaligned.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
+ * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
+ * - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (nothing but
+ *   `*out_needed` is written), or a reduced coordinate overflows to infinity (`out` is
+ *   then partly written).
+ * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
+ *   written.
+ * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+ *
+ * # Safety
+ * `points` must be NULL or point to `n_curves * (degree + 1) * dim` readable doubles;
+ * `opts` NULL or readable; `out` NULL or `out_cap` writable doubles not overlapping
+ * `points`; `out_needed` NULL or writable.
+ */
 CagdStatus cagd_curve_reduce_batch(const double *points,
                                    size_t n_curves,
                                    size_t degree,
@@ -5019,8 +5076,7 @@ CagdStatus cagd_curve_reduce_batch(const double *points,
                                    const struct CagdReduceOptions *opts,
                                    double *out,
                                    size_t out_cap,
-                                   size_t *out_needed,
-                                   double *bounds_out);
+                                   size_t *out_needed);
 
 /**
  * Finds the true degree of a curve: the smallest `k` such that the curve is, up to

@@ -53,7 +53,7 @@
     X(cagd_tripatchlist_get) X(cagd_tensorpatch_reduce) X(cagd_tripatch_reduce) \
     X(cagd_tensorpatch_reduce_to_tolerance) X(cagd_tripatch_reduce_to_tolerance) \
     X(cagd_report_patch) X(cagd_bspline_to_polynomial) \
-    X(cagd_bsplinesurface_to_polynomial) X(cagd_curve_reduce) X(cagd_curve_reduce_batch) \
+    X(cagd_bsplinesurface_to_polynomial) X(cagd_curve_reduce) X(cagd_curve_reduce_batch) X(cagd_curve_reduce_batch_bounded) \
     X(cagd_curve_exact_degree) X(cagd_curve_reduce_exact) X(cagd_curve_reduce_g1_optimal) \
     X(cagd_reduce_operator) X(cagd_report_method_params) X(cagd_reduce_options_init) \
     X(cagd_curve_reduce_to_tolerance) X(cagd_curve_reduce_to_tolerance_stepwise) \
@@ -589,7 +589,7 @@ static void op_cagd_curve_reduce(void) {
     keep_report(st, rep, rep_n);
 }
 
-static void op_cagd_curve_reduce_batch(void) {
+static void op_cagd_curve_reduce_batch_bounded(void) {
     size_t nc = fz_count(1 + fz_r(4)), deg = fz_deg(), dim = fz_dim();
     const double *pts = fz_in(fz_mul(fz_mul(nc, fz_add(deg, 1)), dim), FZ_VALUES);
     SKIP_IF_NEEDED;
@@ -603,7 +603,7 @@ static void op_cagd_curve_reduce_batch(void) {
     }
     FzOb ob;
     CagdStatus st;
-    OUTCALL(ob, cagd_curve_reduce_batch(pts, nc, deg, dim, o, ob.p, ob.cap, ob.needed_p, bp));
+    OUTCALL(ob, cagd_curve_reduce_batch_bounded(pts, nc, deg, dim, o, ob.p, ob.cap, ob.needed_p, bp));
     if (st == CAGD_OK && bp != NULL) {
         if (o->bound_level != CAGD_BOUND_FAST && o->bound_level != CAGD_BOUND_TIGHT) {
             fz_fail("CAGD_OK with bounds_out and bound_level %d", (int)o->bound_level);
@@ -622,6 +622,17 @@ static void op_cagd_curve_reduce_batch(void) {
             if (!mb_is_poison(bounds[i])) fz_fail("bounds_out[%zu] written on failure", i);
         }
     }
+}
+
+static void op_cagd_curve_reduce_batch(void) {
+    size_t nc = fz_count(1 + fz_r(4)), deg = fz_deg(), dim = fz_dim();
+    const double *pts = fz_in(fz_mul(fz_mul(nc, fz_add(deg, 1)), dim), FZ_VALUES);
+    SKIP_IF_NEEDED;
+    const CagdReduceOptions *o = gen_opts();
+    FzOb ob;
+    CagdStatus st;
+    OUTCALL(ob, cagd_curve_reduce_batch(pts, nc, deg, dim, o, ob.p, ob.cap, ob.needed_p));
+    (void)st;
 }
 
 static void op_cagd_curve_reduce_exact(void) {

@@ -218,9 +218,9 @@ pub use patch::{
 pub use rational_to_polynomial::{cagd_bspline_to_polynomial, cagd_bsplinesurface_to_polynomial};
 pub use reduce::{
     CAGD_EXACT_DEGREE_REL_TOL, cagd_curve_exact_degree, cagd_curve_reduce, cagd_curve_reduce_batch,
-    cagd_curve_reduce_exact, cagd_curve_reduce_g1_optimal, cagd_curve_reduce_to_tolerance,
-    cagd_curve_reduce_to_tolerance_stepwise, cagd_reduce_operator, cagd_reduce_options_init,
-    cagd_report_method_params,
+    cagd_curve_reduce_batch_bounded, cagd_curve_reduce_exact, cagd_curve_reduce_g1_optimal,
+    cagd_curve_reduce_to_tolerance, cagd_curve_reduce_to_tolerance_stepwise, cagd_reduce_operator,
+    cagd_reduce_options_init, cagd_report_method_params,
 };
 pub use report::{
     CagdReport, cagd_report_bound, cagd_report_bound_level, cagd_report_free,

@@ -48,7 +48,7 @@ int cagd_ctest_flat_batch_reduce_layouts(void) {
     o.target = 5;
     o.r = 1;
     o.p = 1;
-    CHECK_OK(cagd_curve_reduce_batch(cm, K, 9, DIM, &o, ref, out_len, &needed, NULL));
+    CHECK_OK(cagd_curve_reduce_batch(cm, K, 9, DIM, &o, ref, out_len, &needed));
     CHECK(needed == out_len);
     for (t = 0; t <= 3; ++t) {
         memset(out, 0, sizeof(double) * out_len);

@@ -178,13 +178,13 @@ int cagd_ctest_fuzz_curve_reduce_batch_overflow_is_non_finite(void) {
     size_t needed = 0;
     CHECK_OK(cagd_reduce_options_init(&o));
     o.target = 2;
-    CHECK_STATUS(cagd_curve_reduce_batch(pts, 2, 3, 1, &o, out, 6, &needed, NULL),
+    CHECK_STATUS(cagd_curve_reduce_batch(pts, 2, 3, 1, &o, out, 6, &needed),
                  CAGD_ERR_NON_FINITE);
     CHECK_MESSAGE_HAS("overflows");
-    CHECK_STATUS(cagd_curve_reduce_batch(pts, 2, 3, 1, &o, out, 6, &needed, bounds),
+    CHECK_STATUS(cagd_curve_reduce_batch_bounded(pts, 2, 3, 1, &o, out, 6, &needed, bounds),
                  CAGD_ERR_NON_FINITE);
     /* the second curve alone is fine, with a finite bound */
-    CHECK_OK(cagd_curve_reduce_batch(pts + 4, 1, 3, 1, &o, out, 6, &needed, bounds));
+    CHECK_OK(cagd_curve_reduce_batch_bounded(pts + 4, 1, 3, 1, &o, out, 6, &needed, bounds));
     CHECK(needed == 3 && isfinite(bounds[0]) && bounds[0] >= 0.0);
     rc = 0;
 cleanup:

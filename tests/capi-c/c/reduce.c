@@ -133,12 +133,12 @@ int cagd_ctest_reduce_batch(void) {
     CHECK_OK(cagd_reduce_options_init(&o));
     o.method = CAGD_METHOD_GENERALIZED_INVERSE;
     o.target = 3;
-    CHECK_STATUS(cagd_curve_reduce_batch(in, 3, 7, 2, &o, NULL, 0, &needed, NULL),
+    CHECK_STATUS(cagd_curve_reduce_batch(in, 3, 7, 2, &o, NULL, 0, &needed),
                  CAGD_ERR_BUFFER_TOO_SMALL);
     CHECK(needed == 24);
-    CHECK_OK(cagd_curve_reduce_batch(in, 3, 7, 2, &o, out, 24, &needed, NULL));
+    CHECK_OK(cagd_curve_reduce_batch(in, 3, 7, 2, &o, out, 24, &needed));
     for (c = 0; c < 3; ++c) CHECK(spec_close(out + 8 * c, q, 8, 1e-12));
-    CHECK_OK(cagd_curve_reduce_batch(in, 0, 7, 2, &o, NULL, 0, &needed, NULL));
+    CHECK_OK(cagd_curve_reduce_batch(in, 0, 7, 2, &o, NULL, 0, &needed));
     CHECK(needed == 0);
     rc = 0;
 cleanup:
@@ -165,9 +165,9 @@ int cagd_ctest_reduce_batch_bounds(void) {
     o.method = CAGD_METHOD_L2;
     o.target = 4;
     o.bound_level = CAGD_BOUND_FAST;
-    CHECK_OK(cagd_curve_reduce_batch(in, 2, 7, 2, &o, out, 20, &needed, fast));
+    CHECK_OK(cagd_curve_reduce_batch_bounded(in, 2, 7, 2, &o, out, 20, &needed, fast));
     o.bound_level = CAGD_BOUND_TIGHT;
-    CHECK_OK(cagd_curve_reduce_batch(in, 2, 7, 2, &o, out, 20, &needed, tight));
+    CHECK_OK(cagd_curve_reduce_batch_bounded(in, 2, 7, 2, &o, out, 20, &needed, tight));
     o.measure = true;
     for (k = 0; k < 2; ++k) {
         CHECK_OK(cagd_curve_new(in + 16 * k, 8, 2, &c));
@@ -194,14 +194,14 @@ int cagd_ctest_reduce_batch_bounds(void) {
     CHECK(level == CAGD_BOUND_NONE);
     CHECK_STATUS(cagd_report_bound(rep, &bound), CAGD_ERR_NOT_AVAILABLE);
     /* bounds_out with CAGD_BOUND_NONE, an unknown level, or overlapping out: rejected. */
-    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 2, &o, out, 20, &needed, fast),
+    CHECK_STATUS(cagd_curve_reduce_batch_bounded(in, 2, 7, 2, &o, out, 20, &needed, fast),
                  CAGD_ERR_INVALID_ARGUMENT);
     o.bound_level = 7;
-    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 2, &o, out, 20, &needed, fast),
+    CHECK_STATUS(cagd_curve_reduce_batch_bounded(in, 2, 7, 2, &o, out, 20, &needed, fast),
                  CAGD_ERR_INVALID_ARGUMENT);
     CHECK_STATUS(cagd_curve_reduce(c, &o, &q, &rep), CAGD_ERR_INVALID_ARGUMENT);
     o.bound_level = CAGD_BOUND_FAST;
-    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 2, &o, out, 20, &needed, out + 3),
+    CHECK_STATUS(cagd_curve_reduce_batch_bounded(in, 2, 7, 2, &o, out, 20, &needed, out + 3),
                  CAGD_ERR_INVALID_ARGUMENT);
     rc = 0;
 cleanup:

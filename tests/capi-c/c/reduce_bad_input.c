@@ -116,35 +116,35 @@ int cagd_ctest_reduce_batch_bad_input(void) {
     CHECK_OK(cagd_reduce_options_init(&o));
     o.method = CAGD_METHOD_ECK;
     o.target = 6;
-    CHECK_STATUS(cagd_curve_reduce_batch(NULL, 2, 7, 2, &o, out, 28, &needed, NULL),
+    CHECK_STATUS(cagd_curve_reduce_batch(NULL, 2, 7, 2, &o, out, 28, &needed),
                  CAGD_ERR_NULL_POINTER);
-    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 2, NULL, out, 28, &needed, NULL),
+    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 2, NULL, out, 28, &needed),
                  CAGD_ERR_NULL_POINTER);
-    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 2, &o, NULL, 28, &needed, NULL),
+    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 2, &o, NULL, 28, &needed),
                  CAGD_ERR_NULL_POINTER);
-    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 2, &o, out, 16, NULL, NULL),
+    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 2, &o, out, 16, NULL),
                  CAGD_ERR_NULL_POINTER);
     CHECK(needed == 77);
-    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 0, &o, out, 16, &needed, NULL),
+    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 0, &o, out, 16, &needed),
                  CAGD_ERR_INVALID_ARGUMENT);
-    CHECK_STATUS(cagd_curve_reduce_batch(in, SIZE_MAX, 7, 2, &o, out, 16, &needed, NULL),
+    CHECK_STATUS(cagd_curve_reduce_batch(in, SIZE_MAX, 7, 2, &o, out, 16, &needed),
                  CAGD_ERR_INVALID_ARGUMENT);
-    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 65, 2, &o, out, 16, &needed, NULL),
+    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 65, 2, &o, out, 16, &needed),
                  CAGD_ERR_DEGREE_OUT_OF_RANGE);
     /* short buffer: 2 curves of 7 points of 2 doubles need 28 */
-    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 2, &o, out, 16, &needed, NULL),
+    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 2, &o, out, 16, &needed),
                  CAGD_ERR_BUFFER_TOO_SMALL);
     CHECK(needed == 28 && out[0] == -1.0);
     o.target = 3;
     in[16 + 5] = NAN; /* curve 1, point 2, coordinate 1: batch point 10 */
     needed = 77;
-    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 2, &o, out, 16, &needed, NULL),
+    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 2, &o, out, 16, &needed),
                  CAGD_ERR_NON_FINITE);
     CHECK_MESSAGE_HAS("points[10][1]");
     CHECK(out[0] == -1.0 && out[15] == -1.0); /* nothing written */
     o.target = 7;
     in[16 + 5] = 1.0;
-    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 2, &o, out, 16, &needed, NULL),
+    CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 2, &o, out, 16, &needed),
                  CAGD_ERR_BAD_DEGREE_PAIR);
     rc = 0;
 cleanup:
@@ -168,7 +168,7 @@ int cagd_ctest_reduce_options_struct_size(void) {
     CHECK_MESSAGE_HAS("struct_size");
     o.struct_size = sizeof o - 1;
     CHECK_STATUS(cagd_curve_reduce(c, &o, &q, &rep), CAGD_ERR_INVALID_ARGUMENT);
-    CHECK_STATUS(cagd_curve_reduce_batch(P7, 1, 7, 2, &o, out, 8, &needed, NULL),
+    CHECK_STATUS(cagd_curve_reduce_batch(P7, 1, 7, 2, &o, out, 8, &needed),
                  CAGD_ERR_INVALID_ARGUMENT);
     CHECK(q == NULL && rep == NULL);
     /* sizeof: accepted, and the default method interpolates the end points */

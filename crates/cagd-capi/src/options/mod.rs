@@ -67,7 +67,7 @@ pub enum CagdErrorSpace {
 }
 
 /// How much work the certified error bound of `cagd_curve_reduce` (and of the optional
-/// per-curve bounds of `cagd_curve_reduce_batch`) may take. Stored in
+/// per-curve bounds of `cagd_curve_reduce_batch_bounded`) may take. Stored in
 /// `CagdReduceOptions.bound_level` as an `int32_t`.
 ///
 /// cbindgen:rename-all=prefix:CAGD_
@@ -295,7 +295,7 @@ pub struct CagdReduceOptions {
     /// `k` above the strategy's maximum is `CAGD_ERR_TOO_MANY_CONSTRAINTS`). Below `-1`:
     /// `CAGD_ERR_INVALID_ARGUMENT`.
     pub spline_continuity: i32,
-    /// `cagd_curve_reduce` and `cagd_curve_reduce_batch` only: a `CagdBoundLevel` value,
+    /// `cagd_curve_reduce` and `cagd_curve_reduce_batch_bounded` only: a `CagdBoundLevel` value,
     /// how much work the certified bound may take. Default `CAGD_BOUND_TIGHT`.
     pub bound_level: i32,
 }

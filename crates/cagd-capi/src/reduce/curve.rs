@@ -1,5 +1,6 @@
 //! Degree reduction from C: one curve with a report (`cagd_curve_reduce`), or many curves
-//! of one degree through one cached operator (`cagd_curve_reduce_batch`).
+//! of one degree through one cached operator (`cagd_curve_reduce_batch`, and
+//! `cagd_curve_reduce_batch_bounded` with per-curve certified bounds).
 
 use cagd_core::{Error, check_points};
 use cagd_reduce::{BoundLevel, operator, reduce_batch, reduce_batch_with_bounds, reduce_with};
@@ -86,9 +87,10 @@ pub unsafe extern "C" fn cagd_curve_reduce(
     })
 }
 
-/// Reduces `n_curves` polynomial curves of one degree `n` to degree `opts->target` with
-/// one cached operator through a GEMM kernel, no per-curve allocation — the fast path for
-/// many curves — and, optionally, a certified error bound per curve (one more GEMM).
+/// [`cagd_curve_reduce_batch`] with, optionally, a certified error bound per curve:
+/// reduces `n_curves` polynomial curves of one degree `n` to degree `opts->target` with
+/// one cached operator through a GEMM kernel, no per-curve allocation. With
+/// `bounds_out == NULL` it is exactly `cagd_curve_reduce_batch`.
 /// Only `opts->method`, `target`, `r`, `p`, `l1`, `l2` and (with `bounds_out`)
 /// `bound_level` are used. Rational curves: pass their homogeneous points
 /// `(w_i P_i, w_i)` as polynomial curves of dimension `dim + 1` (the bounds are then
@@ -141,7 +143,7 @@ pub unsafe extern "C" fn cagd_curve_reduce(
 /// `points`; `out_needed` NULL or writable; `bounds_out` NULL or `n_curves` writable
 /// doubles not overlapping `points`.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn cagd_curve_reduce_batch(
+pub unsafe extern "C" fn cagd_curve_reduce_batch_bounded(
     points: *const f64,
     n_curves: usize,
     degree: usize,
@@ -210,6 +212,77 @@ pub unsafe extern "C" fn cagd_curve_reduce_batch(
             other => other.into(),
         })
     })
+}
+
+/// Reduces `n_curves` polynomial curves of one degree `n` to degree `opts->target` with
+/// one cached operator through a GEMM kernel, no per-curve allocation — the fast path for
+/// many curves. The signature of the first C ABI, kept: per-curve certified bounds are
+/// [`cagd_curve_reduce_batch_bounded`]'s `bounds_out`. Only `opts->method`, `target`, `r`,
+/// `p`, `l1` and `l2` are used. Rational curves: pass their homogeneous points
+/// `(w_i P_i, w_i)` as polynomial curves of dimension `dim + 1`.
+///
+/// Parameters:
+/// - `points` (in): `n_curves * (n + 1) * dim` doubles, curve after curve, row-major inside
+///   a curve: coordinate k of point j of curve c at `points[(c * (n + 1) + j) * dim + k]`.
+///   Borrowed for the call.
+/// - `n_curves` (in): number of curves; 0 is allowed (`*out_needed = 0`).
+/// - `degree` (in): the common source degree `n`, `0..=64`.
+/// - `dim` (in): coordinates per point, `>= 1`.
+/// - `opts` (in): the options. Borrowed for the call.
+/// - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
+///   `n_curves * (target + 1) * dim` doubles hold the reduced curves in the same layout.
+///   May be NULL only when `out_cap == 0`. Not written on failure (but for the overflow
+///   of `CAGD_ERR_NON_FINITE`).
+/// - `out_cap` (in): capacity of `out` in doubles.
+/// - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
+///   `n_curves * (target + 1) * dim`.
+///
+/// Returns:
+/// - `CAGD_OK`: the reduced curves are in `out`.
+/// - `CAGD_ERR_NULL_POINTER`: `points`, `opts` or `out_needed` is NULL, or `out` is NULL
+///   with `out_cap > 0`.
+/// - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a size formula overflows,
+///   `opts->struct_size` below `sizeof(CagdReduceOptions)`, an invalid `opts->method` code
+///   or `l1` / `l2`, or a pointer is misaligned.
+/// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
+/// - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
+/// - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
+/// - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (nothing but
+///   `*out_needed` is written), or a reduced coordinate overflows to infinity (`out` is
+///   then partly written).
+/// - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
+///   written.
+/// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
+///
+/// # Safety
+/// `points` must be NULL or point to `n_curves * (degree + 1) * dim` readable doubles;
+/// `opts` NULL or readable; `out` NULL or `out_cap` writable doubles not overlapping
+/// `points`; `out_needed` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn cagd_curve_reduce_batch(
+    points: *const f64,
+    n_curves: usize,
+    degree: usize,
+    dim: usize,
+    opts: *const CagdReduceOptions,
+    out: *mut f64,
+    out_cap: usize,
+    out_needed: *mut usize,
+) -> CagdStatus {
+    // SAFETY: the same contract, with no bounds buffer.
+    unsafe {
+        cagd_curve_reduce_batch_bounded(
+            points,
+            n_curves,
+            degree,
+            dim,
+            opts,
+            out,
+            out_cap,
+            out_needed,
+            std::ptr::null_mut(),
+        )
+    }
 }
 
 /// The caller's `bounds_out` as a slice of `n` doubles, after the alignment check and a

@@ -9,7 +9,7 @@ mod extra;
 mod init;
 mod tolerance;
 
-pub use curve::{cagd_curve_reduce, cagd_curve_reduce_batch};
+pub use curve::{cagd_curve_reduce, cagd_curve_reduce_batch, cagd_curve_reduce_batch_bounded};
 pub use extra::{
     CAGD_EXACT_DEGREE_REL_TOL, cagd_curve_exact_degree, cagd_curve_reduce_exact,
     cagd_curve_reduce_g1_optimal, cagd_reduce_operator, cagd_report_method_params,

@@ -3,7 +3,7 @@
 use cagd_core::{BezierCurve, Error, ModelFrame, Result};
 
 use super::bound::BoundLevel;
-use super::measure::max_deviation;
+use super::measure::{max_deviation, rational_eval_rounding};
 use super::method::Method;
 use super::operator::operator;
 
@@ -175,6 +175,8 @@ where
     let vmin = v.iter().copied().fold(f64::INFINITY, f64::min);
     let bound = eps_h.map(|e| frame.model_bound(e, wmin, vmin) + frame.rounding(inner.points()));
     let reduced = BezierCurve::new_rational(frame.from_frame(inner.points()), v, dim)?;
+    // Never below what a measurement of the two rational curves can show.
+    let bound = bound.map(|b| b + rational_eval_rounding(curve, &reduced));
     // In the input's own homogeneous coordinates `dA = s dA' + c dW`, `dW = dW'`; plus the
     // out-map's rounding times the largest reduced weight.
     let cnorm = frame.centre().iter().map(|x| x * x).sum::<f64>().sqrt();
