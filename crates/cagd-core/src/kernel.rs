@@ -60,13 +60,24 @@ pub fn de_casteljau(points: &[f64], dim: usize, t: f64, work: &mut [f64], out: &
     work[..points.len()].copy_from_slice(points);
     let s = 1.0 - t;
     for level in 1..np {
-        for i in 0..np - level {
-            for k in 0..dim {
-                work[i * dim + k] = s * work[i * dim + k] + t * work[(i + 1) * dim + k];
-            }
-        }
+        // Coordinate j of point i is element i * dim + j: one flat pass per level, in the
+        // same order and with the same operations as a loop over points and coordinates.
+        lerp_level(&mut work[..(np - level + 1) * dim], dim, s, t);
     }
     out.copy_from_slice(&work[..dim]);
+}
+
+/// One de Casteljau level in place: `x[j] = s x[j] + t x[j + dim]` for every `j` but the
+/// last point's (`x` holds whole points of `dim` coordinates). Each new value reads only
+/// old values, so the flat loop is the point-and-coordinate loop in the same order (bit for
+/// bit the same results), without the inner loop over `dim` that kept it from being
+/// unrolled and vectorised.
+#[inline]
+fn lerp_level(x: &mut [f64], dim: usize, s: f64, t: f64) {
+    let len = x.len() - dim;
+    for j in 0..len {
+        x[j] = s * x[j] + t * x[j + dim];
+    }
 }
 
 /// Splits the Bézier control polygon `points` at `t` into `left` and `right` (each the same
@@ -80,11 +91,7 @@ pub fn subdivide(points: &[f64], dim: usize, t: f64, left: &mut [f64], right: &m
     for level in 0..np {
         // right[0] is now point `level` of the left piece.
         left[level * dim..(level + 1) * dim].copy_from_slice(&right[..dim]);
-        for i in 0..np - level - 1 {
-            for k in 0..dim {
-                right[i * dim + k] = s * right[i * dim + k] + t * right[(i + 1) * dim + k];
-            }
-        }
+        lerp_level(&mut right[..(np - level) * dim], dim, s, t);
     }
     // Each level leaves its last point in place, so right[i] = b_i^(n-i): point i of the
     // right piece.

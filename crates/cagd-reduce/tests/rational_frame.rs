@@ -279,8 +279,11 @@ fn uniform_pipeline_and_bezier_reducer_are_unit_consistent() {
         let rb = reduce_with(&b, &bopts).unwrap();
         let got = rb.report.error_bound.unwrap();
         let expect = bbase * mv.1;
+        // The bound also holds the rounding of measuring two rational curves at the
+        // curve's own coordinates (`2 (2 (n + m) + 8) sqrt(dim) eps max |x|`, ~74 eps |x|
+        // here), which grows with the translation by nature: three rounding levels.
         assert!(
-            (got - expect).abs() <= 1e-9 * expect + rounding_level(mv, 16.0),
+            (got - expect).abs() <= 1e-9 * expect + 3.0 * rounding_level(mv, 16.0),
             "bezier {mv:?}: {got} vs {expect}"
         );
         let mut worst = 0.0f64;
