@@ -504,8 +504,10 @@ fn strongly_varying_weights_refine_instead_of_failing() {
 /// evaluations). The bound now includes that rounding, so a report never shows a measured
 /// error above its bound.
 #[test]
-// The fuzz harness's `%.17g` dump, kept verbatim (17 digits round-trip every double).
-#[allow(clippy::excessive_precision)]
+#[allow(
+    clippy::excessive_precision,
+    reason = "the fuzz harness's %.17g dump, kept verbatim (17 digits round-trip every double)"
+)]
 fn rational_point_curve_bound_covers_the_measurement() {
     let pts = vec![
         -0.45955995177032044,
