@@ -57,9 +57,22 @@ pub fn try_binomial(n: usize, k: usize) -> Result<u128> {
     Ok(binomial(n, k))
 }
 
-/// `C(n, k)` rounded to the nearest `f64` (exact below `2^53`).
+/// `C(n, k)` rounded to the nearest `f64` (exact below `2^53`), from a table of the exact
+/// values each rounded once (a `u128 -> f64` conversion is a libcall, and Bernstein
+/// evaluation in the fit and the bounds asks for these in inner loops); `0` when `k > n`
+/// or `n` is beyond the exact table, as [`binomial`].
 pub fn binomial_f64(n: usize, k: usize) -> f64 {
-    binomial(n, k) as f64
+    static TABLE: OnceLock<Vec<Vec<f64>>> = OnceLock::new();
+    let rows = TABLE.get_or_init(|| {
+        table()
+            .iter()
+            .map(|row| row.iter().map(|&c| c as f64).collect())
+            .collect()
+    });
+    if k > n || n > MAX_BINOMIAL_N {
+        return 0.0;
+    }
+    rows[n][k]
 }
 
 /// `(-1)^(n-i) C(n, i)`, the sign vector `c_i^(n)` of seed 000 eq. 14.1.1 / 14.2.5.

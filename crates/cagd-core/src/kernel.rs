@@ -5,7 +5,7 @@
 //! The kernels assume valid input (checked by the callers); they never allocate unless the
 //! name says so.
 
-use crate::binomial::binomial;
+use crate::binomial::{binomial, binomial_f64};
 
 /// All Bernstein basis values `B_i^n(t) = C(n,i) t^i (1-t)^(n-i)`, `i = 0..=n`, into `out`
 /// (length `n + 1`).
@@ -24,7 +24,7 @@ pub fn bernstein_all(n: usize, t: f64, out: &mut [f64]) {
     }
     let mut q = 1.0;
     for i in (0..=n).rev() {
-        out[i] *= q * binomial(n, i) as f64;
+        out[i] *= q * binomial_f64(n, i);
         q *= s;
     }
 }
@@ -34,7 +34,7 @@ pub fn bernstein(n: usize, i: usize, t: f64) -> f64 {
     if i > n {
         return 0.0;
     }
-    binomial(n, i) as f64 * powu(t, i) * powu(1.0 - t, n - i)
+    binomial_f64(n, i) * powu(t, i) * powu(1.0 - t, n - i)
 }
 
 /// `x^e` for a non-negative integer exponent, by binary powering (exact for `e <= 1`, a few
