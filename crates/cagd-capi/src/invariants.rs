@@ -216,7 +216,9 @@ pub unsafe extern "C" fn cagd_curve_distance(
 /// The parametric distance `max_{(u,v) in [0,1]^2} ||a(u,v) - b(u,v)||` (Euclidean norm)
 /// between two tensor-product patches of any degrees (cagd_core::tensor_patch_distance:
 /// both elevated to the common degree, control points subtracted, grid of
-/// `4 (m_a + n_a + m_b + n_b) + 32` intervals per side refined locally).
+/// `4 (m + n) + 32` intervals per side, `(m, n)` the common degrees, sampled with cached
+/// bases; the 32 largest sampled local maxima refined locally: bounded work, about 0.3 s
+/// at degrees 64 x 64).
 ///
 /// Parameters:
 /// - `a`, `b` (in): the patches, of the same dimension.
@@ -250,7 +252,9 @@ pub unsafe extern "C" fn cagd_tensorpatch_distance(
 /// The parametric distance `max ||a(u,v) - b(u,v)||` (Euclidean norm) over the unit
 /// triangle `u, v >= 0, u + v <= 1` between two triangular patches of any degrees
 /// (cagd_core::tri_patch_distance: elevated to the common degree, control points
-/// subtracted, grid of `4 (n_a + n_b) + 32` intervals per side refined locally).
+/// subtracted, grid of `8 n + 32` intervals per side, `n` the common degree, sampled with
+/// cached bases; the 32 largest sampled local maxima refined locally: bounded work, about
+/// 0.3 s at degree 64).
 ///
 /// Parameters:
 /// - `a`, `b` (in): the patches, of the same dimension.

@@ -84,8 +84,8 @@ pub use bspline::{
     s_matrix_inverse, s_matrix_inverse_exact,
 };
 pub use distance::{
-    Domain2, curve_distance, max_distance_1d, max_distance_2d, tensor_patch_distance,
-    tri_patch_distance,
+    Domain2, MAX_REFINED_MAXIMA, curve_distance, max_distance_1d, max_distance_2d,
+    max_distance_2d_with_grid, tensor_patch_distance, tensor_patch_grid, tri_patch_distance,
 };
 pub use error::{Error, Result};
 pub use exact::{

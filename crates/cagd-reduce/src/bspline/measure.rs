@@ -5,7 +5,7 @@ use std::cell::RefCell;
 
 use cagd_core::{
     BSplineCurve, BSplineSurface, BezierSegment, Domain2, Error, Result, SurfacePatchPiece,
-    TensorPatch, max_distance_1d, max_distance_2d,
+    TensorPatch, max_distance_1d, max_distance_2d_with_grid, tensor_patch_grid,
 };
 
 /// `max_t ||a(t) - b(t)||` (Euclidean; rational curves compared in model space) over the
@@ -77,13 +77,16 @@ fn eval_piece(piece: &BezierSegment, t: f64, out: &mut [f64]) {
 /// `max_{(u,v)} ||a(u,v) - b(u,v)||` (Euclidean; NURBS compared in model space) over the
 /// common domain of two B-spline / NURBS surfaces, measured per cell: both surfaces get
 /// the other's missing knot values (knot insertion, exact up to rounding), their Bézier
-/// patches are paired cell by cell, and [`max_distance_2d`] samples every cell on a grid
-/// of `2 (p_a + q_a + p_b + q_b) + 16` intervals per side, maximises the boundary edges as
-/// curves (Brent) and refines every interior sampled local maximum by pattern search down to
-/// a step of `1e-10` of the cell (ADDED; the surface analogue of [`spline_max_deviation`]).
-/// The result is never below the sampled maximum; on a cell whose error has a narrow peak
-/// between grid nodes it is the peak to `~1e-12` relative (tests: against a `400 x 400`
-/// grid plus refinement).
+/// patches are paired cell by cell and sampled on grids by cached Bernstein bases; the
+/// [`SURFACE_MEASURED_CELLS`] cells of largest sampled distance are then maximised by
+/// [`max_distance_2d_with_grid`] on a grid of `2 (p_a + q_a + p_b + q_b) + 16` intervals
+/// per side (boundary edges as curves by Brent, the largest interior sampled local maxima
+/// refined by pattern search down to a step of `1e-10` of the cell). ADDED; the surface
+/// analogue of [`spline_max_deviation`]. Bounded work: the first pass samples at most
+/// [`SURFACE_MEASURE_NODE_BUDGET`] nodes over all cells (the full density when it fits, coarser on
+/// surfaces of many thousands of patches). The result is never below the sampled maximum;
+/// on a cell whose error has a narrow peak between grid nodes it is the peak to `~1e-12`
+/// relative (tests: against a `400 x 400` grid plus refinement).
 ///
 /// # Errors
 /// [`Error::LengthMismatch`] (different dimensions, or the cells do not pair up),
@@ -135,19 +138,55 @@ pub fn surface_max_deviation(a: &BSplineSurface, b: &BSplineSurface) -> Result<f
     }
     let ((p, q), (r, t)) = (a.degrees(), b.degrees());
     let samples = 2 * (p + q + r + t) + 16;
+    let cells: Vec<(CellEval, CellEval)> = pa
+        .iter()
+        .zip(&pb)
+        .map(|(x, y)| Ok((CellEval::new(x)?, CellEval::new(y)?)))
+        .collect::<Result<_>>()?;
+    // Pass 1: every cell sampled on a grid of cached bases, its density shrunk so that all
+    // cells together stay within the node budget.
+    let coarse = coarse_samples(samples, cells.len());
     let mut best = 0.0f64;
-    for (x, y) in pa.iter().zip(&pb) {
-        let (fx, fy) = (CellEval::new(x)?, CellEval::new(y)?);
-        let d = max_distance_2d(
+    let mut ranked = Vec::with_capacity(cells.len());
+    for (idx, (fx, fy)) in cells.iter().enumerate() {
+        let grid = fx.grid_distances(fy, coarse)?;
+        let top = grid.iter().copied().fold(0.0f64, f64::max);
+        best = best.max(top);
+        ranked.push((top, idx));
+    }
+    // Pass 2: the cells of largest sampled distance maximised in full.
+    ranked.sort_by(|x, y| y.0.total_cmp(&x.0));
+    for &(_, idx) in ranked.iter().take(SURFACE_MEASURED_CELLS) {
+        let (fx, fy) = &cells[idx];
+        let grid = fx.grid_distances(fy, samples)?;
+        let d = max_distance_2d_with_grid(
             |u, v, o| fx.eval(u, v, o),
             |u, v, o| fy.eval(u, v, o),
             a.dim(),
             Domain2::UnitSquare,
             samples,
+            &grid,
         )?;
-        best = best.max(d);
+        best = best.max(d * d);
     }
-    Ok(best)
+    Ok(best.sqrt())
+}
+
+/// Cells maximised in full by [`surface_max_deviation`] (the others are sampled): bounded
+/// work on surfaces of many patches (ADDED).
+pub const SURFACE_MEASURED_CELLS: usize = 16;
+
+/// Grid nodes [`surface_max_deviation`] samples over all cells in its first pass: `2^22`,
+/// a few tenths of a second (ADDED; a 65 536-patch surface took minutes at the full
+/// density on every cell).
+pub const SURFACE_MEASURE_NODE_BUDGET: usize = 1 << 22;
+
+/// The per-side sample count of the first pass: `samples`, or fewer (at least 4) when
+/// `cells` grids of that size would exceed [`SURFACE_MEASURE_NODE_BUDGET`].
+fn coarse_samples(samples: usize, cells: usize) -> usize {
+    let per_cell = SURFACE_MEASURE_NODE_BUDGET / cells.max(1);
+    let side = per_cell.isqrt();
+    samples.min(side.saturating_sub(1)).max(4)
 }
 
 /// `s` with every distinct interior knot value of `other` that `s` lacks inserted once.
@@ -203,6 +242,42 @@ impl CellEval {
             rational,
             work,
         })
+    }
+
+    /// The squared distances to `other` on the grid of `samples` intervals per side
+    /// ([`max_distance_2d_with_grid`]'s layout), both evaluated by cached bases
+    /// ([`tensor_patch_grid`]).
+    fn grid_distances(&self, other: &CellEval, samples: usize) -> Result<Vec<f64>> {
+        let (ga, gb) = (self.model_grid(samples), other.model_grid(samples));
+        let dim = self.patch.dim() - usize::from(self.rational);
+        let out: Vec<f64> = ga
+            .chunks_exact(dim)
+            .zip(gb.chunks_exact(dim))
+            .map(|(x, y)| x.iter().zip(y).map(|(a, b)| (a - b) * (a - b)).sum())
+            .collect();
+        if let Some(index) = out.iter().position(|x: &f64| !x.is_finite()) {
+            return Err(Error::NonFinite {
+                index,
+                coord: 0,
+                value: out[index],
+            });
+        }
+        Ok(out)
+    }
+
+    /// The cell at every grid node, in model space (projected for NURBS).
+    fn model_grid(&self, samples: usize) -> Vec<f64> {
+        let g = tensor_patch_grid(&self.patch, samples);
+        if !self.rational {
+            return g;
+        }
+        let hd = self.patch.dim();
+        g.chunks_exact(hd)
+            .flat_map(|h| {
+                let w = h[hd - 1];
+                h[..hd - 1].iter().map(move |x| x / w)
+            })
+            .collect()
     }
 
     fn eval(&self, u: f64, v: f64, out: &mut [f64]) {

@@ -22,7 +22,10 @@ mod surface;
 mod tests;
 mod uniform;
 
-pub use measure::{spline_max_deviation, surface_max_deviation};
+pub use measure::{
+    SURFACE_MEASURE_NODE_BUDGET, SURFACE_MEASURED_CELLS, spline_max_deviation,
+    surface_max_deviation,
+};
 pub use options::{BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy};
 pub use piegl_tiller::reduce_bspline_piegl_tiller;
 pub use reduce::reduce_bspline;

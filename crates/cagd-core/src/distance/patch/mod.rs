@@ -7,10 +7,15 @@
 //! maximised as curves by [`max_distance_1d`]; every interior grid node that is a local
 //! maximum among its 8 neighbours (and not flat to `1e-13` relative) is refined by a pattern
 //! search (steps along `±u`, `±v`, `±(u - v)`, `±(u + v)`, halved when no step improves,
-//! points outside the domain rejected) down to a step of `1e-10`. The result is never below the sampled maximum.
+//! points outside the domain rejected) down to a step of `1e-10` — the [`MAX_REFINED_MAXIMA`] largest
+//! of them, so the work is bounded. The result is never below the sampled maximum.
+//!
+//! The patch distances sample their grid with cached Bernstein bases (`grid`, ADDED):
+//! `O(N^2 n)` for an `N x N` grid of a degree-`n` difference instead of `O(N^2 n^3)`.
 
 use super::curve::max_distance_1d;
 use crate::{Error, Result, TensorPatch, TriPatch};
+use grid::{TensorEval, TriEval, node};
 
 /// Smallest step of the pattern search: the value error at a smooth maximum is quadratic in
 /// the position error, so `1e-10` is far below the `1e-12` relative target.
@@ -22,6 +27,12 @@ type Param = (f64, f64);
 /// A 3 x 3 grid neighbourhood whose values differ by less than this (relative) is flat: its
 /// centre is not refined (the possible gain is below the `1e-12` target).
 const FLAT: f64 = 1e-13;
+
+/// At most this many sampled interior local maxima are refined by the pattern search (the
+/// largest ones): a noisy distance (rounding noise of two nearly equal patches) has
+/// thousands of strict grid maxima, and refining all of them made one distance of two
+/// degree-64 triangles take minutes (ADDED; bounded work).
+pub const MAX_REFINED_MAXIMA: usize = 32;
 
 /// The parameter domain of [`max_distance_2d`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -96,19 +107,8 @@ pub fn max_distance_2d(
     }
     let n = samples.max(2);
     let (mut a, mut b) = (vec![0.0; dim], vec![0.0; dim]);
-    let mut d2 = |u: f64, v: f64| {
-        f(u, v, &mut a);
-        g(u, v, &mut b);
-        a.iter()
-            .zip(b.iter())
-            .map(|(x, y)| (x - y) * (x - y))
-            .sum::<f64>()
-    };
-    let h = 1.0 / n as f64;
-    let node = |i: usize| if i == n { 1.0 } else { i as f64 * h };
     // Grid values, NaN outside the triangle.
     let mut grid = vec![f64::NAN; (n + 1) * (n + 1)];
-    let mut best = 0.0f64;
     for i in 0..=n {
         let jmax = match domain {
             Domain2::UnitSquare => n,
@@ -116,14 +116,70 @@ pub fn max_distance_2d(
         };
         for j in 0..=jmax {
             let (u, v) = (
-                node(i),
+                node(i, n),
                 if i + j == n && domain == Domain2::UnitTriangle {
-                    1.0 - node(i)
+                    1.0 - node(i, n)
                 } else {
-                    node(j)
+                    node(j, n)
                 },
             );
-            let val = d2(u, v);
+            f(u, v, &mut a);
+            g(u, v, &mut b);
+            grid[i * (n + 1) + j] = squared_distance(&a, &b);
+        }
+    }
+    max_distance_2d_with_grid(f, g, dim, domain, n, &grid)
+}
+
+/// `||a - b||^2`.
+fn squared_distance(a: &[f64], b: &[f64]) -> f64 {
+    a.iter()
+        .zip(b.iter())
+        .map(|(x, y)| (x - y) * (x - y))
+        .sum::<f64>()
+}
+
+/// [`max_distance_2d`] with the grid already sampled: `grid[i (samples + 1) + j]` is
+/// `||f - g||^2` at the node `(i / samples, j / samples)` (on the triangle's hypotenuse
+/// `i + j = samples` at `(i / samples, 1 - i / samples)`; entries outside the triangle are
+/// ignored). For callers that evaluate a whole grid faster than point by point (cached
+/// bases, ADDED); `f` and `g` are used on the boundary edges and for the refinement.
+///
+/// Refinement (bounded work, ADDED): the interior sampled local maxima are refined in
+/// decreasing order of their sampled value, at most [`MAX_REFINED_MAXIMA`] of them; the others
+/// count with their sampled values. The result is never below the sampled maximum.
+///
+/// # Errors
+/// [`Error::ZeroDimension`] when `dim == 0`; [`Error::LengthMismatch`] when the grid does
+/// not have `(samples + 1)^2` entries; [`Error::NonFinite`] when a grid value in the domain
+/// is not finite.
+pub fn max_distance_2d_with_grid(
+    f: impl Fn(f64, f64, &mut [f64]),
+    g: impl Fn(f64, f64, &mut [f64]),
+    dim: usize,
+    domain: Domain2,
+    samples: usize,
+    grid: &[f64],
+) -> Result<f64> {
+    if dim == 0 {
+        return Err(Error::ZeroDimension);
+    }
+    let n = samples.max(2);
+    if grid.len() != (n + 1) * (n + 1) {
+        return Err(Error::LengthMismatch {
+            what: "sampled grid of max_distance_2d_with_grid",
+            got: grid.len(),
+            expected: (n + 1) * (n + 1),
+        });
+    }
+    let inside = |i: usize, j: usize| domain == Domain2::UnitSquare || i + j <= n;
+    let mut best = 0.0f64;
+    for i in 0..=n {
+        for j in 0..=n {
+            if !inside(i, j) {
+                continue;
+            }
+            let val = grid[i * (n + 1) + j];
             if !val.is_finite() {
                 return Err(Error::NonFinite {
                     index: i * (n + 1) + j,
@@ -131,10 +187,15 @@ pub fn max_distance_2d(
                     value: val,
                 });
             }
-            grid[i * (n + 1) + j] = val;
             best = best.max(val);
         }
     }
+    let (mut a, mut b) = (vec![0.0; dim], vec![0.0; dim]);
+    let mut d2 = |u: f64, v: f64| {
+        f(u, v, &mut a);
+        g(u, v, &mut b);
+        squared_distance(&a, &b)
+    };
     // Boundary edges as curves.
     for &((u0, v0), (u1, v1)) in domain.edges() {
         let e = max_distance_1d(
@@ -147,7 +208,34 @@ pub fn max_distance_2d(
         )?;
         best = best.max(e * e);
     }
-    // Interior local maxima of the grid.
+    // Interior local maxima of the grid, largest first.
+    let mut candidates = Vec::new();
+    for i in 1..n {
+        for j in 1..n {
+            if !inside(i, j) {
+                continue;
+            }
+            let c = grid[i * (n + 1) + j];
+            let (mut ge, mut gt, mut lowest) = (true, false, c);
+            for ni in i - 1..=i + 1 {
+                for nj in j - 1..=j + 1 {
+                    if (ni == i && nj == j) || !inside(ni, nj) {
+                        continue;
+                    }
+                    let w = grid[ni * (n + 1) + nj];
+                    ge &= c >= w;
+                    gt |= c > w;
+                    lowest = lowest.min(w);
+                }
+            }
+            // Refine strict local maxima only; a neighbourhood flat to 1e-13 relative (e.g.
+            // rounding noise on a constant distance) cannot hide a larger value within it.
+            if ge && gt && c - lowest > FLAT * c {
+                candidates.push((c, i, j));
+            }
+        }
+    }
+    candidates.sort_by(|x, y| y.0.total_cmp(&x.0));
     const DIRS: [(f64, f64); 8] = [
         (1.0, 0.0),
         (-1.0, 0.0),
@@ -158,58 +246,40 @@ pub fn max_distance_2d(
         (1.0, 1.0),
         (-1.0, -1.0),
     ];
-    for i in 1..n {
-        for j in 1..n {
-            let c = grid[i * (n + 1) + j];
-            if c.is_nan() {
-                continue;
-            }
-            let (mut ge, mut gt, mut lowest) = (true, false, c);
-            for ni in i - 1..=i + 1 {
-                for nj in j - 1..=j + 1 {
-                    if ni == i && nj == j {
-                        continue;
-                    }
-                    let w = grid[ni * (n + 1) + nj];
-                    if w.is_nan() {
-                        continue;
-                    }
-                    ge &= c >= w;
-                    gt |= c > w;
-                    lowest = lowest.min(w);
+    for &(c, i, j) in candidates.iter().take(MAX_REFINED_MAXIMA) {
+        let (mut u, mut v, mut val) = (node(i, n), node(j, n), c);
+        let mut step = 1.0 / n as f64;
+        while step >= MIN_STEP {
+            let mut moved = false;
+            for (du, dv) in DIRS {
+                let (nu, nv) = (u + step * du, v + step * dv);
+                if !domain.contains(nu, nv) {
+                    continue;
+                }
+                let nval = d2(nu, nv);
+                if nval > val {
+                    (u, v, val) = (nu, nv, nval);
+                    moved = true;
+                    break;
                 }
             }
-            // Refine strict local maxima only; a neighbourhood flat to 1e-13 relative (e.g.
-            // rounding noise on a constant distance) cannot hide a larger value within it.
-            if !(ge && gt) || c - lowest <= FLAT * c {
-                continue;
+            if !moved {
+                step *= 0.5;
             }
-            let (mut u, mut v, mut val) = (node(i), node(j), c);
-            let mut step = h;
-            while step >= MIN_STEP {
-                let mut moved = false;
-                for (du, dv) in DIRS {
-                    let (nu, nv) = (u + step * du, v + step * dv);
-                    if !domain.contains(nu, nv) {
-                        continue;
-                    }
-                    let nval = d2(nu, nv);
-                    if nval > val {
-                        (u, v, val) = (nu, nv, nval);
-                        moved = true;
-                        break;
-                    }
-                }
-                if !moved {
-                    step *= 0.5;
-                }
-            }
-            if val.is_finite() {
-                best = best.max(val);
-            }
+        }
+        if val.is_finite() {
+            best = best.max(val);
         }
     }
     Ok(best.sqrt())
+}
+
+/// The tensor patch `p` at every node `(i / samples, j / samples)`, `i, j` in
+/// `0..=samples`: node `(i, j)` at `(i (samples + 1) + j) dim` — the grid of
+/// [`max_distance_2d_with_grid`], by cached Bernstein bases (`O(N m n + N^2 n)` for `N`
+/// samples, ADDED).
+pub fn tensor_patch_grid(p: &TensorPatch, samples: usize) -> Vec<f64> {
+    TensorEval::new(p).grid(samples.max(2))
 }
 
 /// Grid size for two patches of the given total degrees.
@@ -220,7 +290,8 @@ fn grid_for(total_degree: usize) -> usize {
 /// The parametric distance `max_{(u,v) in [0,1]^2} ||a(u,v) - b(u,v)||` (Euclidean norm)
 /// between two tensor-product patches (any degrees). Both are elevated to the common degree
 /// and the control points subtracted, so rounding is relative to the difference; then
-/// [`max_distance_2d`] with `4 (m_a + n_a + m_b + n_b) + 32` grid intervals per side.
+/// [`max_distance_2d`] with `4 (m + n) + 32` grid intervals per side, `(m, n)` the common
+/// degrees (the degrees of the difference; sampled with cached bases, `grid`).
 ///
 /// # Errors
 /// [`Error::LengthMismatch`] when the dimensions differ.
@@ -244,19 +315,28 @@ pub fn tensor_patch_distance(a: &TensorPatch, b: &TensorPatch) -> Result<f64> {
         .map(|(x, y)| x - y)
         .collect();
     let d = TensorPatch::from_parts(diff, m, n, a.dim());
-    max_distance_2d(
-        |u, v, o| d.eval_into(u, v, o),
+    let fast = TensorEval::new(&d);
+    let samples = grid_for(m + n);
+    let values = fast.grid(samples);
+    let grid: Vec<f64> = values
+        .chunks_exact(a.dim())
+        .map(|x| x.iter().map(|c| c * c).sum())
+        .collect();
+    max_distance_2d_with_grid(
+        |u, v, o| fast.eval(u, v, o),
         |_, _, o| o.fill(0.0),
         a.dim(),
         Domain2::UnitSquare,
-        grid_for(ma + na + mb + nb),
+        samples,
+        &grid,
     )
 }
 
 /// The parametric distance `max ||a(u,v) - b(u,v)||` (Euclidean norm) over the unit
 /// triangle between two triangular patches (any degrees): elevated to the common degree,
-/// control points subtracted, then [`max_distance_2d`] with `4 (n_a + n_b) + 32` grid
-/// intervals per side.
+/// control points subtracted, then [`max_distance_2d`] with `8 n + 32` grid intervals per
+/// side, `n` the common degree (the degree of the difference; sampled with cached bases,
+/// `grid`).
 ///
 /// # Errors
 /// [`Error::LengthMismatch`] when the dimensions differ.
@@ -278,14 +358,23 @@ pub fn tri_patch_distance(a: &TriPatch, b: &TriPatch) -> Result<f64> {
         .map(|(x, y)| x - y)
         .collect();
     let d = TriPatch::from_parts(diff, n, a.dim());
-    max_distance_2d(
-        |u, v, o| d.eval_into(u, v, o),
+    let fast = TriEval::new(&d);
+    let samples = grid_for(2 * n);
+    let values = fast.grid(samples);
+    let grid: Vec<f64> = values
+        .chunks_exact(a.dim())
+        .map(|x| x.iter().map(|c| c * c).sum())
+        .collect();
+    max_distance_2d_with_grid(
+        |u, v, o| fast.eval(u, v, o),
         |_, _, o| o.fill(0.0),
         a.dim(),
         Domain2::UnitTriangle,
-        grid_for(2 * (a.degree() + b.degree())),
+        samples,
+        &grid,
     )
 }
 
+mod grid;
 #[cfg(test)]
 mod tests;

@@ -128,3 +128,112 @@ proptest! {
         prop_assert!(d <= grid * (1.0 + 1e-3) + 1e-13);
     }
 }
+
+/// A deterministic value in `[-1, 1]` (xorshift).
+fn noise(state: &mut u64) -> f64 {
+    *state ^= *state << 13;
+    *state ^= *state >> 7;
+    *state ^= *state << 17;
+    (*state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+}
+
+/// The cached-basis evaluators (`grid`) agree with de Casteljau at grid nodes and at
+/// arbitrary points, degrees 0..=64 (an independent route: the pyramid).
+#[test]
+fn cached_bases_agree_with_de_casteljau() {
+    let mut s = 99u64;
+    for (m, n) in [(0, 0), (1, 3), (7, 2), (20, 20), (64, 64), (64, 1)] {
+        let pts: Vec<f64> = (0..(m + 1) * (n + 1) * 2).map(|_| noise(&mut s)).collect();
+        let p = TensorPatch::new(pts, m, n, 2).unwrap();
+        let fast = TensorEval::new(&p);
+        let samples = 13;
+        let g = fast.grid(samples);
+        let (mut a, mut b) = ([0.0; 2], [0.0; 2]);
+        for i in 0..=samples {
+            for j in 0..=samples {
+                let (u, v) = (node(i, samples), node(j, samples));
+                p.eval_into(u, v, &mut a);
+                fast.eval(u, v, &mut b);
+                let at = (i * (samples + 1) + j) * 2;
+                for k in 0..2 {
+                    assert!((a[k] - g[at + k]).abs() <= 1e-13, "tensor grid {m} {n}");
+                    assert!((a[k] - b[k]).abs() <= 1e-13, "tensor eval {m} {n}");
+                }
+            }
+        }
+        let pts: Vec<f64> = (0..crate::tri_count(m) * 3)
+            .map(|_| noise(&mut s))
+            .collect();
+        let t = TriPatch::new(pts, m, 3).unwrap();
+        let fast = TriEval::new(&t);
+        let g = fast.grid(samples);
+        let (mut a, mut b) = ([0.0; 3], [0.0; 3]);
+        for i in 0..=samples {
+            for j in 0..=samples - i {
+                let u = node(i, samples);
+                let v = if i + j == samples {
+                    1.0 - u
+                } else {
+                    node(j, samples)
+                };
+                t.eval_into(u, v, &mut a);
+                fast.eval(u, v, &mut b);
+                let at = (i * (samples + 1) + j) * 3;
+                for k in 0..3 {
+                    assert!((a[k] - g[at + k]).abs() <= 1e-13, "tri grid {m}");
+                    assert!((a[k] - b[k]).abs() <= 1e-13, "tri eval {m}");
+                }
+            }
+        }
+        // Off the grid, near the corner u = 1.
+        for (u, v) in [(0.3, 0.2), (1.0 - 1e-9, 5e-10), (1.0, 0.0), (0.0, 1.0)] {
+            t.eval_into(u, v, &mut a);
+            fast.eval(u, v, &mut b);
+            for k in 0..3 {
+                assert!((a[k] - b[k]).abs() <= 1e-12, "tri eval {m} at ({u}, {v})");
+            }
+        }
+    }
+}
+
+/// two random degree-24 patches (a distance with hundreds of sampled local maxima, like
+/// the fuzz harness's minutes-long degree-64 calls): the bounded refinement still finds
+/// the maximum of an independent dense sampling (a 241-node grid per side, de Casteljau)
+/// and is not above it by more than the local gain between those nodes.
+#[test]
+fn degree_24_distances_match_an_independent_dense_sampling() {
+    let mut s = 7u64;
+    let n = 24;
+    let a = TriPatch::new(
+        (0..crate::tri_count(n)).map(|_| noise(&mut s)).collect(),
+        n,
+        1,
+    )
+    .unwrap();
+    let b = TriPatch::new(
+        (0..crate::tri_count(n)).map(|_| noise(&mut s)).collect(),
+        n,
+        1,
+    )
+    .unwrap();
+    let d = tri_patch_distance(&a, &b).unwrap();
+    let (mut x, mut y) = ([0.0], [0.0]);
+    let k = 241;
+    let mut dense = 0.0f64;
+    for i in 0..=k {
+        for j in 0..=k - i {
+            let (u, v) = (i as f64 / k as f64, j as f64 / k as f64);
+            a.eval_into(u, v, &mut x);
+            b.eval_into(u, v, &mut y);
+            dense = dense.max((x[0] - y[0]).abs());
+        }
+    }
+    assert!(
+        d >= dense * (1.0 - 1e-12),
+        "{d} below the dense sampling {dense}"
+    );
+    assert!(
+        d <= dense * (1.0 + 1e-3),
+        "{d} far above the dense sampling {dense}"
+    );
+}
