@@ -26,10 +26,12 @@ pub(crate) fn identity<B: Base>(len: usize) -> Vec<Row<B>> {
         .collect()
 }
 
-/// `y += a x`.
+/// `y += a x` (exact zeros of `x` skipped: they change nothing, error included).
 pub(crate) fn axpy<B: Base>(y: &mut [Tracked<B>], a: Tracked<B>, x: &[Tracked<B>]) {
     for (u, v) in y.iter_mut().zip(x) {
-        *u = u.fma(a, *v);
+        if !v.is_exact_zero() {
+            *u = u.fma(a, *v);
+        }
     }
 }
 
@@ -41,6 +43,26 @@ pub(crate) fn lin2<B: Base>(
     y: &[Tracked<B>],
 ) -> Row<B> {
     x.iter().zip(y).map(|(u, v)| a.mul(*u).fma(b, *v)).collect()
+}
+
+/// `a x + b y` for exact constants `a`, `b`, divided by the exact constant `d`.
+pub(crate) fn lin2_exact<B: Base>(
+    a: f64,
+    x: &[Tracked<B>],
+    b: f64,
+    y: &[Tracked<B>],
+    d: f64,
+) -> Row<B> {
+    x.iter()
+        .zip(y)
+        .map(|(u, v)| {
+            if u.is_exact_zero() && v.is_exact_zero() {
+                *u
+            } else {
+                u.scale_by(a).add(v.scale_by(b)).div_by(d)
+            }
+        })
+        .collect()
 }
 
 /// `x / d`.

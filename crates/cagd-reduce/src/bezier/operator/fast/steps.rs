@@ -4,7 +4,9 @@
 //! step (functionals of the original points), so composing the steps is `O(n^2 (n - m))`
 //! operations, never a dense matrix product.
 
-use super::rows::{Row, auxiliary, div, end_points, identity, idx, lin2, scale, to_i, zero};
+use super::rows::{
+    Row, auxiliary, div, end_points, identity, idx, lin2, lin2_exact, scale, to_i, zero,
+};
 use super::tracked::{Base, Tracked};
 use crate::bezier::method::Method;
 
@@ -14,6 +16,12 @@ pub(crate) struct Step<B> {
     /// `(coef, g)`: the term `coef ||g . P||` of the step's own bound, `g` a functional of
     /// the original points; `coef` is an `f64` upper bound.
     pub(crate) terms: Vec<(f64, Row<B>)>,
+}
+
+/// A small index as an exact `f64`.
+#[allow(clippy::cast_precision_loss, reason = "indices <= 130")]
+fn f(i: usize) -> f64 {
+    i as f64
 }
 
 /// `(-1)^(k-i) C(k,i)`.
@@ -37,13 +45,9 @@ fn forward<B: Base>(s: &[Row<B>], last: usize) -> Vec<Row<B>> {
     let k = s.len() - 1;
     let mut out: Vec<Row<B>> = Vec::with_capacity(last + 1);
     for i in 0..=last {
-        let kk = Tracked::small(to_i(k));
         let v = match out.last() {
             None => s[i].clone(),
-            Some(prev) => div(
-                &lin2(kk, &s[i], Tracked::small(-to_i(i)), prev),
-                Tracked::small(to_i(k - i)),
-            ),
+            Some(prev) => lin2_exact(f(k), &s[i], -f(i), prev, f(k - i)),
         };
         out.push(v);
     }
@@ -57,24 +61,23 @@ fn backward<B: Base>(s: &[Row<B>], first: usize) -> Vec<Row<B>> {
     let mut out: Vec<Row<B>> = vec![s[k].clone()];
     for i in ((first + 1)..k).rev() {
         let prev = out.last().cloned().unwrap_or_default();
-        out.push(div(
-            &lin2(
-                Tracked::small(to_i(k)),
-                &s[i],
-                Tracked::small(-to_i(k - i)),
-                &prev,
-            ),
-            Tracked::small(to_i(i)),
-        ));
+        out.push(lin2_exact(f(k), &s[i], -f(k - i), &prev, f(i)));
     }
     out.reverse();
     out
 }
 
-/// Inverse elevation of a degenerate polygon (eq. 14.2.3, forward).
+/// Inverse elevation of a degenerate polygon (eq. 14.2.3): exactly of degree `k-1`, so the
+/// forward and the backward recursion give the same points in exact arithmetic; each is
+/// used on the half where it does not amplify rounding (Forrest's split).
 fn inverse_elevation<B: Base>(pbar: &[Row<B>]) -> Vec<Row<B>> {
-    let k = pbar.len() - 1;
-    forward(pbar, k - 1)
+    let n = pbar.len() - 2;
+    let b0 = n / 2 + 1;
+    let mut out = forward(pbar, n / 2);
+    if b0 <= n {
+        out.extend(backward(pbar, b0));
+    }
+    out
 }
 
 /// The step `k -> k-1` of a one-degree method on the rows `s` (`k + 1` of them).
@@ -110,19 +113,8 @@ pub(crate) fn step<B: Base>(method: Method, s: &[Row<B>]) -> Step<B> {
         }
         Method::Farin => {
             let (fwd, bwd) = (forward(s, n), backward(s, 0));
-            let nn = Tracked::small(to_i(n));
             let rows = (0..=n)
-                .map(|i| {
-                    div(
-                        &lin2(
-                            Tracked::small(to_i(n - i)),
-                            &fwd[i],
-                            Tracked::small(to_i(i)),
-                            &bwd[i],
-                        ),
-                        nn,
-                    )
-                })
+                .map(|i| lin2_exact(f(n - i), &fwd[i], f(i), &bwd[i], f(n)))
                 .collect();
             Step {
                 rows,
@@ -260,9 +252,8 @@ pub(crate) fn residual_coef<B: Base>(method: Method, k: usize) -> Option<f64> {
         }
     }
     // The step on the single column e_0.
-    let e0: Vec<Row<B>> = identity::<B>(k + 1)
-        .into_iter()
-        .map(|row| vec![row[0]])
+    let e0: Vec<Row<B>> = (0..=k)
+        .map(|i| vec![Tracked::of(if i == 0 { 1.0 } else { 0.0 })])
         .collect();
     let q: Vec<Tracked<B>> = step(method, &e0).rows.iter().map(|r| r[0]).collect();
     // Residual column 0: e_0 - E q; r_i = res_i / c_0, c_0 = (-1)^k.

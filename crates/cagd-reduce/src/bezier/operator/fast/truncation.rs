@@ -60,9 +60,9 @@ fn coefficients<B: Base>(family: Family, k: i64) -> Vec<Tracked<B>> {
         .collect()
 }
 
-/// `(N+1) x (N+1)`: row `k` is the functional giving the `k`-th expansion coefficient of a
-/// degree-`N` polynomial from its Bernstein coefficients.
-fn functionals<B: Base>(family: Family, nn: i64) -> Vec<Row<B>> {
+/// `(last+1) x (N+1)`: row `k` is the functional giving the `k`-th expansion coefficient of
+/// a degree-`N` polynomial from its Bernstein coefficients, `k = 0..=last`.
+fn functionals<B: Base>(family: Family, nn: i64, last: i64) -> Vec<Row<B>> {
     // w_i = C(2i,i)/4^i for i <= 2N (Chebyshev only).
     let mut w: Vec<Tracked<B>> = vec![Tracked::of(1.0)];
     if let Family::Chebyshev = family {
@@ -74,7 +74,7 @@ fn functionals<B: Base>(family: Family, nn: i64) -> Vec<Row<B>> {
             );
         }
     }
-    (0..=nn)
+    (0..=last)
         .map(|k| {
             let kk = nn + k;
             let c = coefficients::<B>(family, k);
@@ -147,7 +147,9 @@ pub(crate) fn truncated<B: Base>(
     let mut terms = Vec::new();
     if ri + pi + 1 < mi {
         let (nn, mm) = (ni - (ri + pi + 2), mi - (ri + pi + 2));
-        let phi = functionals::<B>(family, nn);
+        // The bound terms need every coefficient, the operator only the kept ones.
+        let last = if factor.is_some() { nn } else { mm };
+        let phi = functionals::<B>(family, nn, last);
         // Coefficient functionals on P: f_k = sum_i phi_ki P^II_i (P^II = P when r = p = -1).
         let f: Vec<Row<B>> = if ri == -1 && pi == -1 {
             phi
