@@ -78,11 +78,12 @@ fn rows_of<B: Base>(
     })
 }
 
-/// Rounds the rows and checks the proven errors against [`TOLERANCE`].
+/// Rounds the rows and checks the proven errors against `tol` (relative).
 fn finish<B: Base>(
     rows: &[Row<B>],
     terms: &[(f64, Row<B>)],
     route: OperatorRoute,
+    tol: f64,
 ) -> Option<Built> {
     let mut matrix = Vec::with_capacity(rows.len() * rows.first().map_or(0, Vec::len));
     let (mut error, mut norm) = (0.0f64, 0.0f64);
@@ -96,7 +97,7 @@ fn finish<B: Base>(
         error = error.max(e);
         norm = norm.max(s);
     }
-    let ok = |e: f64, s: f64| e.is_finite() && e <= TOLERANCE * s;
+    let ok = |e: f64, s: f64| e.is_finite() && e <= tol * s;
     if !ok(error, norm) || !matrix.iter().all(|x| x.is_finite()) {
         return None;
     }
@@ -123,13 +124,24 @@ fn finish<B: Base>(
 /// The operator of `method` (`n -> m`, preconditions checked by the caller) by the first
 /// route whose proven error is within [`TOLERANCE`]: `f64`, then double-word; `None` if
 /// neither is (or the method has no fast route), and the caller uses the exact route.
+///
+/// A method with its own bound terms takes the `f64` route only if its proven error is
+/// within `2 (n+3) eps` of the inf-norm, the rounding allowance `Operator::own_bound` already
+/// makes, so that adding the construction error leaves the reported bounds as tight as the
+/// exact route's; otherwise the double-word route, whose errors are at the rounding level.
 pub(crate) fn build(method: Method, n: usize, m: usize) -> Option<Built> {
     let (rows, terms) = rows_of::<f64>(method, n, m)?;
-    if let Some(b) = finish(&rows, &terms, OperatorRoute::F64) {
+    #[allow(clippy::cast_precision_loss, reason = "n <= 64")]
+    let tol = if terms.is_empty() {
+        TOLERANCE
+    } else {
+        2.0 * (n as f64 + 3.0) * f64::EPSILON
+    };
+    if let Some(b) = finish(&rows, &terms, OperatorRoute::F64, tol) {
         return Some(b);
     }
     let (rows, terms) = rows_of::<dd::Dd>(method, n, m)?;
-    finish(&rows, &terms, OperatorRoute::DoubleWord)
+    finish(&rows, &terms, OperatorRoute::DoubleWord, TOLERANCE)
 }
 
 #[cfg(test)]
