@@ -60,6 +60,40 @@ fn coefficients<B: Base>(family: Family, k: i64) -> Vec<Tracked<B>> {
         .collect()
 }
 
+/// `c_l` as exact integers when they fit an `i128` (`None` otherwise).
+fn integer_coefficients(family: Family, k: i64) -> Option<Vec<i128>> {
+    let b = |n: i64, k: i64| -> Option<i128> {
+        if n < 0 || k < 0 || k > n {
+            return Some(0);
+        }
+        i128::try_from(cagd_core::binomial(idx(n), idx(k))).ok()
+    };
+    (0..=k)
+        .map(|l| {
+            let c = match family {
+                Family::Chebyshev => b(2 * k, 2 * l)?,
+                Family::Jacobi { a, b: bb } => b(k + a, k - l)?.checked_mul(b(k + bb, l)?)?,
+            };
+            Some(if (k - l) % 2 == 0 { c } else { -c })
+        })
+        .collect()
+}
+
+/// `sum_l c_l C(d, s - l)` exactly in `i128` (then rounded once), `None` on overflow.
+fn elevated_exact<B: Base>(c: &[i128], d: i64, s: i64) -> Option<Tracked<B>> {
+    let mut acc: i128 = 0;
+    for (l, cl) in c.iter().enumerate() {
+        let t = s - to_i(l);
+        if t < 0 || t > d {
+            continue;
+        }
+        let bin = i128::try_from(cagd_core::binomial(idx(d), idx(t))).ok()?;
+        acc = acc.checked_add(cl.checked_mul(bin)?)?;
+    }
+    let t = Tracked::<B>::int(acc.unsigned_abs());
+    Some(if acc < 0 { t.neg() } else { t })
+}
+
 /// `(last+1) x (N+1)`: row `k` is the functional giving the `k`-th expansion coefficient of
 /// a degree-`N` polynomial from its Bernstein coefficients, `k = 0..=last`.
 fn functionals<B: Base>(family: Family, nn: i64, last: i64) -> Vec<Row<B>> {
@@ -113,16 +147,24 @@ fn functionals<B: Base>(family: Family, nn: i64, last: i64) -> Vec<Row<B>> {
 
 /// `sum_{k<=M} p_k(coefficients in degree M) f_k`: the rows of `U` (degree `M`) from the
 /// kept coefficient functionals `f_0..f_M`.
-fn back_to_bernstein<B: Base>(family: Family, mm: i64, f: &[Row<B>]) -> Vec<Row<B>> {
+/// Only rows `s <= last` are computed (the others are left zero).
+fn back_to_bernstein<B: Base>(family: Family, mm: i64, last: i64, f: &[Row<B>]) -> Vec<Row<B>> {
     let len = f.first().map_or(0, Vec::len);
     let mut out: Vec<Row<B>> = vec![vec![zero(); len]; idx(mm) + 1];
     for k in 0..=mm {
         let c = coefficients::<B>(family, k);
-        for s in 0..=mm {
-            let mut coef = zero::<B>();
-            for (l, cl) in c.iter().enumerate() {
-                coef = coef.fma(*cl, Tracked::binom(mm - k, s - to_i(l)));
-            }
+        let ci = integer_coefficients(family, k);
+        for s in 0..=last {
+            let coef = match ci.as_ref().and_then(|ci| elevated_exact(ci, mm - k, s)) {
+                Some(x) => x,
+                None => {
+                    let mut coef = zero::<B>();
+                    for (l, cl) in c.iter().enumerate() {
+                        coef = coef.fma(*cl, Tracked::binom(mm - k, s - to_i(l)));
+                    }
+                    coef
+                }
+            };
             let coef = coef.div(Tracked::binom(mm, s));
             axpy(&mut out[idx(s)], coef, &f[idx(k)]);
         }
@@ -173,9 +215,24 @@ pub(crate) fn truncated<B: Base>(
                 })
                 .collect()
         };
-        let u = back_to_bernstein(family, mm, &f[..=idx(mm)]);
+        // A symmetric problem (`r = p`, a symmetric weight) has a centro-symmetric operator,
+        // `a_(m-i, n-j) = a_ij`: the second half of the interior rows mirrors the first
+        // (the mirrored error bounds hold for the mirrored exact entries).
+        let symmetric = ri == pi
+            && match family {
+                Family::Chebyshev => true,
+                Family::Jacobi { a, b } => a == b,
+            };
+        let last_i = if symmetric { mi / 2 } else { mi - pi - 1 };
+        let u = back_to_bernstein(family, mm, last_i - ri - 1, &f[..=idx(mm)]);
         // Q_i = U_{i-r-1} C(M, i-r-1) / C(m, i)   (14.5.16)
         for i in (ri + 1)..=(mi - pi - 1) {
+            if i > last_i {
+                let mut row = rows[idx(mi - i)].clone();
+                row.reverse();
+                rows.push(row);
+                continue;
+            }
             let s = i - ri - 1;
             rows.push(scale(
                 &u[idx(s)],
