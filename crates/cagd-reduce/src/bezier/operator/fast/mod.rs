@@ -16,7 +16,7 @@ mod steps;
 mod tracked;
 mod truncation;
 
-use rows::Row;
+use rows::{Row, Rows};
 use tracked::Base;
 use truncation::{Family, truncated};
 
@@ -51,11 +51,7 @@ pub(crate) struct Built {
 
 /// The rows and terms of `method` in base arithmetic `B`; `None` if the method has no fast
 /// route (the generalized inverse with fixed ends).
-fn rows_of<B: Base>(
-    method: Method,
-    n: usize,
-    m: usize,
-) -> Option<(Vec<Row<B>>, Vec<(f64, Row<B>)>)> {
+fn rows_of<B: Base>(method: Method, n: usize, m: usize) -> Option<Rows<B>> {
     if method.is_one_degree() {
         return Some(steps::stepwise(method, n, m));
     }

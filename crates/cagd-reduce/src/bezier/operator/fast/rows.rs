@@ -10,6 +10,9 @@ use super::tracked::{Base, Tracked};
 /// A linear functional of the input points.
 pub(crate) type Row<B> = Vec<Tracked<B>>;
 
+/// The rows of an operator and its own-bound terms `(coef, functional)`.
+pub(crate) type Rows<B> = (Vec<Row<B>>, Vec<(f64, Row<B>)>);
+
 /// `0` as a tracked number.
 pub(crate) fn zero<B: Base>() -> Tracked<B> {
     Tracked::of(0.0)

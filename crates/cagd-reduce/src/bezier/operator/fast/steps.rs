@@ -5,7 +5,7 @@
 //! operations, never a dense matrix product.
 
 use super::rows::{
-    Row, auxiliary, div, end_points, identity, idx, lin2, lin2_exact, scale, to_i, zero,
+    Row, Rows, auxiliary, div, end_points, identity, idx, lin2, lin2_exact, scale, to_i, zero,
 };
 use super::tracked::{Base, Tracked};
 use crate::bezier::method::Method;
@@ -44,10 +44,10 @@ fn delta_k<B: Base>(s: &[Row<B>]) -> Row<B> {
 fn forward<B: Base>(s: &[Row<B>], last: usize) -> Vec<Row<B>> {
     let k = s.len() - 1;
     let mut out: Vec<Row<B>> = Vec::with_capacity(last + 1);
-    for i in 0..=last {
+    for (i, si) in s.iter().enumerate().take(last + 1) {
         let v = match out.last() {
-            None => s[i].clone(),
-            Some(prev) => lin2_exact(f(k), &s[i], -f(i), prev, f(k - i)),
+            None => si.clone(),
+            Some(prev) => lin2_exact(f(k), si, -f(i), prev, f(k - i)),
         };
         out.push(v);
     }
@@ -275,11 +275,7 @@ pub(crate) fn residual_coef<B: Base>(method: Method, k: usize) -> Option<f64> {
 
 /// The stepwise operator `n -> m`: rows (`m + 1`) and the summed own-bound terms (dropped,
 /// like the exact route, if one step has none).
-pub(crate) fn stepwise<B: Base>(
-    method: Method,
-    n: usize,
-    m: usize,
-) -> (Vec<Row<B>>, Vec<(f64, Row<B>)>) {
+pub(crate) fn stepwise<B: Base>(method: Method, n: usize, m: usize) -> Rows<B> {
     let mut s = identity::<B>(n + 1);
     let mut terms = Vec::new();
     let mut valid = true;
@@ -287,7 +283,9 @@ pub(crate) fn stepwise<B: Base>(
         let st = step(method, &s);
         if valid {
             if st.terms.is_empty() {
-                match residual_coef::<B>(method, k) {
+                // O(k) work: always in double-word, so the coefficient is tight even when
+                // it is tiny beside the step's entries.
+                match residual_coef::<super::dd::Dd>(method, k) {
                     Some(c) => terms.push((c, delta_k(&s))),
                     None => valid = false,
                 }

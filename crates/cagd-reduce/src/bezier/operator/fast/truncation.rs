@@ -28,7 +28,7 @@
 //! - Back to degree `M`: the coefficient of `B_s^M` in `p_k` is
 //!   `sum_l c_l C(M-k, s-l) / C(M, s)` (degree elevation).
 
-use super::rows::{Row, auxiliary, axpy, end_points, identity, idx, scale, to_i, zero};
+use super::rows::{Row, Rows, auxiliary, axpy, end_points, identity, idx, scale, to_i, zero};
 use super::tracked::{Base, Tracked};
 
 /// The orthogonal family of a truncation.
@@ -181,7 +181,7 @@ pub(crate) fn truncated<B: Base>(
     r: i32,
     p: i32,
     factor: Option<f64>,
-) -> (Vec<Row<B>>, Vec<(f64, Row<B>)>) {
+) -> Rows<B> {
     let input = identity::<B>(n + 1);
     let (left, right) = end_points(n, m, r, p, &input);
     let (ni, mi, ri, pi) = (to_i(n), to_i(m), i64::from(r), i64::from(p));
