@@ -50,10 +50,23 @@
 //!
 //! ## How the operators are computed
 //!
-//! Every operator is computed in exact rational arithmetic (`BigRational`) from the seed's
-//! formulas — closed forms, the exact Gram / normal systems of the least-squares methods,
-//! exact Bernstein <-> Chebyshev conversions — and rounded to `f64` once, then cached per
-//! `(method, n, m, r, p)`. No normal equations are formed in floating point.
+//! Each operator is built once per `(method, n, m, r, p)` and cached ([`operator`]). The
+//! fast routes (beyond the seed) run the seed's one-degree recursions step by step on rows of
+//! functionals (never dense matrix products) and, for the multi-degree methods, closed
+//! forms: Watkins–Worsey, Bogacki–Weinstein–Xu and the constrained Chebyshev reduction
+//! truncate the Chebyshev series of the deflated residual (seed 000 eqs. 14.5.14–14.5.16);
+//! the L2 operators (free = generalized inverse, and with `C^(r,p)` ends) truncate its
+//! series in the Jacobi polynomials orthogonal for `t^(2r+2) (1-t)^(2p+2)` — closed-form
+//! Bernstein coefficients and moments, no Gram or normal system. They run in `f64`, or in
+//! double-word arithmetic where `f64` is not accurate enough, every number carrying a
+//! rigorous running error bound; a route is taken only if its proven error is at most
+//! `1e-12 ||A||_inf` per row (for methods with their own bound terms, `f64` only at the
+//! rounding level `2 (n+3) eps`). Otherwise — and always for the generalized inverse with
+//! fixed ends — the exact rational route (`BigRational`: the seed's formulas, exact Gram
+//! and normal systems, exact Bernstein <-> Chebyshev conversions) rounded once, which is
+//! also the test oracle. [`Operator::route`] says which route built an operator and
+//! [`Operator::construction_error`] gives its proven error, which the method's own bound
+//! includes. No normal equations are formed in floating point.
 //!
 //! ## Certified bounds
 //!
@@ -68,9 +81,9 @@
 //! ## Supported range and accuracy
 //!
 //! Degrees `0..=64` ([`cagd_core::MAX_DEGREE`]) for every method and every `m < n`
-//! (larger degrees are [`Error::DegreeOutOfRange`]). Each operator entry is the exact
-//! rational value rounded once, so the operator is correct to 1 ulp per entry for every
-//! supported `(n, m)`; applying it costs about `(n + 1) eps ||A||_inf` relative to the
+//! (larger degrees are [`Error::DegreeOutOfRange`]). Each operator entry is within
+//! `1e-12 ||A||_inf` of the exact rational value (proven on the fast routes, 1 ulp on the
+//! exact route; measured against the exact route, see below); applying it costs about `(n + 1) eps ||A||_inf` relative to the
 //! control-point size ([`Operator::norm_inf`]; the amplification is intrinsic to the
 //! problem for `m ~ n/2`, SPEC-reduce §6).
 //!
