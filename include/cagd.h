@@ -5173,8 +5173,14 @@ CagdStatus cagd_curve_reduce_g1_optimal(const struct CagdCurve *curve,
 
 /**
  * Copies the reduction matrix of `opts->method` (with `r`, `p`, `l1`, `l2`) from degree
- * `degree` to `opts->target`: computed once in exact rational arithmetic, rounded once,
- * cached process-wide. Row-major `(target + 1) x (degree + 1)`: the reduced points are
+ * `degree` to `opts->target`, built on first use and cached process-wide. Route: closed
+ * forms and the seed's recursions in double or double-word arithmetic, each number
+ * carrying a rigorous error bound, accepted only when the proven error of every row is at
+ * most `1e-12` times the matrix's inf-norm `max_i sum_j |a_ij|`; otherwise (and for the
+ * generalized inverse with fixed ends) exact rational arithmetic rounded once. So every
+ * entry is within `1e-12 * max_i sum_j |a_ij|` of the exact value (measured against the
+ * exact route up to degree 64: at most `1.1e-14` relative to the inf-norm). Row-major
+ * `(target + 1) x (degree + 1)`: the reduced points are
  * `Q_i = sum_j out[i * (degree + 1) + j] P_j`, per coordinate (homogeneous coordinates for
  * a rational curve). For applying it yourself, e.g. on a GPU.
  *

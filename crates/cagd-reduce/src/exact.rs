@@ -6,7 +6,7 @@
 use cagd_core::{Error, ExactMatrix, Result, binomial};
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{One, Signed, ToPrimitive, Zero};
+use num_traits::{One, ToPrimitive, Zero};
 
 /// Exact rational number.
 pub(crate) type Q = BigRational;
@@ -129,14 +129,6 @@ impl RatMat {
         (0..self.nrows())
             .flat_map(|i| self.row(i).iter().map(q_to_f64))
             .collect()
-    }
-
-    /// `max_i sum_j |a_ij|` (the infinity norm), rounded up generously.
-    pub(crate) fn inf_norm(&self) -> f64 {
-        (0..self.nrows())
-            .map(|i| self.row(i).iter().map(|x| q_to_f64(&x.abs())).sum::<f64>())
-            .fold(0.0, f64::max)
-            * (1.0 + 1e-12)
     }
 }
 

@@ -50,10 +50,23 @@
 //!
 //! ## How the operators are computed
 //!
-//! Every operator is computed in exact rational arithmetic (`BigRational`) from the seed's
-//! formulas — closed forms, the exact Gram / normal systems of the least-squares methods,
-//! exact Bernstein <-> Chebyshev conversions — and rounded to `f64` once, then cached per
-//! `(method, n, m, r, p)`. No normal equations are formed in floating point.
+//! Each operator is built once per `(method, n, m, r, p)` and cached ([`operator`]). The
+//! fast routes (beyond the seed) run the seed's one-degree recursions step by step on rows of
+//! functionals (never dense matrix products) and, for the multi-degree methods, closed
+//! forms: Watkins–Worsey, Bogacki–Weinstein–Xu and the constrained Chebyshev reduction
+//! truncate the Chebyshev series of the deflated residual (seed 000 eqs. 14.5.14–14.5.16);
+//! the L2 operators (free = generalized inverse, and with `C^(r,p)` ends) truncate its
+//! series in the Jacobi polynomials orthogonal for `t^(2r+2) (1-t)^(2p+2)` — closed-form
+//! Bernstein coefficients and moments, no Gram or normal system. They run in `f64`, or in
+//! double-word arithmetic where `f64` is not accurate enough, every number carrying a
+//! rigorous running error bound; a route is taken only if its proven error is at most
+//! `1e-12 ||A||_inf` per row (for methods with their own bound terms, `f64` only at the
+//! rounding level `2 (n+3) eps`). Otherwise — and always for the generalized inverse with
+//! fixed ends — the exact rational route (`BigRational`: the seed's formulas, exact Gram
+//! and normal systems, exact Bernstein <-> Chebyshev conversions) rounded once, which is
+//! also the test oracle. [`Operator::route`] says which route built an operator and
+//! [`Operator::construction_error`] gives its proven error, which the method's own bound
+//! includes. No normal equations are formed in floating point.
 //!
 //! ## Certified bounds
 //!
@@ -68,9 +81,9 @@
 //! ## Supported range and accuracy
 //!
 //! Degrees `0..=64` ([`cagd_core::MAX_DEGREE`]) for every method and every `m < n`
-//! (larger degrees are [`Error::DegreeOutOfRange`]). Each operator entry is the exact
-//! rational value rounded once, so the operator is correct to 1 ulp per entry for every
-//! supported `(n, m)`; applying it costs about `(n + 1) eps ||A||_inf` relative to the
+//! (larger degrees are [`Error::DegreeOutOfRange`]). Each operator entry is within
+//! `1e-12 ||A||_inf` of the exact rational value (proven on the fast routes, 1 ulp on the
+//! exact route; measured against the exact route, see below); applying it costs about `(n + 1) eps ||A||_inf` relative to the
 //! control-point size ([`Operator::norm_inf`]; the amplification is intrinsic to the
 //! problem for `m ~ n/2`, SPEC-reduce §6).
 //!
@@ -81,10 +94,22 @@
 //! `(r,p) = (2,2)`, constrained Chebyshev `(1,1)`, Forrest; `m = 60` for perturbation and
 //! BWX). The required 1e-10 is met with five orders of magnitude to spare.
 //!
-//! Building an operator is a one-time cost per `(method, n, m)` (then cached); measured in a
-//! debug build: `n = 40 -> 20` 0.1–1.4 s, `n = 64 -> 32` 1.2 s (Forrest), 1.5 s (generalized
-//! inverse / L2), 3.4 s (constrained Chebyshev), 17 s (generalized inverse with ends, the
-//! largest exact normal system). Release builds are several times faster.
+//! Fast routes against the exact oracle (unit tests in `bezier/operator/fast/tests.rs`:
+//! every pair `n <= 16` in the debug suite; the ignored sweep over `n` in 20, 30, 40, 50, 64
+//! with eight `m` each, run in release): the largest entrywise error relative to
+//! `||A||_inf` is 1.1e-14 (L2 with ends, `f64` route at `n <= 16`), 4.9e-15 (generalized
+//! inverse) and below 2e-16 for every other method, and every proven bound held. Where no fast route proves 1e-12 the
+//! exact route is used: in the sweep, 2 to 13 of its 38 pairs per method, all at `n >= 40`
+//! with `m` near `n` (Chebyshev and L2 families) or far below it (one-degree steps).
+//!
+//! Building an operator is a one-time cost per `(method, n, m)` (then cached). Bench
+//! `operator_build` (release, 2-core machine shared with other jobs, medians of 9): L2 with
+//! C0 ends 1.9 / 3.8 / 6.6 / 65 / 83 / 207 µs at `(4,3) (5,4) (10,5) (15,10) (20,10)
+//! (30,15)` (exact route 81 µs / 87 µs / 0.2 / 1.2 / 1.8 / 14 ms), 1.7 ms at `64 -> 32`;
+//! Forrest 2.8–165 µs (exact 0.16–109 ms); the one-degree methods whose steps need
+//! double-word and the Chebyshev family 10–1200 µs. Pairs left to the exact route cost what
+//! they did: up to seconds at degree 64 (e.g. L2 `64 -> 63` 2 s, perturbation `64 -> 32`
+//! 10 s), 17 s debug for the generalized inverse with ends at `64 -> 32`.
 //!
 //! Certified bounds: `measured <= bound` is a property test for every method (and for
 //! rational curves in Euclidean space). Eck's and the perturbation bounds are the exact
@@ -193,11 +218,11 @@ pub use ball::{
 };
 pub use bezier::{
     BoundLevel, ChebyshevTerms, DEFAULT_MAX_DEPTH, DEFAULT_REL_TOL, ErrorSpace, MAX_PIECES, Method,
-    Operator, PiecewiseReduction, PiecewiseReport, ReduceOptions, ReducedPiece, Reduction, Report,
-    ToleranceOptions, constrained_chebyshev_terms, eck_lambdas, exact_degree, max_deviation,
-    operator, perturbation_error_factor, reduce, reduce_batch, reduce_batch_with_bounds,
-    reduce_exact, reduce_g1_optimal, reduce_to_tolerance, reduce_to_tolerance_alg_14_2_1,
-    reduce_with, subdivision_levels,
+    Operator, OperatorRoute, PiecewiseReduction, PiecewiseReport, ReduceOptions, ReducedPiece,
+    Reduction, Report, ToleranceOptions, build_operator, constrained_chebyshev_terms, eck_lambdas,
+    exact_degree, max_deviation, operator, perturbation_error_factor, reduce, reduce_batch,
+    reduce_batch_with_bounds, reduce_exact, reduce_g1_optimal, reduce_to_tolerance,
+    reduce_to_tolerance_alg_14_2_1, reduce_with, subdivision_levels,
 };
 pub use bspline::{
     BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy, MAX_SEGMENT_REDUCTIONS,

@@ -24,7 +24,10 @@ pub use exact_degree::{DEFAULT_REL_TOL, exact_degree, reduce_exact};
 pub use g1::reduce_g1_optimal;
 pub use measure::max_deviation;
 pub use method::Method;
-pub use operator::{ChebyshevTerms, Operator, constrained_chebyshev_terms, eck_lambdas, operator};
+pub use operator::{
+    ChebyshevTerms, Operator, OperatorRoute, build_operator, constrained_chebyshev_terms,
+    eck_lambdas, operator,
+};
 pub use reduce::{ErrorSpace, ReduceOptions, Reduction, Report, reduce, reduce_with};
 pub use tolerance::{
     DEFAULT_MAX_DEPTH, MAX_PIECES, PiecewiseReduction, PiecewiseReport, ReducedPiece,

@@ -83,6 +83,11 @@ pub(crate) fn constrained(n: usize, m: usize, r: i32, p: i32) -> Result<(RatMat,
     Ok((RatMat::from_rows(rows), terms))
 }
 
+/// [`bound_factor`] rounded up to `f64` (the fast route's term coefficient).
+pub(super) fn bound_factor_up(r: i32, p: i32) -> f64 {
+    up(&bound_factor(r, p))
+}
+
 /// The factor `(p+1)^(p+1) (r+1)^(r+1) / (p+r+2)^(p+r+2)` of Theorem 14.5.2's bound
 /// (`0^0 = 1`), exact.
 fn bound_factor(r: i32, p: i32) -> Q {

@@ -1,6 +1,9 @@
-//! Reduction operators: the exact `(m+1) x (n+1)` matrix of a linear method rounded once to
-//! `f64`, with the data for a cheap certified error bound, built once per
-//! `(method, n, m)` and cached process-wide.
+//! Reduction operators: the `(m+1) x (n+1)` matrix of a linear method in `f64`, with the
+//! data for a cheap certified error bound, built once per `(method, n, m)` and cached
+//! process-wide. Built by the fast routes of [`fast`] (closed forms and the seed's
+//! recursions in `f64` or double-word arithmetic with a proven error of at most `1e-13` of
+//! the operator's inf-norm), falling back to the exact rational route ([`exact_operator`],
+//! rounded once), which is also the test oracle.
 
 use std::collections::HashMap;
 use std::sync::{Arc, OnceLock, RwLock};
@@ -10,6 +13,7 @@ use cagd_core::{Error, Result};
 mod chebyshev;
 mod ends;
 mod error_map;
+mod fast;
 mod hull;
 mod least_squares;
 mod one_step;
@@ -23,6 +27,7 @@ use one_step::{residual_term, step};
 
 pub use chebyshev::{ChebyshevTerms, constrained_chebyshev_terms};
 pub(crate) use error_map::BoundMap;
+pub use fast::OperatorRoute;
 pub use one_step::eck_lambdas;
 
 /// One term `coef * ||sum_j g_j P_j||` of a method's own error bound.
@@ -30,13 +35,17 @@ pub use one_step::eck_lambdas;
 struct BoundTerm {
     coef: f64,
     functional: Vec<f64>,
+    /// Proven bound of `sum_j |functional_j - exact_j|` (0 on the exact route, where the
+    /// rounding is covered by `own_bound`'s allowance).
+    error: f64,
 }
 
 /// A linear degree-reduction operator from degree `n` to degree `m`: `Q_i = sum_j a_ij P_j`,
 /// applied coordinate-wise to points of any dimension (also to homogeneous points).
 ///
-/// Every entry is the exact rational value rounded once to `f64` (built in `BigRational`
-/// arithmetic; see the crate docs for the accuracy this gives).
+/// Every entry is within `1e-13 * ||A||_inf` of the exact rational value (a proven bound,
+/// [`Operator::construction_error`]; on the [`OperatorRoute::Exact`] route each entry is the
+/// exact value rounded once).
 #[derive(Debug, Clone)]
 pub struct Operator {
     method: Method,
@@ -51,6 +60,10 @@ pub struct Operator {
     op_norm: f64,
     /// `sum_t coef_t sum_j |g_tj|`.
     terms_norm: f64,
+    /// Proven bound of `max_i sum_j |a_ij - exact_ij|` beyond rounding once (0 on the exact
+    /// route).
+    construction_error: f64,
+    route: OperatorRoute,
 }
 
 type Key = ((u8, u64, u64), usize, usize);
@@ -74,13 +87,23 @@ pub fn operator(method: Method, n: usize, m: usize) -> Result<Arc<Operator>> {
             return Ok(Arc::clone(op));
         }
     }
-    let op = Arc::new(Operator::build(method, n, m)?);
+    let op = Arc::new(Operator::build(method, n, m, false)?);
     // A poisoned lock only means another thread panicked while inserting: the map is still
     // a valid cache, so keep using it.
     let mut map = cache()
         .write()
         .unwrap_or_else(std::sync::PoisonError::into_inner);
     Ok(Arc::clone(map.entry(key).or_insert(op)))
+}
+
+/// Builds the operator of `method` (`n -> m`) afresh, without the cache: by the fast routes
+/// (falling back to the exact one) as [`operator`] does, or with `exact` by the exact
+/// rational route only. For measuring and testing construction; use [`operator`] otherwise.
+///
+/// # Errors
+/// As [`operator`].
+pub fn build_operator(method: Method, n: usize, m: usize, exact: bool) -> Result<Operator> {
+    Operator::build(method, n, m, exact)
 }
 
 /// The exact operator and bound terms of a method (before rounding).
@@ -137,16 +160,45 @@ pub(crate) fn exact_operator(
 }
 
 impl Operator {
-    fn build(method: Method, n: usize, m: usize) -> Result<Self> {
-        let (exact, terms) = exact_operator(method, n, m)?;
-        let op_norm = exact.inf_norm();
-        let terms: Vec<BoundTerm> = terms
-            .into_iter()
-            .map(|(coef, g)| BoundTerm {
-                coef,
-                functional: g.iter().map(crate::exact::q_to_f64).collect(),
-            })
-            .collect();
+    fn build(method: Method, n: usize, m: usize, exact_only: bool) -> Result<Self> {
+        method.check(n, m)?;
+        let fast = if exact_only {
+            None
+        } else {
+            fast::build(method, n, m)
+        };
+        let (matrix, terms, construction_error, route) = match fast {
+            Some(b) => {
+                let terms: Vec<BoundTerm> = b
+                    .terms
+                    .into_iter()
+                    .map(|(coef, functional, error)| BoundTerm {
+                        coef,
+                        functional,
+                        error,
+                    })
+                    .collect();
+                (b.matrix, terms, b.error, b.route)
+            }
+            None => {
+                let (exact, terms) = exact_operator(method, n, m)?;
+                let terms = terms
+                    .into_iter()
+                    .map(|(coef, g)| BoundTerm {
+                        coef,
+                        functional: g.iter().map(crate::exact::q_to_f64).collect(),
+                        error: 0.0,
+                    })
+                    .collect();
+                (exact.to_f64(), terms, 0.0, OperatorRoute::Exact)
+            }
+        };
+        // max_i sum_j |a_ij| of the f64 matrix, rounded up generously.
+        let op_norm = matrix
+            .chunks_exact(n + 1)
+            .map(|row| row.iter().map(|x| x.abs()).sum::<f64>())
+            .fold(0.0, f64::max)
+            * (1.0 + 1e-12);
         let terms_norm = terms
             .iter()
             .map(|t| t.coef * t.functional.iter().map(|x| x.abs()).sum::<f64>())
@@ -156,11 +208,13 @@ impl Operator {
             method,
             n,
             m,
-            map: LinearMap::new(m + 1, n + 1, exact.to_f64()),
+            map: LinearMap::new(m + 1, n + 1, matrix),
             terms,
             bound_maps: Default::default(),
             op_norm,
             terms_norm,
+            construction_error,
+            route,
         })
     }
 
@@ -177,6 +231,18 @@ impl Operator {
     /// The target degree `m`.
     pub fn degree_to(&self) -> usize {
         self.m
+    }
+
+    /// How the matrix was built.
+    pub fn route(&self) -> OperatorRoute {
+        self.route
+    }
+
+    /// A proven bound of `max_i sum_j |a_ij - exact_ij|` for the fast routes (at most
+    /// `1e-13` times [`Operator::norm_inf`]); `0` for the exact route, whose entries are the
+    /// exact values rounded once.
+    pub fn construction_error(&self) -> f64 {
+        self.construction_error
     }
 
     /// The matrix, row-major, `(m+1) x (n+1)`: `Q_i = sum_j matrix[i * (n+1) + j] P_j`.
@@ -208,7 +274,10 @@ impl Operator {
         let eps = f64::EPSILON;
         let pmax = max_norm(points, dim);
         let nf = self.n as f64;
-        // Method bound on the exact Q, plus the distance of the computed Q from it.
+        // Method bound on the exact Q, plus the distance of the computed Q from it: the
+        // rounding (exact entries rounded once) and the proven construction errors of the
+        // matrix and of the functionals (`sum_j |e_j| ||P_j|| <= sum_j |e_j| pmax`).
+        let mut construction = self.construction_error;
         let mut own = 0.0;
         let mut v = [0.0; 8];
         let mut heap;
@@ -226,10 +295,12 @@ impl Operator {
                 }
             }
             own += t.coef * v.iter().map(|x| x * x).sum::<f64>().sqrt();
+            construction += t.coef * t.error;
         }
         Some(
             own * (1.0 + 4.0 * eps)
-                + 2.0 * (nf + 3.0) * eps * (self.op_norm + self.terms_norm + 1.0) * pmax,
+                + 2.0 * (nf + 3.0) * eps * (self.op_norm + self.terms_norm + 1.0) * pmax
+                + construction * (1.0 + 4.0 * eps) * pmax,
         )
     }
 

@@ -1,0 +1,144 @@
+//! Fast construction of the reduction operators (goes beyond the seed): the same algorithms
+//! as the exact route (`super::exact_operator`, kept as the oracle) and closed forms for the
+//! multi-degree methods ([`truncation`]), run in `f64` and, where that is not accurate
+//! enough, in double-word arithmetic, every number carrying a rigorous bound of its error
+//! ([`tracked`]).
+//!
+//! A route is accepted only if its *proven* error is at most [`TOLERANCE`] relative to the
+//! operator's inf-norm (entrywise and per row sum) and to each bound functional's 1-norm;
+//! otherwise the next route is tried, and the exact route (`BigRational`) is the last resort.
+//! The proven errors travel with the operator (`Operator::own_bound` adds them), so a
+//! method's own bound stays a true bound for the matrix actually used.
+
+mod dd;
+mod rows;
+mod steps;
+mod tracked;
+mod truncation;
+
+use rows::{Row, Rows};
+use tracked::Base;
+use truncation::{Family, truncated};
+
+use crate::bezier::method::Method;
+
+/// The largest accepted proven error, relative to the operator's inf-norm (issue 17's
+/// accuracy goal); for the bound functionals, relative to `max(1, sum_t coef_t ||g_t||_1)`
+/// (their proven errors are added to the own bound, so they only cost tightness).
+pub(crate) const TOLERANCE: f64 = 1e-12;
+
+/// How an operator was built.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum OperatorRoute {
+    /// `f64` arithmetic with a proven error bound.
+    F64,
+    /// Double-word (about 106-bit) arithmetic with a proven error bound.
+    DoubleWord,
+    /// Exact rational arithmetic, rounded once.
+    Exact,
+}
+
+/// A fast-built operator: the `f64` matrix, the proven bound of `max_i sum_j |a_ij - exact|`,
+/// and the bound terms `(coef, functional, proven sum_j |g_j - exact|)`.
+#[derive(Debug, Clone)]
+pub(crate) struct Built {
+    pub(crate) matrix: Vec<f64>,
+    pub(crate) error: f64,
+    pub(crate) terms: Vec<(f64, Vec<f64>, f64)>,
+    pub(crate) route: OperatorRoute,
+}
+
+/// The rows and terms of `method` in base arithmetic `B`; `None` if the method has no fast
+/// route (the generalized inverse with fixed ends).
+fn rows_of<B: Base>(method: Method, n: usize, m: usize) -> Option<Rows<B>> {
+    if method.is_one_degree() {
+        return Some(steps::stepwise(method, n, m));
+    }
+    let cheb = |r: i32, p: i32| {
+        let factor = super::chebyshev::bound_factor_up(r, p);
+        truncated(Family::Chebyshev, n, m, r, p, Some(factor))
+    };
+    Some(match method {
+        Method::WatkinsWorsey | Method::BogackiWeinsteinXu => cheb(-1, -1),
+        Method::ConstrainedChebyshev { r, p } => cheb(r, p),
+        Method::GeneralizedInverse => truncated(Family::Jacobi { a: 0, b: 0 }, n, m, -1, -1, None),
+        Method::L2 { r, p } => {
+            let family = Family::Jacobi {
+                a: 2 * i64::from(r) + 2,
+                b: 2 * i64::from(p) + 2,
+            };
+            truncated(family, n, m, r, p, None)
+        }
+        _ => return None,
+    })
+}
+
+/// Rounds the rows and checks the proven errors against `tol` (relative).
+fn finish<B: Base>(
+    rows: &[Row<B>],
+    terms: &[(f64, Row<B>)],
+    route: OperatorRoute,
+    tol: f64,
+) -> Option<Built> {
+    let mut matrix = Vec::with_capacity(rows.len() * rows.first().map_or(0, Vec::len));
+    let (mut error, mut norm) = (0.0f64, 0.0f64);
+    for row in rows {
+        let (mut e, mut s) = (0.0, 0.0);
+        for x in row {
+            matrix.push(x.val());
+            e += x.err();
+            s += x.val().abs();
+        }
+        error = error.max(e);
+        norm = norm.max(s);
+    }
+    let ok = |e: f64, s: f64| e.is_finite() && e <= tol * s;
+    if !ok(error, norm) || !matrix.iter().all(|x| x.is_finite()) {
+        return None;
+    }
+    let mut out = Vec::with_capacity(terms.len());
+    let (mut te, mut ts) = (0.0, 0.0);
+    for (coef, g) in terms {
+        let e: f64 = g.iter().map(|x| x.err()).sum();
+        let s: f64 = g.iter().map(|x| x.val().abs()).sum();
+        te += coef * e;
+        ts += coef * s;
+        out.push((*coef, g.iter().map(|x| x.val()).collect(), e * (1.0 + 1e-9)));
+    }
+    if !ok(te, ts.max(1.0)) {
+        return None;
+    }
+    Some(Built {
+        matrix,
+        error: error * (1.0 + 1e-9),
+        terms: out,
+        route,
+    })
+}
+
+/// The operator of `method` (`n -> m`, preconditions checked by the caller) by the first
+/// route whose proven error is within [`TOLERANCE`]: `f64`, then double-word; `None` if
+/// neither is (or the method has no fast route), and the caller uses the exact route.
+///
+/// A method with its own bound terms takes the `f64` route only if its proven error is
+/// within `2 (n+3) eps` of the inf-norm, the rounding allowance `Operator::own_bound` already
+/// makes, so that adding the construction error leaves the reported bounds as tight as the
+/// exact route's; otherwise the double-word route, whose errors are at the rounding level.
+pub(crate) fn build(method: Method, n: usize, m: usize) -> Option<Built> {
+    let (rows, terms) = rows_of::<f64>(method, n, m)?;
+    #[allow(clippy::cast_precision_loss, reason = "n <= 64")]
+    let tol = if terms.is_empty() {
+        TOLERANCE
+    } else {
+        2.0 * (n as f64 + 3.0) * f64::EPSILON
+    };
+    if let Some(b) = finish(&rows, &terms, OperatorRoute::F64, tol) {
+        return Some(b);
+    }
+    let (rows, terms) = rows_of::<dd::Dd>(method, n, m)?;
+    finish(&rows, &terms, OperatorRoute::DoubleWord, TOLERANCE)
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,302 @@
+//! The one-degree methods (Forrest, Piegl–Tiller, Farin, Eck, perturbation with fixed and
+//! with G1 ends; SPEC-reduce §2.1, §2.3, §3, §7) on tracked rows: the twins of
+//! `../one_step.rs`. A step `k -> k-1` runs the seed's recursion on the rows of the previous
+//! step (functionals of the original points), so composing the steps is `O(n^2 (n - m))`
+//! operations, never a dense matrix product.
+
+use super::rows::{
+    Row, Rows, auxiliary, div, end_points, identity, idx, lin2, lin2_exact, scale, to_i, zero,
+};
+use super::tracked::{Base, Tracked};
+use crate::bezier::method::Method;
+
+/// One step's output rows and its bound terms `(exact coefficient or None, functional)`.
+pub(crate) struct Step<B> {
+    pub(crate) rows: Vec<Row<B>>,
+    /// `(coef, g)`: the term `coef ||g . P||` of the step's own bound, `g` a functional of
+    /// the original points; `coef` is an `f64` upper bound.
+    pub(crate) terms: Vec<(f64, Row<B>)>,
+}
+
+/// A small index as an exact `f64`.
+#[allow(clippy::cast_precision_loss, reason = "indices <= 130")]
+fn f(i: usize) -> f64 {
+    i as f64
+}
+
+/// `(-1)^(k-i) C(k,i)`.
+fn sign_binom<B: Base>(k: usize, i: usize) -> Tracked<B> {
+    let c = Tracked::binom(to_i(k), to_i(i));
+    if (k - i) % 2 == 0 { c } else { c.neg() }
+}
+
+/// `sum_i (-1)^(k-i) C(k,i) s_i` = `Delta^k` of the rows.
+fn delta_k<B: Base>(s: &[Row<B>]) -> Row<B> {
+    let k = s.len() - 1;
+    let mut f = vec![zero(); s[0].len()];
+    for (i, row) in s.iter().enumerate() {
+        super::rows::axpy(&mut f, sign_binom(k, i), row);
+    }
+    f
+}
+
+/// Forward recursion `P^I_i = (k s_i - i P^I_{i-1}) / (k - i)`, `i = 0..=last`.
+fn forward<B: Base>(s: &[Row<B>], last: usize) -> Vec<Row<B>> {
+    let k = s.len() - 1;
+    let mut out: Vec<Row<B>> = Vec::with_capacity(last + 1);
+    for (i, si) in s.iter().enumerate().take(last + 1) {
+        let v = match out.last() {
+            None => si.clone(),
+            Some(prev) => lin2_exact(f(k), si, -f(i), prev, f(k - i)),
+        };
+        out.push(v);
+    }
+    out
+}
+
+/// Backward recursion `P^II_{i-1} = (k s_i - (k - i) P^II_i) / i`, `P^II_{k-1} = s_k`, down
+/// to index `first`; entry `i - first` holds `P^II_i`.
+fn backward<B: Base>(s: &[Row<B>], first: usize) -> Vec<Row<B>> {
+    let k = s.len() - 1;
+    let mut out: Vec<Row<B>> = vec![s[k].clone()];
+    for i in ((first + 1)..k).rev() {
+        let prev = out.last().cloned().unwrap_or_default();
+        out.push(lin2_exact(f(k), &s[i], -f(k - i), &prev, f(i)));
+    }
+    out.reverse();
+    out
+}
+
+/// Inverse elevation of a degenerate polygon (eq. 14.2.3): exactly of degree `k-1`, so the
+/// forward and the backward recursion give the same points in exact arithmetic; each is
+/// used on the half where it does not amplify rounding (Forrest's split).
+fn inverse_elevation<B: Base>(pbar: &[Row<B>]) -> Vec<Row<B>> {
+    let n = pbar.len() - 2;
+    let b0 = n / 2 + 1;
+    let mut out = forward(pbar, n / 2);
+    if b0 <= n {
+        out.extend(backward(pbar, b0));
+    }
+    out
+}
+
+/// The step `k -> k-1` of a one-degree method on the rows `s` (`k + 1` of them).
+pub(crate) fn step<B: Base>(method: Method, s: &[Row<B>]) -> Step<B> {
+    let k = s.len() - 1;
+    let n = k - 1;
+    let half = |x: Tracked<B>| x.mul(Tracked::of(0.5));
+    match method {
+        Method::Forrest => {
+            let fwd = forward(s, n / 2);
+            let first = n.div_ceil(2);
+            let bwd = backward(s, first.min(n / 2));
+            let b0 = first.min(n / 2);
+            let rows = (0..=n)
+                .map(|i| {
+                    if n % 2 == 0 && i == n / 2 {
+                        fwd[i]
+                            .iter()
+                            .zip(&bwd[i - b0])
+                            .map(|(x, y)| half(x.add(*y)))
+                            .collect()
+                    } else if 2 * i < n {
+                        fwd[i].clone()
+                    } else {
+                        bwd[i - b0].clone()
+                    }
+                })
+                .collect();
+            Step {
+                rows,
+                terms: Vec::new(),
+            }
+        }
+        Method::Farin => {
+            let (fwd, bwd) = (forward(s, n), backward(s, 0));
+            let rows = (0..=n)
+                .map(|i| lin2_exact(f(n - i), &fwd[i], f(i), &bwd[i], f(n)))
+                .collect();
+            Step {
+                rows,
+                terms: Vec::new(),
+            }
+        }
+        Method::Eck => {
+            let (fwd, bwd) = (forward(s, n), backward(s, 0));
+            // lambda_i = S_i / 2^(2n+1), S_i = sum_{j<=i} C(2n+2, 2j) (an exact u128).
+            let scale_e = Tracked::of(2f64.powi(-(2 * i32::try_from(n).unwrap_or(0) + 1)));
+            let total = 1u128 << (2 * n + 1);
+            let mut acc = 0u128;
+            let rows = (0..=n)
+                .map(|i| {
+                    acc += cagd_core::binomial(2 * n + 2, 2 * i);
+                    let lambda = Tracked::int(acc).mul(scale_e);
+                    let one_minus = Tracked::int(total - acc).mul(scale_e);
+                    lin2(one_minus, &fwd[i], lambda, &bwd[i])
+                })
+                .collect();
+            let coef =
+                2f64.powi(-(2 * i32::try_from(n).unwrap_or(0) + 1)) * (1.0 + 4.0 * f64::EPSILON);
+            Step {
+                rows,
+                terms: vec![(coef, delta_k(s))],
+            }
+        }
+        Method::Perturb => {
+            let f = delta_k(s);
+            let d = Tracked::binom(2 * to_i(k), to_i(k)).sub(Tracked::of(2.0));
+            let pbar: Vec<Row<B>> = (0..=k)
+                .map(|i| {
+                    if i > 0 && i < k {
+                        let c = sign_binom::<B>(k, i).div(d).neg();
+                        lin2(Tracked::of(1.0), &s[i], c, &f)
+                    } else {
+                        s[i].clone()
+                    }
+                })
+                .collect();
+            Step {
+                rows: inverse_elevation(&pbar),
+                terms: vec![(perturb_coef(k), f)],
+            }
+        }
+        Method::PerturbG1 { l1, l2 } => {
+            let f = delta_k(s);
+            let ki = to_i(k);
+            let sd = Tracked::binom(2 * ki, ki).sub(Tracked::small(2 + 2 * ki * ki));
+            let (l1, l2) = (Tracked::of(l1), Tracked::of(l2));
+            let one = Tracked::of(1.0);
+            let d1 = lin2(one, &s[1], one.neg(), &s[0]);
+            let d2 = lin2(one, &s[k - 1], one.neg(), &s[k]);
+            let mut fp = f;
+            super::rows::axpy(&mut fp, sign_binom::<B>(k, 1).mul(l1), &d1);
+            super::rows::axpy(&mut fp, sign_binom::<B>(k, k - 1).mul(l2), &d2);
+            let pbar: Vec<Row<B>> = (0..=k)
+                .map(|i| {
+                    if i == 1 {
+                        lin2(one, &s[1], l1, &d1)
+                    } else if i == k - 1 {
+                        lin2(one, &s[k - 1], l2, &d2)
+                    } else if i > 1 && i < k - 1 {
+                        lin2(one, &s[i], sign_binom::<B>(k, i).div(sd).neg(), &fp)
+                    } else {
+                        s[i].clone()
+                    }
+                })
+                .collect();
+            Step {
+                rows: inverse_elevation(&pbar),
+                terms: Vec::new(),
+            }
+        }
+        Method::PieglTiller => piegl_tiller(s),
+        // Multi-degree methods never come here (checked by the caller).
+        _ => Step {
+            rows: Vec::new(),
+            terms: Vec::new(),
+        },
+    }
+}
+
+/// The perturbation bound factor `W_k / (C(2k,k) - 2)` rounded up (as `one_step.rs`).
+fn perturb_coef(k: usize) -> f64 {
+    let d = crate::exact::binom_q(2 * to_i(k), to_i(k)) - crate::exact::frac(2, 1);
+    crate::bezier::wn_table::perturbation_error_factor(k) / crate::exact::q_to_f64(&d)
+        * (1.0 + 8.0 * f64::EPSILON)
+}
+
+/// Piegl–Tiller step (as `one_step::piegl_tiller`).
+fn piegl_tiller<B: Base>(s: &[Row<B>]) -> Step<B> {
+    let k = s.len() - 1;
+    let m = k - 1;
+    let o = (to_i(m) - 1).div_euclid(2);
+    let (r, p) = (i32::try_from(o).unwrap_or(0), i32::try_from(o).unwrap_or(0));
+    let (left, right) = end_points(k, m, r, p, s);
+    let mut rows = left.clone();
+    let mut terms = Vec::new();
+    if m % 2 == 0 {
+        let (ki, ri, mi, pi) = (to_i(k), i64::from(r), to_i(m), i64::from(p));
+        let mut ql = scale(&s[idx(ri + 1)], Tracked::small(ki));
+        if let Some(qr) = left.last() {
+            super::rows::axpy(&mut ql, Tracked::small(-(ri + 1)), qr);
+        }
+        let ql = div(&ql, Tracked::small(ki - (ri + 1)));
+        let mut qr = scale(&s[idx(mi - pi)], Tracked::small(ki));
+        if let Some(first) = right.first() {
+            super::rows::axpy(&mut qr, Tracked::small(-(ki - mi + pi)), first);
+        }
+        let qr = div(&qr, Tracked::small(mi - pi));
+        let h = Tracked::of(0.5);
+        rows.push(lin2(h, &ql, h, &qr));
+    } else {
+        let aux = auxiliary(k, m, r, p, &left, &right, s);
+        let ki = to_i(k);
+        let coef = crate::exact::binom_q(ki, ki / 2) * crate::exact::pow2(-ki);
+        if let Some(g) = aux.into_iter().next() {
+            terms.push((super::super::one_step::up(&coef), g));
+        }
+    }
+    rows.extend(right);
+    Step { rows, terms }
+}
+
+/// For a step without a bound of its own that reproduces degree `k-1` (every one-degree
+/// method but G1 with non-zero `l`): the residual `P - E Q` is `r_i Delta^k P_0` row by row
+/// (its kernel holds the elevated polygons), so `max_i |r_i|` (from the step applied to `e_0`,
+/// rounded up with its tracked error) is the exact convex-hull coefficient of the step
+/// (as `one_step::residual_term`). `None` for G1 with non-zero `l`.
+pub(crate) fn residual_coef<B: Base>(method: Method, k: usize) -> Option<f64> {
+    if let Method::PerturbG1 { l1, l2 } = method {
+        if l1 != 0.0 || l2 != 0.0 {
+            return None;
+        }
+    }
+    // The step on the single column e_0.
+    let e0: Vec<Row<B>> = (0..=k)
+        .map(|i| vec![Tracked::of(if i == 0 { 1.0 } else { 0.0 })])
+        .collect();
+    let q: Vec<Tracked<B>> = step(method, &e0).rows.iter().map(|r| r[0]).collect();
+    // Residual column 0: e_0 - E q; r_i = res_i / c_0, c_0 = (-1)^k.
+    let kk = Tracked::small(to_i(k));
+    let mut coef = 0.0f64;
+    for i in 0..=k {
+        let mut el = zero::<B>();
+        if i > 0 {
+            el = el.fma(Tracked::small(to_i(i)).div(kk), q[i - 1]);
+        }
+        if i < k {
+            el = el.fma(Tracked::small(to_i(k - i)).div(kk), q[i]);
+        }
+        let res = Tracked::of(if i == 0 { 1.0 } else { 0.0 }).sub(el);
+        coef = coef.max(res.val().abs() + res.err());
+    }
+    Some(coef * (1.0 + 4.0 * f64::EPSILON))
+}
+
+/// The stepwise operator `n -> m`: rows (`m + 1`) and the summed own-bound terms (dropped,
+/// like the exact route, if one step has none).
+pub(crate) fn stepwise<B: Base>(method: Method, n: usize, m: usize) -> Rows<B> {
+    let mut s = identity::<B>(n + 1);
+    let mut terms = Vec::new();
+    let mut valid = true;
+    for k in ((m + 1)..=n).rev() {
+        let st = step(method, &s);
+        if valid {
+            if st.terms.is_empty() {
+                // O(k) work: always in double-word, so the coefficient is tight even when
+                // it is tiny beside the step's entries.
+                match residual_coef::<super::dd::Dd>(method, k) {
+                    Some(c) => terms.push((c, delta_k(&s))),
+                    None => valid = false,
+                }
+            } else {
+                terms.extend(st.terms);
+            }
+        }
+        s = st.rows;
+    }
+    if !valid {
+        terms.clear();
+    }
+    (s, terms)
+}

@@ -1,0 +1,146 @@
+//! The fast routes against the exact oracle (`exact_operator`): entrywise accuracy relative
+//! to the inf-norm, soundness of the proven error bounds, and the same bound terms.
+
+use super::*;
+use crate::bezier::operator::exact_operator;
+use crate::exact::q_to_f64;
+
+/// Every method family with a fast route, with its minimum target degree.
+pub(super) fn methods() -> Vec<Method> {
+    vec![
+        Method::Forrest,
+        Method::PieglTiller,
+        Method::Farin,
+        Method::Perturb,
+        Method::PerturbG1 { l1: 0.0, l2: 0.0 },
+        Method::PerturbG1 { l1: 0.25, l2: -0.5 },
+        Method::Eck,
+        Method::WatkinsWorsey,
+        Method::BogackiWeinsteinXu,
+        Method::GeneralizedInverse,
+        Method::ConstrainedChebyshev { r: 0, p: 0 },
+        Method::ConstrainedChebyshev { r: 1, p: 2 },
+        Method::L2 { r: 0, p: 0 },
+        Method::L2 { r: 2, p: 1 },
+        Method::L2 { r: -1, p: 1 },
+    ]
+}
+
+/// Max entrywise `|fast - exact| / ||exact||_inf` of the matrix and max
+/// `||g_fast - g_exact||_1 / max(1, ||g||_1)` of the bound functionals, after checking the
+/// proven bounds and the term structure. `None` if the pair is invalid
+/// for the method or has no fast route.
+pub(super) fn compare(method: Method, n: usize, m: usize) -> Option<(f64, f64, OperatorRoute)> {
+    method.check(n, m).ok()?;
+    let fast = build(method, n, m)?;
+    let (exact, terms) = exact_operator(method, n, m).ok()?;
+    let ex = exact.to_f64();
+    let cols = n + 1;
+    let norm = ex
+        .chunks_exact(cols)
+        .map(|r| r.iter().map(|x| x.abs()).sum::<f64>())
+        .fold(0.0, f64::max);
+    let mut worst = 0.0f64;
+    for (i, (fr, er)) in fast
+        .matrix
+        .chunks_exact(cols)
+        .zip(ex.chunks_exact(cols))
+        .enumerate()
+    {
+        let diff: f64 = fr.iter().zip(er).map(|(a, b)| (a - b).abs()).sum();
+        let rounding: f64 = er.iter().map(|x| x.abs()).sum::<f64>() * f64::EPSILON;
+        assert!(
+            diff <= fast.error + rounding,
+            "{method:?} {n}->{m} row {i}: error {diff:e} above the proven {:e}",
+            fast.error
+        );
+        for (a, b) in fr.iter().zip(er) {
+            worst = worst.max((a - b).abs() / norm);
+        }
+    }
+    assert_eq!(fast.terms.len(), terms.len(), "{method:?} {n}->{m} terms");
+    let mut term_worst = 0.0f64;
+    for ((fc, fg, fe), (ec, eg)) in fast.terms.iter().zip(&terms) {
+        assert!(
+            *fc >= *ec * (1.0 - 1e-15) && *fc <= *ec * (1.0 + 1e-12),
+            "{method:?} {n}->{m}: coef {fc:e} vs {ec:e}"
+        );
+        let gn: f64 = eg.iter().map(|x| q_to_f64(x).abs()).sum();
+        let diff: f64 = fg
+            .iter()
+            .zip(eg)
+            .map(|(a, b)| (a - q_to_f64(b)).abs())
+            .sum();
+        assert!(diff <= fe + gn * f64::EPSILON, "{method:?} {n}->{m}: term");
+        // A functional's proven error is added to the own bound: what matters is its size
+        // beside the bound's scale, `max(1, ||g||_1)` (as `finish` accepts it).
+        term_worst = term_worst.max(diff / gn.max(1.0));
+    }
+    Some((worst, term_worst, fast.route))
+}
+
+/// Compares every method at the pairs of `pairs`, asserting the 1e-12 goal; returns one
+/// report line per method (worst relative error, routes taken).
+fn sweep(pairs: &[(usize, usize)]) -> Vec<String> {
+    let mut report = Vec::new();
+    for method in methods() {
+        let (mut worst, mut tworst, mut routes, mut exact) = (0.0f64, 0.0f64, Vec::new(), 0);
+        for &(n, m) in pairs {
+            if method.check(n, m).is_err() {
+                continue;
+            }
+            match compare(method, n, m) {
+                Some((e, te, route)) => {
+                    assert!(e <= 1e-12, "{method:?} {n}->{m}: {e:e}");
+                    assert!(te <= 1e-12, "{method:?} {n}->{m}: terms {te:e}");
+                    worst = worst.max(e);
+                    tworst = tworst.max(te);
+                    if !routes.contains(&route) {
+                        routes.push(route);
+                    }
+                }
+                None => exact += 1,
+            }
+        }
+        report.push(format!(
+            "{method:?}: matrix {worst:.1e}, terms {tworst:.1e}, routes {routes:?}, {exact} of the pairs left to the exact route"
+        ));
+    }
+    report
+}
+
+#[test]
+fn fast_routes_match_the_exact_oracle_up_to_degree_16() {
+    let mut pairs: Vec<(usize, usize)> =
+        (1..=16).flat_map(|n| (0..n).map(move |m| (n, m))).collect();
+    pairs.extend([(20, 10), (24, 12), (24, 23)]);
+    println!("{}", sweep(&pairs).join("\n"));
+}
+
+/// Degrees up to 64 (the supported maximum): minutes of exact arithmetic, so ignored in the
+/// debug suite; run with `cargo test --release -p cagd-reduce --lib oracle_to_degree_64 --
+/// --ignored --nocapture`.
+#[test]
+#[ignore = "exact oracle at degree 64 takes minutes"]
+fn fast_routes_match_the_exact_oracle_to_degree_64() {
+    let mut pairs = Vec::new();
+    for n in [20, 30, 40, 50, 64] {
+        for m in [0, 1, 3, n / 4, n / 2, 3 * n / 4, n - 2, n - 1] {
+            if !pairs.contains(&(n, m)) {
+                pairs.push((n, m));
+            }
+        }
+    }
+    println!("{}", sweep(&pairs).join("\n"));
+}
+
+#[test]
+fn methods_without_a_fast_route_use_the_exact_one() {
+    assert!(build(Method::GeneralizedInverseEnds, 9, 4).is_none());
+    let op = crate::build_operator(Method::GeneralizedInverseEnds, 9, 4, false).unwrap();
+    assert_eq!(op.route(), OperatorRoute::Exact);
+    assert_eq!(op.construction_error(), 0.0);
+    let op = crate::build_operator(Method::L2 { r: 0, p: 0 }, 9, 4, false).unwrap();
+    assert_ne!(op.route(), OperatorRoute::Exact);
+    assert!(op.construction_error() <= TOLERANCE * op.norm_inf());
+}

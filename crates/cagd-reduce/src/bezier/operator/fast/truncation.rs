@@ -1,0 +1,248 @@
+//! Multi-degree reductions as truncated orthogonal expansions, on tracked rows, by closed
+//! forms (no linear system is solved):
+//!
+//! - Chebyshev (weight `(t(1-t))^(-1/2)`): Watkins–Worsey, Bogacki–Weinstein–Xu and the
+//!   constrained Chebyshev reduction of seed 000 §14.5 (Theorem 14.5.2, eqs. 14.5.14–14.5.16);
+//! - Jacobi (weight `t^a (1-t)^b`): the L2-optimal reduction with `C^(r,p)` ends (beyond the
+//!   seed) and the free generalized inverse (= L2, Lutterkort–Peters–Reif).
+//!
+//! With the ends `Q_0..Q_r`, `Q_{m-p}..Q_m` fixed by eq. 14.5.10, the residual
+//! `P - Q_ends = t^(r+1) (1-t)^(p+1) S(t)` (`S` of degree `N = n - r - p - 2`, Bernstein
+//! coefficients `P^II`, eq. 14.5.14) and the free interior is `t^(r+1) (1-t)^(p+1) U(t)`,
+//! `U` of degree `M = m - r - p - 2`. Constrained Chebyshev truncates the Chebyshev series of
+//! `S`; the constrained L2 problem `min ∫ (P - Q)^2` is `min ∫ t^(2r+2) (1-t)^(2p+2) (S - U)^2`,
+//! whose solution truncates the series of `S` in the Jacobi polynomials orthogonal for
+//! `t^a (1-t)^b`, `a = 2r+2`, `b = 2p+2`. `U`'s coefficients give the interior points by
+//! eq. 14.5.16.
+//!
+//! Closed forms used (`c_l` the Bernstein coefficients of the basis polynomial `p_k` in
+//! degree `k`, times `C(k,l)`):
+//! - Chebyshev `T_k(2t-1)`: `c_l = (-1)^(k-l) C(2k,2l)` (SPEC-reduce §3); the coefficient
+//!   functional is `(2 - δ_k0)/π ∫ S T_k / sqrt(t(1-t))`, which for `S = B_j^N` is
+//!   `(2 - δ_k0) C(N,j) sum_l c_l w_(j+l) w_(K-j-l) / C(K, j+l)`, `K = N + k`,
+//!   `w_i = C(2i,i) / 4^i` (from `∫ B_i^K / sqrt(t(1-t)) = π C(2i,i) C(2K-2i,K-i) / 4^K`).
+//! - Jacobi `P_k^(b,a)(2t-1)`: `c_l = (-1)^(k-l) C(k+a, k-l) C(k+b, l)`; the functional is
+//!   `∫ t^a (1-t)^b S p_k / h_k`, for `S = B_j^N` equal to
+//!   `C(N,j) / ((K+a+b+1) h_k) sum_l c_l / C(K+a+b, j+l+a)`, with
+//!   `1 / h_k = (2k+a+b+1) C(k+a+b, b) / C(k+b, b)`.
+//! - Back to degree `M`: the coefficient of `B_s^M` in `p_k` is
+//!   `sum_l c_l C(M-k, s-l) / C(M, s)` (degree elevation).
+
+use super::rows::{Row, Rows, auxiliary, axpy, end_points, identity, idx, scale, to_i, zero};
+use super::tracked::{Base, Tracked};
+
+/// The orthogonal family of a truncation.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Family {
+    /// Chebyshev polynomials `T_k(2t-1)`.
+    Chebyshev,
+    /// Jacobi polynomials orthogonal for `t^a (1-t)^b`.
+    Jacobi {
+        /// Exponent of `t`.
+        a: i64,
+        /// Exponent of `1 - t`.
+        b: i64,
+    },
+}
+
+/// `c_l`, `l = 0..=k`, of the family's `p_k` (see the module docs).
+fn coefficients<B: Base>(family: Family, k: i64) -> Vec<Tracked<B>> {
+    (0..=k)
+        .map(|l| {
+            let c = match family {
+                Family::Chebyshev => Tracked::binom(2 * k, 2 * l),
+                Family::Jacobi { a, b } => {
+                    Tracked::binom(k + a, k - l).mul(Tracked::binom(k + b, l))
+                }
+            };
+            if (k - l) % 2 == 0 { c } else { c.neg() }
+        })
+        .collect()
+}
+
+/// `c_l` as exact integers when they fit an `i128` (`None` otherwise).
+fn integer_coefficients(family: Family, k: i64) -> Option<Vec<i128>> {
+    let b = |n: i64, k: i64| -> Option<i128> {
+        if n < 0 || k < 0 || k > n {
+            return Some(0);
+        }
+        i128::try_from(cagd_core::binomial(idx(n), idx(k))).ok()
+    };
+    (0..=k)
+        .map(|l| {
+            let c = match family {
+                Family::Chebyshev => b(2 * k, 2 * l)?,
+                Family::Jacobi { a, b: bb } => b(k + a, k - l)?.checked_mul(b(k + bb, l)?)?,
+            };
+            Some(if (k - l) % 2 == 0 { c } else { -c })
+        })
+        .collect()
+}
+
+/// `sum_l c_l C(d, s - l)` exactly in `i128` (then rounded once), `None` on overflow.
+fn elevated_exact<B: Base>(c: &[i128], d: i64, s: i64) -> Option<Tracked<B>> {
+    let mut acc: i128 = 0;
+    for (l, cl) in c.iter().enumerate() {
+        let t = s - to_i(l);
+        if t < 0 || t > d {
+            continue;
+        }
+        let bin = i128::try_from(cagd_core::binomial(idx(d), idx(t))).ok()?;
+        acc = acc.checked_add(cl.checked_mul(bin)?)?;
+    }
+    let t = Tracked::<B>::int(acc.unsigned_abs());
+    Some(if acc < 0 { t.neg() } else { t })
+}
+
+/// `(last+1) x (N+1)`: row `k` is the functional giving the `k`-th expansion coefficient of
+/// a degree-`N` polynomial from its Bernstein coefficients, `k = 0..=last`.
+fn functionals<B: Base>(family: Family, nn: i64, last: i64) -> Vec<Row<B>> {
+    // w_i = C(2i,i)/4^i for i <= 2N (Chebyshev only).
+    let mut w: Vec<Tracked<B>> = vec![Tracked::of(1.0)];
+    if let Family::Chebyshev = family {
+        for i in 1..=(2 * nn) {
+            let prev = w[w.len() - 1];
+            w.push(
+                prev.mul(Tracked::small(2 * i - 1))
+                    .div(Tracked::small(2 * i)),
+            );
+        }
+    }
+    (0..=last)
+        .map(|k| {
+            let kk = nn + k;
+            let c = coefficients::<B>(family, k);
+            // d_s for s = 0..=K and the row's common factor.
+            let (d, factor): (Vec<Tracked<B>>, Tracked<B>) = match family {
+                Family::Chebyshev => (
+                    (0..=kk)
+                        .map(|s| w[idx(s)].mul(w[idx(kk - s)]).div(Tracked::binom(kk, s)))
+                        .collect(),
+                    Tracked::of(if k == 0 { 1.0 } else { 2.0 }),
+                ),
+                Family::Jacobi { a, b } => {
+                    let inv_h = Tracked::small(2 * k + a + b + 1)
+                        .mul(Tracked::binom(k + a + b, b))
+                        .div(Tracked::binom(k + b, b));
+                    (
+                        (0..=kk)
+                            .map(|s| Tracked::of(1.0).div(Tracked::binom(kk + a + b, s + a)))
+                            .collect(),
+                        inv_h.div(Tracked::small(kk + a + b + 1)),
+                    )
+                }
+            };
+            (0..=nn)
+                .map(|j| {
+                    let mut acc = zero::<B>();
+                    for (l, cl) in c.iter().enumerate() {
+                        acc = acc.fma(*cl, d[idx(j) + l]);
+                    }
+                    acc.mul(factor.mul(Tracked::binom(nn, j)))
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// `sum_{k<=M} p_k(coefficients in degree M) f_k`: the rows of `U` (degree `M`) from the
+/// kept coefficient functionals `f_0..f_M`.
+/// Only rows `s <= last` are computed (the others are left zero).
+fn back_to_bernstein<B: Base>(family: Family, mm: i64, last: i64, f: &[Row<B>]) -> Vec<Row<B>> {
+    let len = f.first().map_or(0, Vec::len);
+    let mut out: Vec<Row<B>> = vec![vec![zero(); len]; idx(mm) + 1];
+    for k in 0..=mm {
+        let c = coefficients::<B>(family, k);
+        let ci = integer_coefficients(family, k);
+        for s in 0..=last {
+            let coef = match ci.as_ref().and_then(|ci| elevated_exact(ci, mm - k, s)) {
+                Some(x) => x,
+                None => {
+                    let mut coef = zero::<B>();
+                    for (l, cl) in c.iter().enumerate() {
+                        coef = coef.fma(*cl, Tracked::binom(mm - k, s - to_i(l)));
+                    }
+                    coef
+                }
+            };
+            let coef = coef.div(Tracked::binom(mm, s));
+            axpy(&mut out[idx(s)], coef, &f[idx(k)]);
+        }
+    }
+    out
+}
+
+/// The operator `n -> m` with `(r, p)` ends and the interior by truncation in `family`;
+/// the bound terms (Chebyshev: `factor * ||f_k . P||`, `k > M`) when `factor` is given.
+pub(crate) fn truncated<B: Base>(
+    family: Family,
+    n: usize,
+    m: usize,
+    r: i32,
+    p: i32,
+    factor: Option<f64>,
+) -> Rows<B> {
+    let input = identity::<B>(n + 1);
+    let (left, right) = end_points(n, m, r, p, &input);
+    let (ni, mi, ri, pi) = (to_i(n), to_i(m), i64::from(r), i64::from(p));
+    let mut rows = left.clone();
+    let mut terms = Vec::new();
+    if ri + pi + 1 < mi {
+        let (nn, mm) = (ni - (ri + pi + 2), mi - (ri + pi + 2));
+        // The bound terms need every coefficient, the operator only the kept ones.
+        let last = if factor.is_some() { nn } else { mm };
+        let phi = functionals::<B>(family, nn, last);
+        // Coefficient functionals on P: f_k = sum_i phi_ki P^II_i (P^II = P when r = p = -1).
+        let f: Vec<Row<B>> = if ri == -1 && pi == -1 {
+            phi
+        } else {
+            let aux = auxiliary(n, m, r, p, &left, &right, &input);
+            let p2: Vec<Row<B>> = aux
+                .iter()
+                .enumerate()
+                .map(|(i, a)| {
+                    let i = to_i(i);
+                    scale(a, Tracked::binom(ni, ri + 1 + i).div(Tracked::binom(nn, i)))
+                })
+                .collect();
+            phi.iter()
+                .map(|ph| {
+                    let mut row = vec![zero(); n + 1];
+                    for (c, q) in ph.iter().zip(&p2) {
+                        axpy(&mut row, *c, q);
+                    }
+                    row
+                })
+                .collect()
+        };
+        // A symmetric problem (`r = p`, a symmetric weight) has a centro-symmetric operator,
+        // `a_(m-i, n-j) = a_ij`: the second half of the interior rows mirrors the first
+        // (the mirrored error bounds hold for the mirrored exact entries).
+        let symmetric = ri == pi
+            && match family {
+                Family::Chebyshev => true,
+                Family::Jacobi { a, b } => a == b,
+            };
+        let last_i = if symmetric { mi / 2 } else { mi - pi - 1 };
+        let u = back_to_bernstein(family, mm, last_i - ri - 1, &f[..=idx(mm)]);
+        // Q_i = U_{i-r-1} C(M, i-r-1) / C(m, i)   (14.5.16)
+        for i in (ri + 1)..=(mi - pi - 1) {
+            if i > last_i {
+                let mut row = rows[idx(mi - i)].clone();
+                row.reverse();
+                rows.push(row);
+                continue;
+            }
+            let s = i - ri - 1;
+            rows.push(scale(
+                &u[idx(s)],
+                Tracked::binom(mm, s).div(Tracked::binom(mi, i)),
+            ));
+        }
+        if let Some(coef) = factor {
+            terms.extend(f.into_iter().skip(idx(mm) + 1).map(|g| (coef, g)));
+        }
+    }
+    rows.extend(right);
+    (rows, terms)
+}
