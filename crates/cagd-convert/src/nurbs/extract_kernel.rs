@@ -65,8 +65,8 @@ where
             // alpha[j - r + 1], i.e. alpha[mu + 1..=p - r + 1] in order.
             let seg = &mut win[(r + mu - 1) * pdim..];
             for (jj, &al) in alpha[mu + 1..p - r + 2].iter().enumerate().rev() {
-                let (lo, hi) = seg.split_at_mut((jj + 1) * pdim);
-                blend_in(w, hi, &lo[jj * pdim..], 1.0 - al, al);
+                let (lo, hi) = seg[jj * pdim..(jj + 2) * pdim].split_at_mut(pdim);
+                blend_in(w, hi, lo, 1.0 - al, al);
             }
             if !last {
                 let k = p - mu - r;

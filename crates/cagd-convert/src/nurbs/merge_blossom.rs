@@ -4,8 +4,7 @@
 //!
 //! The span is the one where the de Casteljau extrapolation is smallest: the amplification
 //! of the local arguments `t`, `prod (|1 - t| + |t|)`, written
-//! `prod max(1, |2 x - a - b| / (b - a))` (the first such span wins a tie). Every factor is
-//! at least 1, so a candidate is dropped as soon as its partial product can no longer win.
+//! `prod max(1, |2 x - a - b| / (b - a))` (the first such span wins a tie).
 //!
 //! Arguments equal to the span's ends cost nothing: `t = 0` keeps the points `0..len-1`
 //! and `t = 1` the points `1..len` (exactly; a selection commutes with the other levels),
@@ -34,6 +33,9 @@ pub(crate) fn control_points<W: Width>(
         .iter()
         .map(|&s| 1.0 / (knots[s + 1] - knots[s]))
         .collect();
+    // The sum of the ends of each piece's span (`a + b`).
+    let mid2: Vec<f64> = span_of.iter().map(|&s| knots[s] + knots[s + 1]).collect();
+    let mut amp_buf = vec![0.0; nseg];
     work.reserve(n * d);
 
     let (mut from, mut to) = (vec![0.0; m], vec![0.0; m]);
@@ -45,18 +47,27 @@ pub(crate) fn control_points<W: Width>(
             first_piece += 1;
         }
         let support = &knots[i + 1..=i + p];
-        let (mut best, mut best_amp) = (first_piece, f64::INFINITY);
-        let mut k = first_piece;
-        while k < nseg && span_of[k] <= i + p {
-            let s = span_of[k];
-            let (c, inv) = (knots[s] + knots[s + 1], inv_len[k]);
-            let amp = support
-                .iter()
-                .fold(1.0f64, |m, x| m * ((2.0 * x - c).abs() * inv).max(1.0));
-            if amp < best_amp {
-                (best, best_amp) = (k, amp);
+        let mut end = first_piece;
+        while end < nseg && span_of[end] <= i + p {
+            end += 1;
+        }
+        // All candidates at once, argument after argument (the same products as one
+        // candidate after the other, in a loop that vectorises).
+        let amp = &mut amp_buf[..end - first_piece];
+        amp.fill(1.0);
+        let (mids, invs) = (&mid2[first_piece..end], &inv_len[first_piece..end]);
+        for x in support {
+            for (m, (c, inv)) in amp.iter_mut().zip(mids.iter().zip(invs)) {
+                let f = (2.0 * x - c).abs() * inv;
+                // (max(1, f) as a plain comparison: the knots are finite.)
+                *m *= if f > 1.0 { f } else { 1.0 };
             }
-            k += 1;
+        }
+        let (mut best, mut best_amp) = (first_piece, f64::INFINITY);
+        for (k, &a) in amp.iter().enumerate() {
+            if a < best_amp {
+                (best, best_amp) = (first_piece + k, a);
+            }
         }
         let s = span_of[best];
         let (a, b, inv) = (knots[s], knots[s + 1], inv_len[best]);
@@ -83,28 +94,16 @@ pub(crate) fn control_points<W: Width>(
         // scratch buffers (out of place, so that each level vectorises).
         let mut len = hi - lo; // points - 1
         let u = 1.0 - t;
-        for j in 0..len {
-            lerp(
-                w,
-                &mut from[j * d..],
-                &piece[j * d..],
-                &piece[(j + 1) * d..],
-                u,
-                t,
-            );
+        for (j, o) in from[..len * d].chunks_exact_mut(d).enumerate() {
+            let (x, y) = piece[j * d..(j + 2) * d].split_at(d);
+            lerp(w, o, x, y, u, t);
         }
         for &t in rest {
             len -= 1;
             let u = 1.0 - t;
-            for j in 0..len {
-                lerp(
-                    w,
-                    &mut to[j * d..],
-                    &from[j * d..],
-                    &from[(j + 1) * d..],
-                    u,
-                    t,
-                );
+            for (j, o) in to[..len * d].chunks_exact_mut(d).enumerate() {
+                let (x, y) = from[j * d..(j + 2) * d].split_at(d);
+                lerp(w, o, x, y, u, t);
             }
             std::mem::swap(&mut from, &mut to);
         }

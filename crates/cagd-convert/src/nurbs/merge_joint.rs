@@ -84,8 +84,8 @@ pub(crate) fn joint_multiplicity<W: Width>(
             // Q_i = (P_i - b Q_{i-1}) / a, i = s..p, in place (cur[s - 1] = Q_{s-1}); the
             // leftover equation is i = p: P_p - a Q_p - b Q_{p-1}.
             for i in s..p {
-                let (lo, hi) = cur.split_at_mut(i * d);
-                unblend_in(w, hi, &lo[(i - 1) * d..], b, inv);
+                let (lo, hi) = cur[(i - 1) * d..(i + 1) * d].split_at_mut(d);
+                unblend_in(w, hi, lo, b, inv);
             }
             eps2 = residual2(w, pp, pp1, &cur[(p - 1) * d..], a, b);
         } else {
