@@ -63,9 +63,22 @@ fn euclidean_into<W: Width>(hom: &[f64], points: &mut Vec<f64>, weights: &mut Ve
     }
 }
 
-/// The largest absolute value of `v` (finite values; 0 for none).
+/// The largest absolute value of `v` (finite values; 0 for none). Eight running maxima:
+/// one chain of `max` waits on the previous at every value, eight vectorise (the maximum
+/// does not depend on the order).
 pub(crate) fn max_abs(v: &[f64]) -> f64 {
-    v.iter().fold(0.0f64, |m, x| bigger(m, x.abs()))
+    let mut acc = [0.0f64; 8];
+    let mut chunks = v.chunks_exact(8);
+    for c in &mut chunks {
+        for (m, x) in acc.iter_mut().zip(c) {
+            *m = bigger(*m, x.abs());
+        }
+    }
+    let rest = chunks
+        .remainder()
+        .iter()
+        .fold(0.0f64, |m, x| bigger(m, x.abs()));
+    acc.iter().fold(rest, |m, &a| bigger(m, a))
 }
 
 /// `max(m, a)` as a plain comparison rather than `f64::max`: the values are finite

@@ -73,9 +73,14 @@ pub(crate) fn control_points<W: Width>(
         let (a, b, inv) = (knots[s], knots[s + 1], inv_len[best]);
         // The arguments are sorted: those below `a`, `a` (t = 0), `b` (t = 1), above `b`
         // (no knot lies inside the span).
-        let below = support.partition_point(|x| *x < a);
-        let at_a = support[below..].partition_point(|x| *x <= a);
-        let at_b = support[below + at_a..].partition_point(|x| *x <= b);
+        // (Counted, not searched: a few branch-free comparisons beat a binary search's
+        // chain of dependent loads.)
+        let (mut below, mut at_a, mut at_b) = (0, 0, 0);
+        for &x in support {
+            below += usize::from(x < a);
+            at_a += usize::from(x == a);
+            at_b += usize::from(x == b);
+        }
         let (lo, hi) = (at_b, p - at_a);
         let piece = &bez[best * m + lo * d..best * m + (hi + 1) * d];
         // The local arguments outside the span, in order.
