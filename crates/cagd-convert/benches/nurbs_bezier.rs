@@ -13,13 +13,15 @@
 //!
 //! The way back, pieces → NURBS, in instructions per span (callgrind on
 //! `examples/pieces_to_nurbs_count.rs`, which merges this bench's curve 10 times; stable on
-//! a loaded machine): 9180 → 6287 → 4207 at degree 7 and 3369 → 2685 → 1827 at degree 3
-//! (the merge kernels per point width, then issue 16's last goal: the joint decision in
+//! a loaded machine): 9180 → 6333 → 4137 at degree 7 and 3369 → 2686 → 1772 at degree 3
+//! (the merge kernels per point width; then issue 16's last goal: the joint decision in
 //! place, blossoms without the levels of the span's own ends, fixed-width point
-//! operations, one pass for the homogeneous points and the tolerance). Side by side on a
-//! loaded 2-core machine (load average 5-13) this bench gave, before → after:
-//! BACK3 ns per span at degree 3 and BACK7 at degree 7 (COPYX a copy), under half of OCCT's
-//! 330 / 682.
+//! operations, the tolerance scale without a dependent `max` chain, argument classes
+//! counted rather than binary-searched). This bench's median ns per span, the binaries of
+//! e919503 and of the change run alternately three times on the loaded 2-core machine
+//! (load average 10-13): degree 3 166-170 → 109-113 (38-39x → 26x a copy), degree 7
+//! 423-431 → 263-280 (52-55x → 37x a copy), under half of OCCT's 330 / 682. (Criterion's
+//! means under that load are 2-3x these medians for both binaries: preemption.)
 
 use cagd_testkit::bench as common;
 
