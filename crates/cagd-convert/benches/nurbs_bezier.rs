@@ -1,18 +1,27 @@
 //! NURBS → rational Bézier pieces and back: a clamped 1 000-span 3-D NURBS curve of degree
 //! 3 and of degree 7 (uniform simple knots, random points of size ~10, weights in
 //! [0.5, 2]) through [`to_bezier_pieces_into`] (Böhm insertion in place, buffers reused)
-//! and [`pieces_to_nurbs`] (continuity found at each joint, blossoms, certified by
-//! re-extraction), with cagd-core's `BSplineCurve::to_beziers` (a blossom per Bézier point)
-//! for comparison.
+//! and [`pieces_to_nurbs`] (continuity decided at each joint by knot removal, control
+//! points by blossoms, certified by re-extraction), with cagd-core's
+//! `BSplineCurve::to_beziers` (a blossom per Bézier point) for comparison.
 //!
 //! Besides criterion's report, prints ns per span and the ratio to a plain copy of the same
 //! bytes (the curve's knots, points and weights and the pieces' breaks, points and
 //! weights). Anchors measured on this machine (issue 16): OCCT 7.6.3
 //! `GeomConvert_BSplineCurveToBezierCurve` 325 / 560 ns per span (degree 3 / 7),
-//! `Convert_CompBezierCurvesToBSplineCurve` 330 / 682. The merge kernels per point width
-//! (issue 16 residuals) took the way back from 9180 to 6287 instructions per span at
-//! degree 7 and from 3369 to 2685 at degree 3 (callgrind), 107x -> 79x and 68x -> 52x a
-//! copy side by side on a loaded machine.
+//! `Convert_CompBezierCurvesToBSplineCurve` 330 / 682.
+//!
+//! The way back, pieces → NURBS, in instructions per span (callgrind on
+//! `examples/pieces_to_nurbs_count.rs`, which merges this bench's curve 10 times; stable on
+//! a loaded machine): 9180 → 6333 → 4137 at degree 7 and 3369 → 2686 → 1772 at degree 3
+//! (the merge kernels per point width; then issue 16's last goal: the joint decision in
+//! place, blossoms without the levels of the span's own ends, fixed-width point
+//! operations, the tolerance scale without a dependent `max` chain, argument classes
+//! counted rather than binary-searched). This bench's median ns per span, the binaries of
+//! e919503 and of the change run alternately three times on the loaded 2-core machine
+//! (load average 10-13): degree 3 166-170 → 109-113 (38-39x → 26x a copy), degree 7
+//! 423-431 → 263-280 (52-55x → 37x a copy), under half of OCCT's 330 / 682. (Criterion's
+//! means under that load are 2-3x these medians for both binaries: preemption.)
 
 use cagd_testkit::bench as common;
 

@@ -11,7 +11,7 @@
 //! very first window is brought to the invariant by inserting `a` (only an unclamped start
 //! needs it). Every step is a convex combination: a relative error of a few `p` ulp.
 
-use super::width::{Width, with_width};
+use super::width::{Width, blend_in, with_width};
 
 /// Runs the extraction over the spline of degree `p` with knots `u` (`n + p + 1` of them,
 /// valid, domain of positive length) and `n` working points of `pdim` coordinates, which
@@ -56,18 +56,17 @@ where
             let k = p - mu;
             next[k * pdim..(k + 1) * pdim].copy_from_slice(&win[p * pdim..]);
         }
-        for k in mu + 1..=p {
+        for k in mu + 1..p + 1 {
             alpha[k] = (b - a) / (u[s + k] - a);
         }
-        for r in 1..=levels {
-            for j in (r + mu..=p).rev() {
-                let al = alpha[j - r + 1];
-                let be = 1.0 - al;
-                let (lo, hi) = win.split_at_mut(j * pdim);
-                let prev = &lo[(j - 1) * pdim..];
-                for (x, y) in hi[..pdim].iter_mut().zip(prev) {
-                    *x = be * y + al * *x;
-                }
+        for r in 1..levels + 1 {
+            // Points j = r + mu..=p, from the right (slot j - 1 is read before it
+            // changes); `seg` starts at point r + mu - 1, and point j uses
+            // alpha[j - r + 1], i.e. alpha[mu + 1..=p - r + 1] in order.
+            let seg = &mut win[(r + mu - 1) * pdim..];
+            for (jj, &al) in alpha[mu + 1..p - r + 2].iter().enumerate().rev() {
+                let (lo, hi) = seg[jj * pdim..(jj + 2) * pdim].split_at_mut(pdim);
+                blend_in(w, hi, lo, 1.0 - al, al);
             }
             if !last {
                 let k = p - mu - r;
@@ -78,7 +77,7 @@ where
         if last {
             break;
         }
-        for i in (p + 1).saturating_sub(mu)..=p {
+        for i in (p + 1).saturating_sub(mu)..p + 1 {
             load(s + mu - p + i, &mut next[i * pdim..(i + 1) * pdim]);
         }
         std::mem::swap(&mut win, &mut next);
@@ -102,9 +101,7 @@ fn insert_start<W: Width>(u: &[f64], p: usize, s: usize, w: W, win: &mut [f64]) 
             let beta = (a - tl) / (tr - tl);
             let al = 1.0 - beta;
             let (lo, hi) = win.split_at_mut((j + 1) * pdim);
-            for (x, y) in lo[j * pdim..].iter_mut().zip(&hi[..pdim]) {
-                *x = al * *x + beta * y;
-            }
+            blend_in(w, &mut lo[j * pdim..], hi, beta, al);
         }
     }
 }

@@ -3,10 +3,11 @@
 //! have at each joint (seed 001 §4.1's exact merge, then knot removal at rounding level;
 //! the kernel is `merge_kernel`).
 
-use cagd_core::{BSplineCurve, Result, check_tolerance, kernel};
+use cagd_core::{BSplineCurve, Result, check_tolerance};
 
-use super::merge_kernel::merge;
+use super::merge_kernel::merge_work;
 use super::pieces::BezierPieces;
+use super::width::{Width, with_width};
 
 /// The relative tolerance of the default joint check: the pieces are taken to agree when
 /// they agree within `DEFAULT_REL_TOL` times the largest working coordinate (the
@@ -33,18 +34,57 @@ pub struct NurbsFromPieces {
     pub tolerance: f64,
 }
 
-/// The largest absolute working coordinate of the pieces (`max(|w x|, w)` when rational).
-pub(crate) fn working_scale(points: &[f64], weights: Option<&[f64]>, dim: usize) -> f64 {
-    // `if a > m` rather than `f64::max`: the values are finite (validated), and the plain
-    // comparison vectorises.
-    let bigger = |m: f64, a: f64| if a > m { a } else { m };
-    match weights {
-        None => points.iter().fold(0.0f64, |m, x| bigger(m, x.abs())),
-        Some(w) => points.chunks_exact(dim).zip(w).fold(0.0f64, |m, (p, wi)| {
-            p.iter()
-                .fold(bigger(m, *wi), |m, x| bigger(m, (x * wi).abs()))
-        }),
+/// `out` = the homogeneous points `(w x, w)` of `points` (`w.get()` coordinates each) and
+/// `weights`.
+fn homogeneous_into<W: Width>(points: &[f64], weights: &[f64], out: &mut [f64], w: W) {
+    let d = w.get();
+    for ((o, x), wi) in out
+        .chunks_exact_mut(d + 1)
+        .zip(points.chunks_exact(d))
+        .zip(weights)
+    {
+        let (o, x) = (&mut o[..d + 1], &x[..d]);
+        for c in 0..d {
+            o[c] = wi * x[c];
+        }
+        o[d] = *wi;
     }
+}
+
+/// Appends the Euclidean points `h / w` (`w.get()` coordinates each) and the weights `w`
+/// of the homogeneous points `hom` (`(h, w)`) to `points` and `weights` (as
+/// `cagd_core::kernel::from_homogeneous`, without zeroing the outputs first).
+fn euclidean_into<W: Width>(hom: &[f64], points: &mut Vec<f64>, weights: &mut Vec<f64>, w: W) {
+    let d = w.get();
+    for q in hom.chunks_exact(d + 1) {
+        let wq = q[d];
+        points.extend(q[..d].iter().map(|x| x / wq));
+        weights.push(wq);
+    }
+}
+
+/// The largest absolute value of `v` (finite values; 0 for none). Eight running maxima:
+/// one chain of `max` waits on the previous at every value, eight vectorise (the maximum
+/// does not depend on the order).
+pub(crate) fn max_abs(v: &[f64]) -> f64 {
+    let mut acc = [0.0f64; 8];
+    let mut chunks = v.chunks_exact(8);
+    for c in &mut chunks {
+        for (m, x) in acc.iter_mut().zip(c) {
+            *m = bigger(*m, x.abs());
+        }
+    }
+    let rest = chunks
+        .remainder()
+        .iter()
+        .fold(0.0f64, |m, x| bigger(m, x.abs()));
+    acc.iter().fold(rest, |m, &a| bigger(m, a))
+}
+
+/// `max(m, a)` as a plain comparison rather than `f64::max`: the values are finite
+/// (validated), and the plain comparison vectorises.
+fn bigger(m: f64, a: f64) -> f64 {
+    if a > m { a } else { m }
 }
 
 /// Merges Bézier pieces into one spline (the reverse of [`crate::to_bezier_pieces`]).
@@ -80,31 +120,24 @@ pub(crate) fn working_scale(points: &[f64], weights: Option<&[f64]>, dim: usize)
 /// ```
 pub fn pieces_to_nurbs(pieces: &BezierPieces, tol: Option<f64>) -> Result<NurbsFromPieces> {
     let (p, dim) = (pieces.degree(), pieces.dim());
-    let tol = match tol {
-        Some(t) => {
-            check_tolerance(t)?;
-            t
-        }
-        None => (DEFAULT_REL_TOL * working_scale(pieces.points(), pieces.weights(), dim))
-            .max(f64::MIN_POSITIVE),
-    };
+    if let Some(t) = tol {
+        check_tolerance(t)?;
+    }
+    // The working points of every piece, piece-major: (w x, w) when rational.
     let pts = pieces.points();
-    let outer = pieces.outer_knots();
-    let m = p + 1;
-    let merged = match pieces.weights() {
-        None => merge(pieces.breaks(), p, dim, tol, outer, |k, i, o| {
-            let at = (k * m + i) * dim;
-            o.copy_from_slice(&pts[at..at + dim]);
-        }),
-        Some(w) => merge(pieces.breaks(), p, dim + 1, tol, outer, |k, i, o| {
-            let at = k * m + i;
-            let wi = w[at];
-            for (x, y) in o[..dim].iter_mut().zip(&pts[at * dim..(at + 1) * dim]) {
-                *x = wi * y;
-            }
-            o[dim] = wi;
-        }),
+    let bez = match pieces.weights() {
+        None => std::borrow::Cow::Borrowed(pts),
+        Some(w) => {
+            let mut bez = vec![0.0; w.len() * (dim + 1)];
+            with_width!(dim, homogeneous_into(pts, w, &mut bez));
+            std::borrow::Cow::Owned(bez)
+        }
     };
+    // The working scale of the default tolerance: max(|w x|, w) = the largest working
+    // coordinate (weights are positive).
+    let tol = tol.unwrap_or_else(|| (DEFAULT_REL_TOL * max_abs(&bez)).max(f64::MIN_POSITIVE));
+    let pdim = if pieces.is_rational() { dim + 1 } else { dim };
+    let merged = merge_work(&bez, pieces.breaks(), p, pdim, tol, pieces.outer_knots());
     let continuity = merged
         .mults
         .iter()
@@ -112,9 +145,8 @@ pub fn pieces_to_nurbs(pieces: &BezierPieces, tol: Option<f64>) -> Result<NurbsF
         .collect();
     let curve = if pieces.is_rational() {
         let n = merged.work.len() / (dim + 1);
-        let mut points = vec![0.0; n * dim];
-        let mut weights = vec![0.0; n];
-        kernel::from_homogeneous(&merged.work, dim, &mut points, &mut weights);
+        let (mut points, mut weights) = (Vec::with_capacity(n * dim), Vec::with_capacity(n));
+        with_width!(dim, euclidean_into(&merged.work, &mut points, &mut weights));
         BSplineCurve::new_rational(p, merged.knots, points, weights, dim)?
     } else {
         BSplineCurve::new(p, merged.knots, merged.work, dim)?

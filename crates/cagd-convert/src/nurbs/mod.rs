@@ -7,6 +7,8 @@ pub(crate) mod cubic;
 pub(crate) mod extract;
 mod extract_kernel;
 pub(crate) mod merge;
+mod merge_blossom;
+mod merge_joint;
 mod merge_kernel;
 pub(crate) mod outer_knots;
 pub(crate) mod pieces;
@@ -18,5 +20,7 @@ mod width;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_merge;
 #[cfg(test)]
 mod tests_outer_knots;

@@ -8,7 +8,7 @@ use cagd_core::{
 };
 
 use super::extract_kernel::extract;
-use super::merge::{DEFAULT_REL_TOL, working_scale};
+use super::merge::{DEFAULT_REL_TOL, max_abs};
 use super::merge_kernel::merge;
 use super::pieces::check_breaks;
 
@@ -198,7 +198,7 @@ pub fn patches_to_nurbs(
             check_tolerance(t)?;
             t
         }
-        None => (DEFAULT_REL_TOL * working_scale(&work, None, 1)).max(f64::MIN_POSITIVE),
+        None => (DEFAULT_REL_TOL * max_abs(&work)).max(f64::MIN_POSITIVE),
     };
     // Merge in u: point i of piece iu is the row i of every patch (iu, jv), jv = 0..nv.
     let row_u = nv * (q + 1) * pdim;
