@@ -12,6 +12,7 @@
 use cagd_core::{BSplineCurve, Error, Result, knot_multiplicity};
 
 use super::fit::{Source, SpanBound, fit, span_bounds};
+use super::grading::{GRADE, grading_breaks};
 use super::knots::order_at;
 use super::knots::{LocalBounds, Raw};
 use super::measure::spline_max_deviation;
@@ -158,6 +159,10 @@ pub(crate) fn fit_to_budget(
             return Err(unreachable("the refinement needs too many spans"));
         }
         knots.extend(new);
+        knots.sort_by(f64::total_cmp);
+        let mut breaks = knots[m..knots.len() - m].to_vec();
+        breaks.dedup();
+        knots.extend(grading_breaks(&breaks, GRADE));
         knots.sort_by(f64::total_cmp);
     }
 }
