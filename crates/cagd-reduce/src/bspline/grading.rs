@@ -98,10 +98,11 @@ mod tests {
     #[test]
     fn a_geometric_cluster_grades_its_neighbours() {
         let mut b = vec![0.0];
-        let mut x = 1.0;
+        let (mut x, mut h) = (1.0, 1.0);
         for _ in 0..12 {
             b.push(x);
-            x += 0.5f64.powi(b.len() as i32 * 2);
+            h *= 0.25;
+            x += h;
         }
         let tiny = x;
         b.push(tiny);
