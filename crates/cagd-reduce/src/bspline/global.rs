@@ -1,7 +1,8 @@
 //! The global-fit strategy of [`crate::reduce_bspline`] ([`BSplineStrategy::GlobalFit`]):
 //! the degree-`m` spline space with the input's knots at the multiplicities that keep its
 //! continuity, the L2-best fit in it ([`super::fit`]), adaptive refinement of the
-//! spans whose certified bound exceeds their share of the tolerance, then knot removal
+//! spans whose certified bound exceeds their share of the tolerance (on a graded mesh,
+//! [`super::grading`]), then knot removal
 //! within the rest, tracked per span ([`super::knots`]).
 //!
 //! Why a global fit: reducing segment by segment can only join segments with Hermite data
@@ -122,8 +123,9 @@ fn splits(
 }
 
 /// Fits `src` on the degree-`m` knot vector `knots`, refining it (simple knots inside the
-/// offending spans, [`splits`]) and fitting again until every span's certified bound is
-/// within `budget`. Returns the final knots, working points and span bounds.
+/// offending spans, [`splits`], then inside their much longer neighbours,
+/// [`grading_breaks`]) and fitting again until every span's certified bound is within
+/// `budget`. Returns the final knots, working points and span bounds.
 ///
 /// # Errors
 /// [`Error::ConditionNotMet`] when the budget is below the rounding level or needs more
