@@ -157,14 +157,17 @@ pub(crate) fn fit_to_budget(
             budget
         };
         let new = splits(&bounds, budget, (threshold, target), m)?;
-        if rounds > MAX_ROUNDS || bounds.len() + new.len() > MAX_FIT_SPANS {
-            return Err(unreachable("the refinement needs too many spans"));
+        let too_many = || unreachable("the refinement needs too many spans");
+        let spans = bounds.len() + new.len();
+        if rounds > MAX_ROUNDS || spans > MAX_FIT_SPANS {
+            return Err(too_many());
         }
         knots.extend(new);
         knots.sort_by(f64::total_cmp);
         let mut breaks = knots[m..knots.len() - m].to_vec();
         breaks.dedup();
-        knots.extend(grading_breaks(&breaks, GRADE));
+        let graded = grading_breaks(&breaks, GRADE, MAX_FIT_SPANS - spans).ok_or_else(too_many)?;
+        knots.extend(graded);
         knots.sort_by(f64::total_cmp);
     }
 }

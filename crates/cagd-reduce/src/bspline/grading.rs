@@ -26,21 +26,22 @@ pub(crate) const GRADE: f64 = 16.0;
 /// geometrically from its left end (parts `ratio h`, `ratio^2 h`, ... after a left
 /// neighbour of length `h`, the last two parts evened out), a backward pass the same from
 /// the right. The added breaks are strictly inside spans; neighbouring parts differ by at
-/// most `2 ratio`.
-pub(crate) fn grading_breaks(breaks: &[f64], ratio: f64) -> Vec<f64> {
+/// most `2 ratio`. `None` when more than `limit` breaks would be added (the work stops
+/// there).
+pub(crate) fn grading_breaks(breaks: &[f64], ratio: f64, limit: usize) -> Option<Vec<f64>> {
     let mut added = Vec::new();
-    let forward = graded_pass(breaks, ratio, &mut added);
+    let forward = graded_pass(breaks, ratio, &mut added, limit)?;
     let reversed: Vec<f64> = forward.iter().rev().map(|x| -x).collect();
     let mut back = Vec::new();
-    graded_pass(&reversed, ratio, &mut back);
+    graded_pass(&reversed, ratio, &mut back, limit - added.len())?;
     added.extend(back.iter().map(|x| -x));
     added.sort_by(f64::total_cmp);
-    added
+    Some(added)
 }
 
 /// One pass of [`grading_breaks`] from the left: the graded breaks; the new ones are also
-/// pushed to `added`.
-fn graded_pass(breaks: &[f64], ratio: f64, added: &mut Vec<f64>) -> Vec<f64> {
+/// pushed to `added` (`None` past `limit` of them).
+fn graded_pass(breaks: &[f64], ratio: f64, added: &mut Vec<f64>, limit: usize) -> Option<Vec<f64>> {
     let mut out = Vec::with_capacity(breaks.len());
     out.extend(breaks.iter().take(2));
     for w in breaks.windows(2).skip(1) {
@@ -60,6 +61,9 @@ fn graded_pass(breaks: &[f64], ratio: f64, added: &mut Vec<f64>) -> Vec<f64> {
             if !(y > x && y < end) {
                 break;
             }
+            if added.len() >= limit {
+                return None;
+            }
             out.push(y);
             added.push(y);
             h = y - x;
@@ -67,7 +71,7 @@ fn graded_pass(breaks: &[f64], ratio: f64, added: &mut Vec<f64>) -> Vec<f64> {
         }
         out.push(end);
     }
-    out
+    Some(out)
 }
 
 #[cfg(test)]
@@ -77,7 +81,7 @@ mod tests {
     /// The neighbour ratios of `breaks` merged with the graded additions.
     fn ratios(breaks: &[f64], ratio: f64) -> (Vec<f64>, f64) {
         let mut all = breaks.to_vec();
-        all.extend(grading_breaks(breaks, ratio));
+        all.extend(grading_breaks(breaks, ratio, usize::MAX).unwrap());
         all.sort_by(f64::total_cmp);
         let lens: Vec<f64> = all.windows(2).map(|w| w[1] - w[0]).collect();
         let worst = lens
@@ -90,7 +94,7 @@ mod tests {
     #[test]
     fn a_graded_mesh_is_left_alone() {
         let b = [0.0, 1.0, 1.5, 3.0, 3.25, 4.0];
-        assert!(grading_breaks(&b, 16.0).is_empty());
+        assert!(grading_breaks(&b, 16.0, 0).unwrap().is_empty());
     }
 
     /// A span split geometrically towards a point (the stall of the global fit): both
@@ -111,6 +115,8 @@ mod tests {
         let (all, worst) = ratios(&b, 16.0);
         assert!(worst <= 32.0, "{worst}");
         assert!(all.len() - b.len() < 40, "{}", all.len() - b.len());
+        // The work stops at the limit.
+        assert!(grading_breaks(&b, 16.0, 3).is_none());
         // The span right of the cluster now starts with a part comparable to the last
         // tiny span.
         let i = all.iter().position(|v| *v == tiny).unwrap();
@@ -121,7 +127,7 @@ mod tests {
     #[test]
     fn every_added_break_is_inside_a_span() {
         let b = [0.0, 1e-12, 1.0, 1.0 + 1e-9, 5.0, 1e6];
-        let add = grading_breaks(&b, 4.0);
+        let add = grading_breaks(&b, 4.0, usize::MAX).unwrap();
         assert!(!add.is_empty());
         for v in &add {
             assert!(!b.contains(v) && *v > 0.0 && *v < 1e6, "{v}");
