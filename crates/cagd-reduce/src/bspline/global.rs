@@ -1,7 +1,8 @@
 //! The global-fit strategy of [`crate::reduce_bspline`] ([`BSplineStrategy::GlobalFit`]):
 //! the degree-`m` spline space with the input's knots at the multiplicities that keep its
 //! continuity, the L2-best fit in it ([`super::fit`]), adaptive refinement of the
-//! spans whose certified bound exceeds their share of the tolerance, then knot removal
+//! spans whose certified bound exceeds their share of the tolerance (on a graded mesh,
+//! [`super::grading`]), then knot removal
 //! within the rest, tracked per span ([`super::knots`]).
 //!
 //! Why a global fit: reducing segment by segment can only join segments with Hermite data
@@ -12,6 +13,7 @@
 use cagd_core::{BSplineCurve, Error, Result, knot_multiplicity};
 
 use super::fit::{Source, SpanBound, fit, span_bounds};
+use super::grading::{GRADE, grading_breaks};
 use super::knots::order_at;
 use super::knots::{LocalBounds, Raw};
 use super::measure::spline_max_deviation;
@@ -121,8 +123,9 @@ fn splits(
 }
 
 /// Fits `src` on the degree-`m` knot vector `knots`, refining it (simple knots inside the
-/// offending spans, [`splits`]) and fitting again until every span's certified bound is
-/// within `budget`. Returns the final knots, working points and span bounds.
+/// offending spans, [`splits`], then inside their much longer neighbours,
+/// [`grading_breaks`]) and fitting again until every span's certified bound is within
+/// `budget`. Returns the final knots, working points and span bounds.
 ///
 /// # Errors
 /// [`Error::ConditionNotMet`] when the budget is below the rounding level or needs more
@@ -154,10 +157,17 @@ pub(crate) fn fit_to_budget(
             budget
         };
         let new = splits(&bounds, budget, (threshold, target), m)?;
-        if rounds > MAX_ROUNDS || bounds.len() + new.len() > MAX_FIT_SPANS {
-            return Err(unreachable("the refinement needs too many spans"));
+        let too_many = || unreachable("the refinement needs too many spans");
+        let spans = bounds.len() + new.len();
+        if rounds > MAX_ROUNDS || spans > MAX_FIT_SPANS {
+            return Err(too_many());
         }
         knots.extend(new);
+        knots.sort_by(f64::total_cmp);
+        let mut breaks = knots[m..knots.len() - m].to_vec();
+        breaks.dedup();
+        let graded = grading_breaks(&breaks, GRADE, MAX_FIT_SPANS - spans).ok_or_else(too_many)?;
+        knots.extend(graded);
         knots.sort_by(f64::total_cmp);
     }
 }

@@ -11,6 +11,7 @@
 mod fit;
 mod framed;
 mod global;
+mod grading;
 mod knots;
 mod measure;
 mod options;
