@@ -6,7 +6,7 @@
 
 use cagd_core::{Error, Result};
 
-use super::bound::{BoundLevel, Scratch};
+use super::bound::{BoundLevel, max_value_norm};
 use super::gemm::all_finite;
 use super::operator::Operator;
 
@@ -95,25 +95,25 @@ pub fn reduce_batch_with_bounds(
         });
     };
     let map = op.map();
-    let (per_in, per_out, per_piece) = (map.cols() * dim, map.rows() * dim, bm.map.rows() * dim);
+    let basis = op.error_basis();
+    let (per_in, per_out, per_coef) = (map.cols() * dim, map.rows() * dim, basis.rank * dim);
     let block = map.block_curves(dim);
-    let mut pieces = vec![0.0; block.min(n_curves) * per_piece];
-    let mut scratch = Scratch::default();
-    let tight = level == BoundLevel::Tight;
+    let mut coefs = vec![0.0; block.min(n_curves) * per_coef];
     for ((inp, out), bnd) in input
         .chunks(block * per_in)
         .zip(output.chunks_mut(block * per_out))
         .zip(bounds.chunks_mut(block))
     {
         map.apply(inp, dim, out);
-        let pcs = &mut pieces[..bnd.len() * per_piece];
-        bm.map.apply(inp, dim, pcs);
-        for ((p, pc), b) in inp
-            .chunks_exact(per_in)
-            .zip(pcs.chunks_exact(per_piece))
-            .zip(bnd.iter_mut())
-        {
-            *b = op.curve_bound(bm, p, dim, pc, tight, &mut scratch);
+        let cs = &mut coefs[..bnd.len() * per_coef];
+        if per_coef > 0 {
+            basis.coef.apply(inp, dim, cs);
+        }
+        let values = bm.samples.matrix();
+        for (i, (p, b)) in inp.chunks_exact(per_in).zip(bnd.iter_mut()).enumerate() {
+            let c = &cs[i * per_coef..(i + 1) * per_coef];
+            let smax = max_value_norm(values, basis.rank, c, dim);
+            *b = op.curve_bound(bm, p, dim, smax);
         }
     }
     check_output(input, dim, output)

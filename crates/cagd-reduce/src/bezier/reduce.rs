@@ -125,7 +125,7 @@ pub fn reduce_with(curve: &BezierCurve, opts: &ReduceOptions) -> Result<Reductio
     let op = operator(opts.method, curve.degree(), opts.target)?;
     finish(curve, opts, |pts, dim| {
         let q = op.apply(pts, dim)?;
-        let bound = op.direct_bound(pts, &q, dim, opts.bound);
+        let bound = op.certified_bound(pts, dim, opts.bound)?;
         Ok((q, bound, opts.method))
     })
 }
