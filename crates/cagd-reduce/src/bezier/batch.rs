@@ -6,7 +6,7 @@
 
 use cagd_core::{Error, Result};
 
-use super::bound::{BoundLevel, max_value_norm};
+use super::bound::{BoundLevel, max_row_norm, safe_range};
 use super::gemm::all_finite;
 use super::operator::Operator;
 
@@ -96,9 +96,12 @@ pub fn reduce_batch_with_bounds(
     };
     let map = op.map();
     let basis = op.error_basis();
-    let (per_in, per_out, per_coef) = (map.cols() * dim, map.rows() * dim, basis.rank * dim);
+    let nodes = bm.samples.rows();
+    let (per_in, per_out) = (map.cols() * dim, map.rows() * dim);
+    let (per_coef, per_value) = (basis.rank * dim, nodes * dim);
     let block = map.block_curves(dim);
     let mut coefs = vec![0.0; block.min(n_curves) * per_coef];
+    let mut values = vec![0.0; block.min(n_curves) * per_value];
     for ((inp, out), bnd) in input
         .chunks(block * per_in)
         .zip(output.chunks_mut(block * per_out))
@@ -106,14 +109,18 @@ pub fn reduce_batch_with_bounds(
     {
         map.apply(inp, dim, out);
         let cs = &mut coefs[..bnd.len() * per_coef];
+        let vs = &mut values[..bnd.len() * per_value];
         if per_coef > 0 {
             basis.coef.apply(inp, dim, cs);
+            bm.samples.apply(cs, dim, vs);
         }
-        let values = bm.samples.matrix();
         for (i, (p, b)) in inp.chunks_exact(per_in).zip(bnd.iter_mut()).enumerate() {
-            let c = &cs[i * per_coef..(i + 1) * per_coef];
-            let smax = max_value_norm(values, basis.rank, c, dim);
+            let smax = max_row_norm(&vs[i * per_value..(i + 1) * per_value], dim);
             *b = op.curve_bound(bm, p, dim, smax);
+            if !safe_range(p) {
+                // Norms could overflow or underflow: the scaled per-curve route.
+                *b = op.one_bound(bm, p, dim);
+            }
         }
     }
     check_output(input, dim, output)

@@ -9,9 +9,15 @@ mod nodes;
 
 use cagd_core::Result;
 
-pub(crate) use nodes::max_value_norm;
+pub(crate) use nodes::{max_row_norm, max_value_norm};
 
 use super::operator::{BoundMap, Operator, check_len, max_norm};
+
+/// Largest coordinates outside `[SAFE_LOW, SAFE_HIGH]` are scaled before the norms (see
+/// [`Operator::one_bound`]): inside, no square of a value the bound computes overflows,
+/// and rounding stays relative (no underflow to subnormals).
+const SAFE_LOW: f64 = 3.5e-136; // about 2^-450
+const SAFE_HIGH: f64 = 2.9e135; // about 2^450
 
 /// The secant factor of [`BoundLevel::Fast`]: the bound is at most this times the true
 /// error (plus the rounding allowance).
@@ -72,6 +78,28 @@ impl Operator {
         let Some(bm) = self.bound_map(level) else {
             return Ok(None);
         };
+        Ok(Some(self.one_bound(bm, points, dim)))
+    }
+
+    /// The node bound of one curve, through the fused loop; input whose largest coordinate
+    /// is outside `[2^-450, 2^450]` is first scaled by a power of two (exact), so that no
+    /// square in the norms overflows or underflows, and the bound scaled back.
+    pub(crate) fn one_bound(&self, bm: &BoundMap, points: &[f64], dim: usize) -> f64 {
+        if safe_range(points) {
+            return self.fused_bound(bm, points, dim);
+        }
+        let amax = points.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+        // 2^-e with e the binary exponent of amax: the scaled maximum is in [1, 2).
+        let e = amax.log2().floor() as i32;
+        // In two factors, each a normal number for every exponent (|e| <= 1075).
+        let (s1, s2) = (2f64.powi(-e / 2), 2f64.powi(-e + e / 2));
+        let scaled: Vec<f64> = points.iter().map(|x| x * s1 * s2).collect();
+        let b = self.fused_bound(bm, &scaled, dim) / s1 / s2;
+        // Subnormal rounding of the reduced points in the caller's scale: far below this.
+        b + f64::MIN_POSITIVE
+    }
+
+    fn fused_bound(&self, bm: &BoundMap, points: &[f64], dim: usize) -> f64 {
         let basis = self.error_basis();
         let mut stack = [0.0; 96];
         let mut heap;
@@ -84,7 +112,7 @@ impl Operator {
         };
         basis.coef.apply_loop(points, dim, coef);
         let smax = max_value_norm(bm.samples.matrix(), basis.rank, coef, dim);
-        Ok(Some(self.curve_bound(bm, points, dim, smax)))
+        self.curve_bound(bm, points, dim, smax)
     }
 
     /// The bound of one curve from the largest computed node value `smax` of its error
@@ -96,4 +124,12 @@ impl Operator {
             _ => node,
         }
     }
+}
+
+/// Whether the largest coordinate of `points` is zero or inside the range where the node
+/// bound needs no scaling (see [`Operator::one_bound`]); non-finite input counts as safe
+/// (its bound is `+inf`, or the caller reports it).
+pub(crate) fn safe_range(points: &[f64]) -> bool {
+    let amax = points.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+    amax == 0.0 || (SAFE_LOW..=SAFE_HIGH).contains(&amax) || !amax.is_finite()
 }
