@@ -1,6 +1,6 @@
 //! The batch entry points: one operator applied to many curves stored contiguously through
 //! the GEMM data path of `gemm.rs` ([`reduce_batch`]), optionally with a certified bound
-//! per curve from one more GEMM ([`reduce_batch_with_bounds`]); [`Operator::apply_into`]
+//! per curve from two more small GEMMs ([`reduce_batch_with_bounds`]); [`Operator::apply_into`]
 //! and [`Operator::apply`] (one curve) are defined here, on top of it, so that `operator/`
 //! does not depend on this module.
 
@@ -61,11 +61,12 @@ pub fn reduce_batch(op: &Operator, input: &[f64], dim: usize, output: &mut [f64]
 
 /// [`reduce_batch`] plus, per curve `c`, a certified upper bound `bounds[c]` of
 /// `max_t ||P_c(t) - Q_c(t)||` (Euclidean, in the space of the given points, the `f64`
-/// rounding of `Q_c` included) at `level` (see [`BoundLevel`]; the same number
-/// [`Operator::certified_bound`] gives for that curve). The bound is one more GEMM per
-/// block of curves (the error curve's pieces, [`BoundLevel::Fast`]), plus, at
-/// [`BoundLevel::Tight`], midpoint splits of the few pieces that may hold the maximum.
-/// A bound that overflows is `+inf`.
+/// rounding of `Q_c` included) at `level` (see [`BoundLevel`]; the number
+/// [`Operator::certified_bound`] gives for that curve up to the order of its sums). The
+/// bound is two more small GEMMs per block of curves (the error curve's `n - m`
+/// coefficient points, then its values at the level's nodes) and one pass over the
+/// values; curves with coordinates beyond `2^±450` take the scaled per-curve route. A
+/// bound that overflows is `+inf`.
 ///
 /// # Errors
 /// As [`reduce_batch`], and [`Error::LengthMismatch`] when `bounds.len()` is not the number
