@@ -40,10 +40,15 @@ fn check(method: Method, points: &[f64], dim: usize, m: usize, allowance: f64, w
         .certified_bound(points, dim, BoundLevel::Tight)
         .unwrap()
         .unwrap();
-    assert_eq!(
-        tight, again,
-        "{what}: reduce_with and certified_bound differ"
-    );
+    // reduce_with may take the smaller hull bound of the formed error curve when the node
+    // bound is mostly rounding allowance (nearly degree m); otherwise they are equal.
+    assert!(tight <= again, "{what}: reduce_with above certified_bound");
+    if tight < again {
+        assert!(
+            e < 1e-9 * pmax(points, dim),
+            "{what}: hull route on a large error"
+        );
+    }
     // Independent measurement, on the reduced curve as returned.
     assert_eq!(max_deviation(&curve, &red.curve).unwrap(), e);
     assert!(

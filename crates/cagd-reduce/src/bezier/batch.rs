@@ -122,6 +122,8 @@ pub fn reduce_batch_with_bounds(
                 // Norms could overflow or underflow: the scaled per-curve route.
                 *b = op.one_bound(bm, p, dim);
             }
+            let q = &out[i * per_out..(i + 1) * per_out];
+            *b = op.with_reduced(bm, p, q, dim, *b);
         }
     }
     check_output(input, dim, output)

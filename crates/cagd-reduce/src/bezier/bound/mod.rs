@@ -11,7 +11,7 @@ use cagd_core::Result;
 
 pub(crate) use nodes::{max_row_norm, max_value_norm};
 
-use super::operator::{BoundMap, Operator, check_len, max_norm};
+use super::operator::{BoundMap, Operator, check_len, hull_bound, max_norm};
 
 /// Largest coordinates outside `[SAFE_LOW, SAFE_HIGH]` are scaled before the norms (see
 /// [`Operator::one_bound`]): inside, no square of a value the bound computes overflows,
@@ -89,8 +89,10 @@ impl Operator {
             return self.fused_bound(bm, points, dim);
         }
         let amax = points.iter().fold(0.0f64, |a, x| a.max(x.abs()));
-        // 2^-e with e the binary exponent of amax: the scaled maximum is in [1, 2).
-        let e = amax.log2().floor() as i32;
+        // 2^-e with e the binary exponent of amax: the scaled maximum is in [1, 2) (for a
+        // subnormal amax, in [2^-52, 1)).
+        let biased = i32::try_from((amax.to_bits() >> 52) & 0x7ff).unwrap_or(1023);
+        let e = biased - 1023;
         // In two factors, each a normal number for every exponent (|e| <= 1075).
         let (s1, s2) = (2f64.powi(-e / 2), 2f64.powi(-e + e / 2));
         let scaled: Vec<f64> = points.iter().map(|x| x * s1 * s2).collect();
@@ -113,6 +115,26 @@ impl Operator {
         basis.coef.apply_loop(points, dim, coef);
         let smax = max_value_norm(bm.samples.matrix(), basis.rank, coef, dim);
         self.curve_bound(bm, points, dim, smax)
+    }
+
+    /// `bound` (a node bound of `points`) or, when it is mostly rounding allowance (a
+    /// curve of nearly degree `m`: the operator-sized allowance exceeds a 64th of it), the
+    /// smaller of it and the hull bound of the error curve `P - E Q` formed from the
+    /// computed reduced points (seed 000 §14.4.3, refined by subdivision; its allowance is
+    /// relative to `max ||P_j||` and `max ||Q_i||` only). Both are true bounds.
+    pub(crate) fn with_reduced(
+        &self,
+        bm: &BoundMap,
+        points: &[f64],
+        reduced: &[f64],
+        dim: usize,
+        bound: f64,
+    ) -> f64 {
+        let allowance = (bm.sec * bm.inner + bm.outer) * max_norm(points, dim);
+        if bound > 64.0 * allowance || !bound.is_finite() || !safe_range(points) {
+            return bound;
+        }
+        bound.min(hull_bound(points, reduced, dim))
     }
 
     /// The bound of one curve from the largest computed node value `smax` of its error

@@ -54,6 +54,10 @@ impl BoundMap {
         let nf = n as f64;
         // Smallest N with sec(n (pi/(2N) + margin)) <= ratio.
         let half = (1.0 / ratio).acos() / nf - NODE_ANGLE_MARGIN;
+        #[allow(
+            clippy::cast_possible_truncation,
+            reason = "n <= 64 and ratio >= 1.075 give N < 300"
+        )]
         let big_n = ((std::f64::consts::FRAC_PI_2 / half).ceil() as usize).max(n + 1);
         let angle = nf * (std::f64::consts::PI / (2.0 * big_n as f64) + NODE_ANGLE_MARGIN);
         let sec = (1.0 / angle.cos()) * (1.0 + 8.0 * f64::EPSILON);
@@ -132,6 +136,7 @@ mod tests {
         for n in [1usize, 2, 5, 10, 30] {
             for ratio in [1.25, 1.075] {
                 let angle_half = (1.0_f64 / ratio).acos() / n as f64;
+                #[allow(clippy::cast_possible_truncation, reason = "N < 300")]
                 let big_n = ((std::f64::consts::FRAC_PI_2 / angle_half).ceil() as usize).max(n + 1);
                 let sec = 1.0 / (n as f64 * std::f64::consts::PI / (2.0 * big_n as f64)).cos();
                 assert!(sec <= ratio * (1.0 + 1e-9));
