@@ -13,6 +13,8 @@
 //! rounding level, and its residual `R - U G` is measured and carried into the bound
 //! (`rho`), so a method that is not a projection only loosens the bound.
 
+use nalgebra::DMatrix;
+
 use super::super::gemm::LinearMap;
 
 /// `R = U G` up to the measured residual `rho` (per unit of `max_j ||P_j||`).
@@ -38,8 +40,9 @@ impl ErrorBasis {
     /// of absolute values are at most `op_norm`.
     ///
     /// `rho`: the computed `R^` differs from the exact `I - E A` by at most
-    /// `(3 (n - m) + 1) eps (1 + op_norm)` per row sum (elevation steps are convex
-    /// combinations with rounded weights, then one subtraction); `fl(U G)` differs from
+    /// `(m + 6) eps (1 + op_norm)` per row sum (coefficients within `3 eps`, at most
+    /// `m + 1` terms summed, then one subtraction; the allowance used is the larger
+    /// `(3 (n - m) + m + 6) eps (1 + op_norm)`); `fl(U G)` differs from
     /// `U G` by `r eps sum_k |U_ik| g_k`; the measured row sums of `|R^ - fl(U G)|` by
     /// `(n + 3) eps` of themselves. `rho` is twice the sum of the three.
     pub(crate) fn new(a: &[f64], n: usize, m: usize, op_norm: f64) -> Self {
@@ -47,12 +50,16 @@ impl ErrorBasis {
         let r_mat = residual_matrix(a, n, m);
         let (u, rank) = orthonormal_range(&r_mat, n1, n - m);
         // G = U^T R, row-major r x n1.
-        let mut g = vec![0.0; rank * n1];
-        for k in 0..rank {
-            for j in 0..n1 {
-                g[k * n1 + j] = (0..n1).map(|i| u[i * rank + k] * r_mat[i * n1 + j]).sum();
-            }
-        }
+        // G = U^T R and U G through the GEMM kernel (the rounding bounds below hold for
+        // any order of the sums).
+        let rm = DMatrix::from_row_slice(n1, n1, &r_mat);
+        let um = DMatrix::from_row_slice(n1, rank, &u);
+        let gm = um.transpose() * &rm;
+        let ugm = &um * &gm;
+        let g: Vec<f64> = (0..rank)
+            .flat_map(|k| (0..n1).map(move |j| (k, j)))
+            .map(|(k, j)| gm[(k, j)])
+            .collect();
         let gsum: Vec<f64> = g
             .chunks_exact(n1)
             .map(|row| row.iter().map(|x| x.abs()).sum())
@@ -62,8 +69,7 @@ impl ErrorBasis {
             let urow = &u[i * rank..(i + 1) * rank];
             let mut row = 0.0;
             for j in 0..n1 {
-                let ugij: f64 = (0..rank).map(|k| urow[k] * g[k * n1 + j]).sum();
-                row += (r_mat[i * n1 + j] - ugij).abs();
+                row += (r_mat[i * n1 + j] - ugm[(i, j)]).abs();
             }
             measured = measured.max(row);
             ug = ug.max(urow.iter().zip(&gsum).map(|(x, s)| x.abs() * s).sum());
@@ -71,7 +77,7 @@ impl ErrorBasis {
         let eps = f64::EPSILON;
         let rho = 2.0
             * (measured * (1.0 + (n as f64 + 3.0) * eps)
-                + (3.0 * (n - m) as f64 + 1.0) * eps * (1.0 + op_norm)
+                + (3.0 * (n - m) as f64 + m as f64 + 6.0) * eps * (1.0 + op_norm)
                 + rank as f64 * eps * ug);
         Self {
             n,
@@ -84,23 +90,28 @@ impl ErrorBasis {
     }
 }
 
-/// `R^ = I - E A` in `f64`, row-major `(n+1) x (n+1)` (column `j` is the error curve of
-/// the unit input `e_j`).
+/// `R^ = I - E A` in `f64`, row-major `(n+1) x (n+1)`, with the elevation coefficients
+/// `E_il = C(m,l) C(n-m,i-l) / C(n,i)` computed once (each within `3 eps` of itself: the
+/// binomials are exact in `u128`, then two roundings and a quotient).
 fn residual_matrix(a: &[f64], n: usize, m: usize) -> Vec<f64> {
-    let (n1, m1) = (n + 1, m + 1);
-    let mut r = vec![0.0; n1 * n1];
-    let mut col = vec![0.0; m1];
-    let mut elevated = vec![0.0; n1];
-    for j in 0..n1 {
-        for (i, c) in col.iter_mut().enumerate() {
-            *c = a[i * n1 + j];
+    let (n1, r) = (n + 1, n - m);
+    let mut out = vec![0.0; n1 * n1];
+    for i in 0..n1 {
+        let band = i.saturating_sub(r)..=i.min(m);
+        let coef: Vec<(usize, f64)> = band
+            .map(|l| (l, cagd_core::kernel::elevation_coefficient(m, r, i, l)))
+            .collect();
+        let row = &mut out[i * n1..(i + 1) * n1];
+        for (l, e) in &coef {
+            for (x, y) in row.iter_mut().zip(&a[l * n1..(l + 1) * n1]) {
+                *x += e * y;
+            }
         }
-        cagd_core::kernel::elevate(&col, 1, n - m, &mut elevated);
-        for (i, e) in elevated.iter().enumerate() {
-            r[i * n1 + j] = f64::from(u8::from(i == j)) - e;
+        for (j, x) in row.iter_mut().enumerate() {
+            *x = f64::from(u8::from(i == j)) - *x;
         }
     }
-    r
+    out
 }
 
 /// An orthonormal basis of the range of the square matrix `r` (`n1 x n1`, row-major) by

@@ -14,6 +14,8 @@
 //! bound is within `sec(n pi / (2N))` of the true maximum, whatever the curve: `N` is
 //! chosen from the ratio a level asks (1.25 fast, 1.075 tight).
 
+use nalgebra::DMatrix;
+
 use super::super::gemm::LinearMap;
 use super::error_basis::ErrorBasis;
 
@@ -63,7 +65,8 @@ impl BoundMap {
         let sec = (1.0 / angle.cos()) * (1.0 + 8.0 * f64::EPSILON);
         let binom: Vec<f64> = (0..=n).map(|i| cagd_core::binomial_f64(n, i)).collect();
         let (mut tp, mut sp) = (vec![1.0; n + 1], vec![1.0; n + 1]);
-        let mut v = vec![0.0; (big_n + 1) * r];
+        // The Bernstein values at the nodes, then V = B U through the GEMM kernel.
+        let mut bern = DMatrix::zeros(big_n + 1, n + 1);
         for j in 0..=big_n {
             let t = node(j, big_n);
             let s = 1.0 - t;
@@ -71,15 +74,15 @@ impl BoundMap {
                 tp[i] = tp[i - 1] * t;
                 sp[i] = sp[i - 1] * s;
             }
-            let row = &mut v[j * r..(j + 1) * r];
             for i in 0..=n {
-                let b = binom[i] * tp[i] * sp[n - i];
-                let urow = &basis.u[i * r..(i + 1) * r];
-                for (x, u) in row.iter_mut().zip(urow) {
-                    *x += b * u;
-                }
+                bern[(j, i)] = binom[i] * tp[i] * sp[n - i];
             }
         }
+        let vm = bern * DMatrix::from_row_slice(n + 1, r, &basis.u);
+        let v: Vec<f64> = (0..=big_n)
+            .flat_map(|j| (0..r).map(move |k| (j, k)))
+            .map(|(j, k)| vm[(j, k)])
+            .collect();
         let umax: Vec<f64> = (0..r)
             .map(|k| {
                 (0..=n)
