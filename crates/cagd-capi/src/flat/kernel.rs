@@ -344,6 +344,10 @@ pub(super) fn reduce_point_major(
     let a = op.matrix();
     let (n1, m1) = (op.degree_from() + 1, op.degree_to() + 1);
     let width = block.cols.len();
+    if width == 0 {
+        // No curves in the block (an empty batch has no rows at all).
+        return Ok(());
+    }
     assert!(
         input.len() == n1 * row_len && block.n_rows == m1 && block.row_len == row_len,
         "point-major sizes"
