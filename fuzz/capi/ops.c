@@ -194,6 +194,15 @@ static double check_report(const struct CagdReport *rep) {
     if (sb == CAGD_OK && se == CAGD_OK && e > b * (1.0 + 1e-12)) {
         fz_fail("measured error %.17g exceeds the certified bound %.17g", e, b);
     }
+    /* A B-spline report's step bound, checked here so that a violation names the
+     * function that made the report (not a later cagd_report_spline call). */
+    double seg = -1.0;
+    size_t pieces = 0, si = 0, so = 0;
+    CagdStatus ss = cagd_report_spline(rep, &seg, &pieces, &si, &so);
+    check_raw(ss, "cagd_report_spline");
+    if (ss == CAGD_OK && (!isfinite(seg) || seg < 0.0)) {
+        fz_fail("report segment bound %g is not finite and >= 0", seg);
+    }
     return sb == CAGD_OK ? b : -1.0;
 }
 
@@ -2579,6 +2588,7 @@ static int heavy(int i) {
 }
 
 static int only = -2; /* CAGD_FUZZ_ONLY=<function>: run that operation alone */
+static int trace = -1; /* CAGD_FUZZ_TRACE=1: name every call on stderr (to read a replay) */
 
 void fz_op_random(void) {
     if (only == -2) {
@@ -2593,6 +2603,13 @@ void fz_op_random(void) {
     while ((heavy(i) && fz_r(16) != 0) ||
            (i == FN_cagd_bsplinesurface_to_polynomial && fz_r(16) != 0)) {
         i = (int)fz_r(FN_COUNT);
+    }
+    if (trace < 0) {
+        const char *t = getenv("CAGD_FUZZ_TRACE");
+        trace = t != NULL && t[0] == '1';
+    }
+    if (trace) {
+        fprintf(stderr, "call %llu: %s\n", (unsigned long long)fz.session_call, NAMES[i]);
     }
     fz_begin(i);
     clock_t t0 = clock();

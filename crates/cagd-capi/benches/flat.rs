@@ -273,5 +273,90 @@ fn batches(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, single, batches);
+/// The six degree pairs of issue 17 and OCCT's times for them are cagd-reduce's; here the
+/// batch reductions of `cagd_bezier_reduce_batch` (1 thread) in both layouts against the
+/// GEMM floor: the same operator applied to the same curves laid out point-major by one
+/// `matrixmultiply::dgemm` call (the kernel both layouts use).
+const PAIRS: [(usize, usize); 6] = [(4, 3), (5, 4), (10, 5), (15, 10), (20, 10), (30, 15)];
+
+fn gemm_floor(a: &[f64], n1: usize, m1: usize, p: &[f64], q: &mut [f64]) {
+    let cols = p.len() / n1;
+    let s = |x: usize| isize::try_from(x).unwrap_or(isize::MAX);
+    // SAFETY: `a` is m1 x n1, `p` n1 x cols, `q` m1 x cols, all row-major and contiguous.
+    unsafe {
+        matrixmultiply::dgemm(
+            m1,
+            n1,
+            cols,
+            1.0,
+            a.as_ptr(),
+            s(n1),
+            1,
+            p.as_ptr(),
+            s(cols),
+            1,
+            0.0,
+            q.as_mut_ptr(),
+            s(cols),
+            1,
+        );
+    }
+}
+
+fn reduce_pairs(c: &mut Criterion) {
+    for (n, m) in PAIRS {
+        let o = options(m);
+        let op = cagd_reduce::operator(cagd_reduce::Method::L2 { r: 0, p: 0 }, n, m).unwrap();
+        let (n1, m1) = (n + 1, m + 1);
+        let input = random_input(N_CURVES * n1 * DIM, 3);
+        let mut pm = vec![0.0; input.len()];
+        for cc in 0..N_CURVES {
+            for j in 0..n1 {
+                for d in 0..DIM {
+                    pm[(j * N_CURVES + cc) * DIM + d] = input[(cc * n1 + j) * DIM + d];
+                }
+            }
+        }
+        let mut out = vec![0.0; N_CURVES * m1 * DIM];
+        let (mut out2, mut out3) = (out.clone(), out.clone());
+        let pml = CagdBatchLayout::LAYOUT_POINT_MAJOR;
+        let cml = CagdBatchLayout::LAYOUT_CURVE_MAJOR;
+        let mut group = c.benchmark_group(format!("reduce_batch_n{n}_m{m}"));
+        group.sample_size(10);
+        group.bench_function("point_major", |b| {
+            b.iter(|| batch_call(black_box(&pm), n, pml, Ok(&o), 1, &mut out))
+        });
+        group.finish();
+        let (mut copy_in, mut copy_out, zeros) = (
+            vec![0.0; input.len()],
+            vec![0.0; out.len()],
+            vec![0.0; out.len()],
+        );
+        let t = interleaved(
+            15,
+            &mut [
+                &mut || batch_call(black_box(&pm), n, pml, Ok(&o), 1, &mut out),
+                &mut || batch_call(black_box(&input), n, cml, Ok(&o), 1, &mut out2),
+                &mut || gemm_floor(op.matrix(), n1, m1, black_box(&pm), &mut out3),
+                &mut || {
+                    copy_in.copy_from_slice(black_box(&input));
+                    copy_out.copy_from_slice(black_box(&zeros));
+                    black_box((&copy_in, &copy_out));
+                },
+            ],
+        );
+        let [tp, tcm, tg, tc] = [t[0], t[1], t[2], t[3]].map(|x| x / N_CURVES as f64);
+        println!(
+            "reduce_batch ({n:2},{m:2}) 1 thread: point-major {tp:6.2} ns/curve ({:.2}x GEMM \
+             floor, {:.2}x copy), curve-major {tcm:6.2} ns/curve ({:.2}x floor); GEMM floor \
+             {tg:6.2} ns/curve ({:.2}x copy), copy {tc:.2} ns/curve",
+            tp / tg,
+            tp / tc,
+            tcm / tg,
+            tg / tc
+        );
+    }
+}
+
+criterion_group!(benches, single, batches, reduce_pairs);
 criterion_main!(benches);

@@ -60,7 +60,6 @@ fn batch_bounds_are_true_bounds_on_thousands_of_random_curves() {
                     fast[c],
                     tight[c]
                 );
-                assert!(tight[c] <= fast[c] * (1.0 + 1e-12), "tight above fast");
                 rf.push(fast[c] / measured);
                 rt.push(tight[c] / measured);
             }
@@ -70,8 +69,18 @@ fn batch_bounds_are_true_bounds_on_thousands_of_random_curves() {
                  tight min {:.4} mean {:.4} max {:.4}",
                 f.0, f.1, f.2, t.0, t.1, t.2
             );
-            // The tight level's promise (1.04 plus rounding), checked with margin 1.1.
-            assert!(t.2 <= 1.1, "{method:?} ({n},{m}): tight ratio {}", t.2);
+            // The levels' promises (secant factors 1.25 and 1.075, plus rounding far below
+            // these errors of order 1e-2 relative).
+            assert!(
+                f.2 <= 1.25 * (1.0 + 1e-9),
+                "{method:?} ({n},{m}): fast ratio {}",
+                f.2
+            );
+            assert!(
+                t.2 <= 1.075 * (1.0 + 1e-9),
+                "{method:?} ({n},{m}): tight ratio {}",
+                t.2
+            );
         }
     }
 }

@@ -7,8 +7,8 @@ use cagd_core::check_degree;
 use cagd_reduce::{Operator, operator};
 
 use super::kernel::{
-    Overflow, PointMajorBlock, elevate_curve_major, elevate_point_major, elevation_terms,
-    reduce_curve_major, reduce_point_major,
+    Overflow, PointMajorBlock, all_finite, elevate_curve_major, elevate_point_major,
+    elevation_terms, reduce_curve_major, reduce_point_major,
 };
 use super::layout::CagdBatchLayout;
 use super::threads::{block_count, block_range, run_blocks};
@@ -52,10 +52,11 @@ fn check_finite(b: &Batch<'_>) -> CResult<()> {
     let blocks = block_count(b.n_threads, len, MIN_DOUBLES_PER_SCAN);
     let found = run_blocks(b.n_threads, (0..blocks).collect(), |k| {
         let (s, e) = block_range(k, blocks, len);
-        b.input[s..e]
-            .iter()
-            .position(|x| !x.is_finite())
-            .map(|p| s + p)
+        let part = &b.input[s..e];
+        if all_finite(part) {
+            return None;
+        }
+        part.iter().position(|x| !x.is_finite()).map(|p| s + p)
     });
     match found.into_iter().flatten().next() {
         None => Ok(()),
@@ -96,23 +97,13 @@ fn run(b: &Batch<'_>, op: BatchOp<'_>, out: &mut [f64]) -> CResult<()> {
         }
         CagdBatchLayout::LAYOUT_POINT_MAJOR => {
             let row_len = b.n_curves * b.dim;
-            let mut parts: Vec<PointMajorBlock<'_>> = (0..blocks)
+            let ranges = (0..blocks)
                 .map(|k| {
                     let (s, e) = block_range(k, blocks, b.n_curves);
-                    PointMajorBlock {
-                        cols: s * b.dim..e * b.dim,
-                        rows: Vec::with_capacity(b.m1),
-                    }
+                    s * b.dim..e * b.dim
                 })
                 .collect();
-            for row in out.chunks_exact_mut(row_len.max(1)) {
-                let mut rest = row;
-                for part in &mut parts {
-                    let (head, tail) = std::mem::take(&mut rest).split_at_mut(part.cols.len());
-                    part.rows.push(head);
-                    rest = tail;
-                }
-            }
+            let parts = PointMajorBlock::split(out, row_len, ranges);
             run_blocks(b.n_threads, parts, |part| match op {
                 BatchOp::Reduce(a) => reduce_point_major(a, b.input, row_len, b.dim, part),
                 BatchOp::Elevate(terms) => {

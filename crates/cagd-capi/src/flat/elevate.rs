@@ -3,9 +3,9 @@
 
 use cagd_core::{BezierCurve, check_degree};
 
-use super::input::{curve_in, weights_buffer};
+use super::input::{curve_in, result_weights};
 use super::kernel::{Overflow, elevate_one};
-use crate::boundary::{OUT, boundary, checked_len, disjoint, nonnull, slice_out};
+use crate::boundary::{OUT, boundary, checked_len, nonnull, slice_out};
 use crate::status::CagdStatus;
 
 /// Elevates one Bézier curve of degree `n = n_points - 1` by `r` degrees
@@ -78,17 +78,8 @@ pub unsafe extern "C" fn cagd_bezier_elevate(
         let m1 = n + r + 1;
         let needed = checked_len(m1, dim, "(n_points + r) * dim")?;
         let dst = dst.take(needed)?;
-        let rational = curve.weights.is_some();
         // SAFETY: as above.
-        let w_dst = unsafe { weights_buffer(rational, weights_out, weights_out_cap, m1) }?;
-        let w_len = if rational { m1 } else { 0 };
-        disjoint(
-            dst.as_ptr(),
-            needed,
-            weights_out,
-            w_len,
-            "`out` and `weights_out`",
-        )?;
+        let (w_dst, _) = unsafe { result_weights(&curve, dst, weights_out, weights_out_cap, m1) }?;
         match (curve.weights, w_dst) {
             (Some(w), Some(wd)) => {
                 let c = BezierCurve::new_rational(curve.points.to_vec(), w.to_vec(), dim)?;

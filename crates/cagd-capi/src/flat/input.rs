@@ -1,10 +1,11 @@
 //! The argument checks shared by the single-curve flat calls: a curve given as arrays
 //! (validated exactly as `cagd_curve_new` / `cagd_curve_new_rational` validate, so the
-//! statuses agree with the handle API) and the weight buffer of a rational result.
+//! statuses agree with the handle API) and the weight buffer of a rational result, checked
+//! against the points buffer.
 
 use cagd_core::{check_degree, check_points, check_weights};
 
-use crate::boundary::{CResult, Failure, points_in, slice_in};
+use crate::boundary::{CResult, Failure, disjoint, points_in, slice_in};
 use crate::status::CagdStatus;
 
 /// A validated curve given as arrays: `n + 1` points of `dim` coordinates, and the weights
@@ -67,7 +68,7 @@ pub(super) unsafe fn curve_in<'a>(
 ///
 /// # Safety
 /// `weights_out` must be NULL or point to `weights_cap` writable doubles valid for `'a`.
-pub(super) unsafe fn weights_buffer<'a>(
+unsafe fn weights_buffer<'a>(
     rational: bool,
     weights_out: *mut f64,
     weights_cap: usize,
@@ -97,4 +98,33 @@ pub(super) unsafe fn weights_buffer<'a>(
     Ok(Some(unsafe {
         std::slice::from_raw_parts_mut(weights_out, n_out)
     }))
+}
+
+/// The weight output of a single-curve flat call whose points go to `dst` (`n_out` points
+/// of `dim` doubles, already sized): [`weights_buffer`] for the curve (`None` for a
+/// polynomial one), and `out` / `weights_out` must not overlap
+/// (`CAGD_ERR_INVALID_ARGUMENT`). Returns the buffer and its length in doubles (`0` for a
+/// polynomial curve), for further overlap checks.
+///
+/// # Safety
+/// As [`weights_buffer`].
+pub(super) unsafe fn result_weights<'a>(
+    curve: &CurveIn<'_>,
+    dst: &[f64],
+    weights_out: *mut f64,
+    weights_cap: usize,
+    n_out: usize,
+) -> CResult<(Option<&'a mut [f64]>, usize)> {
+    let rational = curve.weights.is_some();
+    // SAFETY: forwarded contract.
+    let w_dst = unsafe { weights_buffer(rational, weights_out, weights_cap, n_out) }?;
+    let w_len = if rational { n_out } else { 0 };
+    disjoint(
+        dst.as_ptr(),
+        dst.len(),
+        weights_out,
+        w_len,
+        "`out` and `weights_out`",
+    )?;
+    Ok((w_dst, w_len))
 }

@@ -2,14 +2,17 @@
 //! single-curve apply of `cagd_bezier_reduce`, and the blocks of the batch calls in both
 //! layouts. Everything the batch internals of cagd-reduce offer is used here and nowhere
 //! else in the C layer (`reduce_batch` for curve-major reduction, `Operator::matrix` for
-//! point-major; cagd-core's `kernel::elevate` and `elevation_coefficient` for elevation),
+//! point-major, through the `matrixmultiply` GEMM kernel that cagd-reduce's curve-major
+//! batch uses; cagd-core's `kernel::elevate` and `elevation_coefficient` for elevation),
 //! so that a faster cagd-reduce kernel is adopted by changing this file only.
 //!
-//! No kernel here computes anything the library does not: the point-major loops form
-//! the same sums, term by term in the same order, as the curve-major library kernels, so
-//! the two layouts give equal bits (tested).
+//! No kernel here computes anything the library does not: the point-major elevation loops
+//! form the same sums, term by term in the same order, as the curve-major library kernel,
+//! so the two layouts give equal bits (tested); the point-major reduction is one GEMM of
+//! the same operator, equal to the curve-major result up to the order of the sums.
 
 use std::cell::RefCell;
+use std::marker::PhantomData;
 use std::ops::Range;
 use std::sync::Arc;
 
@@ -22,6 +25,9 @@ use crate::status::CagdStatus;
 /// Columns (doubles of one point-major row) processed together, so that the tile of the
 /// output row stays in L1 while every input row is added to it (4 KiB).
 const TILE: usize = 512;
+
+/// Bytes of output per column tile of the point-major GEMM (checked while in cache).
+const GEMM_TILE_BYTES: usize = 64 * 1024;
 
 /// A reduced or elevated coordinate that overflowed to infinity (finite input of
 /// magnitude near `f64::MAX`): the first curve of the block where it happened.
@@ -212,17 +218,119 @@ fn first_bad_curve(output: &[f64], per: usize) -> Overflow {
     }
 }
 
-/// One column block of a point-major batch: the columns `cols` (doubles of a row, a whole
-/// number of curves) of every output row.
+/// One column block of a point-major batch's output: the columns `cols` (doubles of a
+/// row, a whole number of curves) of every output row. Blocks made by
+/// [`PointMajorBlock::split`] of one output have disjoint columns, so they may be written
+/// on different threads; the output stays exclusively borrowed for `'a`.
 pub(super) struct PointMajorBlock<'a> {
     /// The columns of the block, in doubles of a row.
-    pub(super) cols: Range<usize>,
-    /// The block's part of each output row, row 0 first.
-    pub(super) rows: Vec<&'a mut [f64]>,
+    cols: Range<usize>,
+    /// Start of the whole output (row 0, column 0).
+    base: *mut f64,
+    /// Doubles per output row.
+    row_len: usize,
+    /// Number of output rows.
+    n_rows: usize,
+    _out: PhantomData<&'a mut [f64]>,
 }
 
-/// Reduces one point-major block with `op`: output row `i` is `sum_j a_ij * row_j`, every
-/// `j` in order, as cagd-reduce's `reduce_batch` sums a curve-major curve.
+// SAFETY: a block reads and writes only its own columns of the output rows (disjoint from
+// every other block of the same `split`), through a pointer derived from the exclusive
+// borrow of the whole output, which outlives it (`'a`).
+unsafe impl Send for PointMajorBlock<'_> {}
+
+impl<'a> PointMajorBlock<'a> {
+    /// The blocks of `out` (rows of `row_len` doubles) for the column ranges `ranges`,
+    /// which must be in increasing order, disjoint and within a row (checked: a panic, a
+    /// bug of the caller, not undefined behaviour).
+    pub(super) fn split(
+        out: &'a mut [f64],
+        row_len: usize,
+        ranges: Vec<Range<usize>>,
+    ) -> Vec<Self> {
+        let n_rows = out.len().checked_div(row_len).unwrap_or(0);
+        assert_eq!(n_rows * row_len, out.len(), "whole rows");
+        let mut end = 0;
+        for r in &ranges {
+            assert!(
+                r.start >= end && r.start <= r.end && r.end <= row_len,
+                "disjoint columns"
+            );
+            end = r.end;
+        }
+        let base = out.as_mut_ptr();
+        ranges
+            .into_iter()
+            .map(|cols| Self {
+                cols,
+                base,
+                row_len,
+                n_rows,
+                _out: PhantomData,
+            })
+            .collect()
+    }
+
+    /// The block's part of each output row, row 0 first.
+    fn rows(&mut self) -> Vec<&mut [f64]> {
+        (0..self.n_rows)
+            .map(|i| {
+                // SAFETY: row i's columns `cols` are inside `out` (checked in `split`),
+                // belong to this block only, and `&mut self` keeps the slices unique.
+                unsafe {
+                    std::slice::from_raw_parts_mut(
+                        self.base.add(i * self.row_len + self.cols.start),
+                        self.cols.len(),
+                    )
+                }
+            })
+            .collect()
+    }
+
+    /// The first curve (relative to the block) with a non-finite output coordinate.
+    fn check(&mut self, dim: usize) -> Result<(), Overflow> {
+        for row in self.rows() {
+            if all_finite(row) {
+                continue;
+            }
+            if let Some(pos) = row.iter().position(|x| !x.is_finite()) {
+                return Err(Overflow { curve: pos / dim });
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Whether every value is finite: `x * 0` is `0` for finite `x` and NaN otherwise, summed
+/// in eight independent lanes (vectorises; `position(!is_finite)` does not).
+pub(super) fn all_finite(x: &[f64]) -> bool {
+    let mut acc = [0.0f64; 8];
+    let mut chunks = x.chunks_exact(8);
+    for c in &mut chunks {
+        for (a, v) in acc.iter_mut().zip(c) {
+            *a += v * 0.0;
+        }
+    }
+    for (a, v) in acc.iter_mut().zip(chunks.remainder()) {
+        *a += v * 0.0;
+    }
+    acc.iter().all(|a| *a == 0.0)
+}
+
+/// A slice length (or a stride within one) as the kernel's `isize`: a slice never spans
+/// more than `isize::MAX` bytes, so this cannot fail.
+fn stride(x: usize) -> isize {
+    isize::try_from(x).unwrap_or(isize::MAX)
+}
+
+/// Reduces one point-major block with `op`: output row `i` is `sum_j a_ij * row_j`, one
+/// GEMM `Q = A P` of the `(m + 1) x (n + 1)` operator and the block's `(n + 1) x width`
+/// columns of the caller's rows (row stride `row_len`, no copy), written straight into
+/// the caller's output rows, through the `matrixmultiply` kernel (the one under
+/// cagd-reduce's curve-major GEMM; called directly because nalgebra has no kernel route
+/// for a side below 6). Sums in the kernel's order: equal to the curve-major result up to
+/// rounding. The kernel multiplies every entry (no zero skipping), so an overflow shows in
+/// the output.
 ///
 /// # Errors
 /// [`Overflow`] with the first curve (relative to the block) of a non-finite output.
@@ -234,10 +342,60 @@ pub(super) fn reduce_point_major(
     block: PointMajorBlock<'_>,
 ) -> Result<(), Overflow> {
     let a = op.matrix();
-    let n1 = op.degree_from() + 1;
-    point_major(input, row_len, dim, block, |i| {
-        (0..n1).map(move |j| (j, a[i * n1 + j]))
-    })
+    let (n1, m1) = (op.degree_from() + 1, op.degree_to() + 1);
+    let width = block.cols.len();
+    if width == 0 {
+        // No curves in the block (an empty batch has no rows at all).
+        return Ok(());
+    }
+    assert!(
+        input.len() == n1 * row_len && block.n_rows == m1 && block.row_len == row_len,
+        "point-major sizes"
+    );
+    // Column tiles whose output (m1 rows) stays in L1/L2 while it is checked for an
+    // overflow right after the kernel wrote it (a separate pass over the whole output
+    // would cost as much memory traffic as writing it).
+    let tile = (GEMM_TILE_BYTES / (8 * m1)).max(dim) / dim * dim;
+    let mut t0 = 0;
+    while t0 < width {
+        let t1 = (t0 + tile).min(width);
+        let c0 = block.cols.start + t0;
+        // SAFETY: `a` holds m1 x n1 doubles (row stride n1); the input tile is rows 0..n1
+        // of `input` at columns c0..c0 + (t1 - t0), inside the block's columns (checked
+        // above and in `split`); the output tile is the same columns of rows 0..m1 of the
+        // output, which only this block writes.
+        unsafe {
+            matrixmultiply::dgemm(
+                m1,
+                n1,
+                t1 - t0,
+                1.0,
+                a.as_ptr(),
+                stride(n1),
+                1,
+                input.as_ptr().add(c0),
+                stride(row_len),
+                1,
+                0.0,
+                block.base.add(c0),
+                stride(row_len),
+                1,
+            );
+        }
+        for i in 0..m1 {
+            // SAFETY: as above; no other reference to these doubles exists meanwhile.
+            let row =
+                unsafe { std::slice::from_raw_parts(block.base.add(i * row_len + c0), t1 - t0) };
+            if !all_finite(row) {
+                let pos = row.iter().position(|x| !x.is_finite()).unwrap_or(0);
+                return Err(Overflow {
+                    curve: (t0 + pos) / dim,
+                });
+            }
+        }
+        t0 = t1;
+    }
+    Ok(())
 }
 
 /// Elevates one point-major block with the band `terms` of [`elevation_terms`]: output
@@ -262,15 +420,16 @@ fn point_major<T, I>(
     input: &[f64],
     row_len: usize,
     dim: usize,
-    block: PointMajorBlock<'_>,
+    mut block: PointMajorBlock<'_>,
     terms: T,
 ) -> Result<(), Overflow>
 where
     T: Fn(usize) -> I,
     I: Iterator<Item = (usize, f64)>,
 {
-    let PointMajorBlock { cols, mut rows } = block;
+    let cols = block.cols.clone();
     let width = cols.len();
+    let mut rows = block.rows();
     let mut t0 = 0;
     while t0 < width {
         let t1 = (t0 + TILE).min(width);
@@ -287,11 +446,7 @@ where
         }
         t0 = t1;
     }
+    drop(rows);
     // Every output is a finite sum of finite terms unless it overflowed.
-    for row in &rows {
-        if let Some(pos) = row.iter().position(|x| !x.is_finite()) {
-            return Err(Overflow { curve: pos / dim });
-        }
-    }
-    Ok(())
+    block.check(dim)
 }

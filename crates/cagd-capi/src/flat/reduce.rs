@@ -4,7 +4,7 @@
 use cagd_core::BezierCurve;
 use cagd_reduce::reduce_with;
 
-use super::input::{curve_in, weights_buffer};
+use super::input::{curve_in, result_weights};
 use super::kernel::{apply_one, operator_for};
 use super::report::{CagdBezierReport, checked_report};
 use crate::boundary::{OUT, boundary, checked_len, disjoint, nonnull, slice_out};
@@ -106,17 +106,9 @@ pub unsafe extern "C" fn cagd_bezier_reduce(
         let m1 = o.target + 1;
         let needed = checked_len(m1, dim, "(target + 1) * dim")?;
         let dst = dst.take(needed)?;
-        let rational = curve.weights.is_some();
         // SAFETY: as above.
-        let w_dst = unsafe { weights_buffer(rational, weights_out, weights_out_cap, m1) }?;
-        let w_len = if rational { m1 } else { 0 };
-        disjoint(
-            dst.as_ptr(),
-            needed,
-            weights_out,
-            w_len,
-            "`out` and `weights_out`",
-        )?;
+        let (w_dst, w_len) =
+            unsafe { result_weights(&curve, dst, weights_out, weights_out_cap, m1) }?;
         if let Some(r) = &report {
             let (a, n) = (r.addr(), r.len());
             disjoint(dst.as_ptr(), needed, a, n, "`out` and `report_out`")?;

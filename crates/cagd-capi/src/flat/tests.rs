@@ -429,19 +429,33 @@ fn overflow_is_non_finite_with_the_curve() {
     };
     let mut out = vec![0.0; k * 3];
     let mut needed = 0;
-    for threads in [1usize, 2] {
+    // Point-major too (the GEMM runs in column tiles: the curve is found across them), in
+    // dimension 1 and 3.
+    let pm = transpose(&cm, k, n + 1, dim, false);
+    let cm3: Vec<f64> = cm.iter().flat_map(|x| [0.5, *x, -0.25]).collect();
+    let pm3 = transpose(&cm3, k, n + 1, 3, false);
+    let mut out3 = vec![0.0; k * 3 * 3];
+    for (threads, layout, input, d) in [
+        (1usize, 0, &cm, dim),
+        (2, 0, &cm, dim),
+        (1, 1, &pm, dim),
+        (2, 1, &pm, dim),
+        (1, 1, &pm3, 3),
+        (2, 1, &pm3, 3),
+    ] {
+        let o_buf = if d == 1 { &mut out } else { &mut out3 };
         // SAFETY: buffers of the documented sizes.
         let s = unsafe {
             cagd_bezier_reduce_batch(
-                cm.as_ptr(),
+                input.as_ptr(),
                 k,
                 n,
-                dim,
-                0,
+                d,
+                layout,
                 &o,
                 threads,
-                out.as_mut_ptr(),
-                out.len(),
+                o_buf.as_mut_ptr(),
+                o_buf.len(),
                 &mut needed,
             )
         };

@@ -16,8 +16,8 @@ use crate::status::CagdStatus;
 
 /// Reduces a curve of degree `n` to degree `opts->target` with `opts->method`, returning
 /// the reduced curve and a report with the certified error bound at `opts->bound_level`
-/// (default `CAGD_BOUND_TIGHT`: within 1.08× of the true error; `CAGD_BOUND_FAST`: one
-/// more linear map, typically 1.2–2.5×; `CAGD_BOUND_NONE`: no bound, the cheapest call)
+/// (default `CAGD_BOUND_TIGHT`: within 1.075× of the true error; `CAGD_BOUND_FAST`:
+/// within 1.25×, fewer nodes; `CAGD_BOUND_NONE`: no bound, the cheapest call)
 /// and, with `opts->measure`, the measured error. Rational curves are reduced in
 /// homogeneous coordinates and stay rational. The operator of each `(method, n, m)` is
 /// computed once in exact rational arithmetic and cached process-wide (thread-safe).
@@ -90,7 +90,8 @@ pub unsafe extern "C" fn cagd_curve_reduce(
 /// [`cagd_curve_reduce_batch`] with, optionally, a certified error bound per curve:
 /// reduces `n_curves` polynomial curves of one degree `n` to degree `opts->target` with
 /// one cached operator through a GEMM kernel, no per-curve allocation. With
-/// `bounds_out == NULL` it is exactly `cagd_curve_reduce_batch`.
+/// `bounds_out == NULL` it is exactly `cagd_curve_reduce_batch`; a bound costs two more
+/// small GEMMs (the error curve's coefficients and its values at the bound level's nodes).
 /// Only `opts->method`, `target`, `r`, `p`, `l1`, `l2` and (with `bounds_out`)
 /// `bound_level` are used. Rational curves: pass their homogeneous points
 /// `(w_i P_i, w_i)` as polynomial curves of dimension `dim + 1` (the bounds are then

@@ -1,12 +1,12 @@
 //! The batch entry points: one operator applied to many curves stored contiguously through
 //! the GEMM data path of `gemm.rs` ([`reduce_batch`]), optionally with a certified bound
-//! per curve from one more GEMM ([`reduce_batch_with_bounds`]); [`Operator::apply_into`]
+//! per curve from two more small GEMMs ([`reduce_batch_with_bounds`]); [`Operator::apply_into`]
 //! and [`Operator::apply`] (one curve) are defined here, on top of it, so that `operator/`
 //! does not depend on this module.
 
 use cagd_core::{Error, Result};
 
-use super::bound::{BoundLevel, Scratch};
+use super::bound::{BoundLevel, max_row_norm, safe_range};
 use super::gemm::all_finite;
 use super::operator::Operator;
 
@@ -61,11 +61,12 @@ pub fn reduce_batch(op: &Operator, input: &[f64], dim: usize, output: &mut [f64]
 
 /// [`reduce_batch`] plus, per curve `c`, a certified upper bound `bounds[c]` of
 /// `max_t ||P_c(t) - Q_c(t)||` (Euclidean, in the space of the given points, the `f64`
-/// rounding of `Q_c` included) at `level` (see [`BoundLevel`]; the same number
-/// [`Operator::certified_bound`] gives for that curve). The bound is one more GEMM per
-/// block of curves (the error curve's pieces, [`BoundLevel::Fast`]), plus, at
-/// [`BoundLevel::Tight`], midpoint splits of the few pieces that may hold the maximum.
-/// A bound that overflows is `+inf`.
+/// rounding of `Q_c` included) at `level` (see [`BoundLevel`]; the number
+/// [`Operator::certified_bound`] gives for that curve up to the order of its sums). The
+/// bound is two more small GEMMs per block of curves (the error curve's `n - m`
+/// coefficient points, then its values at the level's nodes) and one pass over the
+/// values; curves with coordinates beyond `2^±450` take the scaled per-curve route. A
+/// bound that overflows is `+inf`.
 ///
 /// # Errors
 /// As [`reduce_batch`], and [`Error::LengthMismatch`] when `bounds.len()` is not the number
@@ -95,25 +96,34 @@ pub fn reduce_batch_with_bounds(
         });
     };
     let map = op.map();
-    let (per_in, per_out, per_piece) = (map.cols() * dim, map.rows() * dim, bm.map.rows() * dim);
+    let basis = op.error_basis();
+    let nodes = bm.samples.rows();
+    let (per_in, per_out) = (map.cols() * dim, map.rows() * dim);
+    let (per_coef, per_value) = (basis.rank * dim, nodes * dim);
     let block = map.block_curves(dim);
-    let mut pieces = vec![0.0; block.min(n_curves) * per_piece];
-    let mut scratch = Scratch::default();
-    let tight = level == BoundLevel::Tight;
+    let mut coefs = vec![0.0; block.min(n_curves) * per_coef];
+    let mut values = vec![0.0; block.min(n_curves) * per_value];
     for ((inp, out), bnd) in input
         .chunks(block * per_in)
         .zip(output.chunks_mut(block * per_out))
         .zip(bounds.chunks_mut(block))
     {
         map.apply(inp, dim, out);
-        let pcs = &mut pieces[..bnd.len() * per_piece];
-        bm.map.apply(inp, dim, pcs);
-        for ((p, pc), b) in inp
-            .chunks_exact(per_in)
-            .zip(pcs.chunks_exact(per_piece))
-            .zip(bnd.iter_mut())
-        {
-            *b = op.curve_bound(bm, p, dim, pc, tight, &mut scratch);
+        let cs = &mut coefs[..bnd.len() * per_coef];
+        let vs = &mut values[..bnd.len() * per_value];
+        if per_coef > 0 {
+            basis.coef.apply(inp, dim, cs);
+            bm.samples.apply(cs, dim, vs);
+        }
+        for (i, (p, b)) in inp.chunks_exact(per_in).zip(bnd.iter_mut()).enumerate() {
+            let smax = max_row_norm(&vs[i * per_value..(i + 1) * per_value], dim);
+            *b = op.curve_bound(bm, p, dim, smax);
+            if !safe_range(p) {
+                // Norms could overflow or underflow: the scaled per-curve route.
+                *b = op.one_bound(bm, p, dim);
+            }
+            let q = &out[i * per_out..(i + 1) * per_out];
+            *b = op.with_reduced(bm, p, q, dim, *b);
         }
     }
     check_output(input, dim, output)

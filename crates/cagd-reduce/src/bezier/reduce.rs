@@ -125,7 +125,12 @@ pub fn reduce_with(curve: &BezierCurve, opts: &ReduceOptions) -> Result<Reductio
     let op = operator(opts.method, curve.degree(), opts.target)?;
     finish(curve, opts, |pts, dim| {
         let q = op.apply(pts, dim)?;
-        let bound = op.direct_bound(pts, &q, dim, opts.bound);
+        let bound =
+            op.certified_bound(pts, dim, opts.bound)?
+                .map(|b| match op.bound_map(opts.bound) {
+                    Some(bm) => op.with_reduced(bm, pts, &q, dim, b),
+                    None => b,
+                });
         Ok((q, bound, opts.method))
     })
 }

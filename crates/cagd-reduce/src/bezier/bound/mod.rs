@@ -1,59 +1,70 @@
-//! Certified error bounds that cost about one more GEMM (goes beyond the seed; the
-//! convex-hull argument is seed 000 §14.4.3): the bound levels ([`BoundLevel`]), the
-//! precomputed piecewise error map (`operator/error_map.rs`), the refinement of its pieces into a number
-//! (`refine.rs`), and the per-curve entry point [`Operator::certified_bound`].
+//! Certified error bounds that cost about one more small GEMM (goes beyond the seed; the
+//! error curve is that of seed 000 §14.4.3): the bound levels ([`BoundLevel`]), the
+//! error curve in a basis of its own size (`operator/error_basis.rs`), its values at
+//! Chebyshev–Lobatto nodes with the Ehlich–Zeller factor (`operator/error_map.rs`), the
+//! largest node value (`nodes.rs`), and the per-curve entry point
+//! [`Operator::certified_bound`].
 
-mod refine;
+mod nodes;
 
 use cagd_core::Result;
 
-pub(crate) use refine::{Scratch, pieces_bound, split_half};
+pub(crate) use nodes::{max_row_norm, max_value_norm};
 
-use super::operator::{BoundMap, Operator, check_len, max_norm};
+use super::operator::{BoundMap, Operator, check_len, hull_bound, max_norm};
 
-/// Midpoint-subdivision levels of the error map at [`BoundLevel::Fast`]: `2^2 = 4` pieces.
-pub(crate) const FAST_LEVELS: usize = 2;
+/// Largest coordinates outside `[SAFE_LOW, SAFE_HIGH]` are scaled before the norms (see
+/// [`Operator::one_bound`]): inside, no square of a value the bound computes overflows,
+/// and rounding stays relative (no underflow to subnormals).
+const SAFE_LOW: f64 = 3.5e-136; // about 2^-450
+const SAFE_HIGH: f64 = 2.9e135; // about 2^450
 
-/// Levels of the error map the tight refinement starts from.
-pub(crate) const TIGHT_LEVELS: usize = 2;
+/// The secant factor of [`BoundLevel::Fast`]: the bound is at most this times the true
+/// error (plus the rounding allowance).
+pub(crate) const FAST_RATIO: f64 = 1.25;
+
+/// The secant factor of [`BoundLevel::Tight`].
+pub(crate) const TIGHT_RATIO: f64 = 1.075;
 
 /// How much work a certified error bound may take. Every level but
 /// [`BoundLevel::None`] gives a true upper bound of `max_t ||P(t) - Q(t)||` (rounding
 /// included); they differ in how close it is to the true error.
+///
+/// Both certified levels evaluate the error curve, written in a basis of `n - m` curves,
+/// at `N + 1` Chebyshev–Lobatto nodes and multiply the largest value by the Ehlich–Zeller
+/// factor `sec(n pi / (2N))` (see `operator/error_map.rs`): the bound is at most that
+/// factor times the true error, for every curve. The cost is `(N + 1)(n - m) + (n - m)(n +
+/// 1)` multiply-adds per coordinate (the reduction itself: `(m + 1)(n + 1)`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash)]
 #[non_exhaustive]
 pub enum BoundLevel {
     /// No bound (the report's `error_bound` is `None`): the reduction alone.
     None,
-    /// One more precomputed linear map: the error curve split into 4 pieces, the largest
-    /// control-point norm (or the method's own bound, if smaller). Typically 1.2–2.5× the
-    /// true error.
+    /// At most 1.25× the true error plus the rounding allowance (`N ≈ 2.4 n` nodes), or
+    /// the method's own bound if that is smaller.
     Fast,
-    /// As [`BoundLevel::Fast`], then the pieces that may hold the maximum are split
-    /// further (best-first branch and bound) until the bound is within 8 % of a curve
-    /// value: at most 1.08× the true error (plus the rounding allowance), except when a
-    /// piece reaches 16 extra levels or 4096 splits are spent first (then still a true
-    /// bound). The default.
+    /// At most 1.075× the true error plus the rounding allowance (`N ≈ 4.2 n` nodes), or
+    /// the method's own bound if that is smaller. The default.
     #[default]
     Tight,
 }
 
 impl Operator {
-    /// The piecewise error map of `level` (`None` for [`BoundLevel::None`]), built on
-    /// first use.
+    /// The node map of `level` (`None` for [`BoundLevel::None`]), built on first use.
     pub(crate) fn bound_map(&self, level: BoundLevel) -> Option<&BoundMap> {
         match level {
             BoundLevel::None => None,
-            BoundLevel::Fast => Some(self.error_map(0, FAST_LEVELS)),
-            BoundLevel::Tight => Some(self.error_map(1, TIGHT_LEVELS)),
+            BoundLevel::Fast => Some(self.error_map(0, FAST_RATIO)),
+            BoundLevel::Tight => Some(self.error_map(1, TIGHT_RATIO)),
         }
     }
 
     /// A certified upper bound of `max_t ||P(t) - Q(t)||` (Euclidean, in the space of the
     /// given points) for the input `points` (`n + 1` points of `dim` coordinates) and the
     /// reduced points `Q` that [`Operator::apply`] gives for them (their `f64` rounding
-    /// included), at `level`; `None` for [`BoundLevel::None`]. The smaller of the method's
-    /// own bound (if it has one) and the piecewise convex-hull bound of the error curve.
+    /// included, whatever the order of the sums), at `level`; `None` for
+    /// [`BoundLevel::None`]. The smaller of the method's own bound (if it has one) and the
+    /// node bound of the error curve (see [`BoundLevel`]); `+inf` if the numbers overflow.
     ///
     /// # Errors
     /// [`cagd_core::Error::ZeroDimension`], [`cagd_core::Error::LengthMismatch`].
@@ -67,93 +78,80 @@ impl Operator {
         let Some(bm) = self.bound_map(level) else {
             return Ok(None);
         };
-        let mut pieces = vec![0.0; bm.map.rows() * dim];
-        bm.map.apply_loop(points, dim, &mut pieces);
-        let mut scratch = Scratch::default();
-        Ok(Some(self.curve_bound(
-            bm,
-            points,
-            dim,
-            &pieces,
-            level == BoundLevel::Tight,
-            &mut scratch,
-        )))
+        Ok(Some(self.one_bound(bm, points, dim)))
     }
 
-    /// The bound of one curve from its input and its computed reduced points (the route of
-    /// the single-curve call, where `reduced` is at hand): the error curve `P - E Q` formed
-    /// from the computed `Q` (its rounding included by construction, as in seed 000
-    /// §14.4.3's hull bound), split into the same 4 pieces by de Casteljau, then the same
-    /// per-piece bounds and refinement as the linear map. Its rounding allowance is that
-    /// of the elevation and subtraction (`2 (n + 3) eps (max ||P_j|| + max ||Q_i||)`) and
-    /// of the splits (`(n eps)` of the largest difference point per level), smaller than
-    /// the map's for operators of large norm. `None` for [`BoundLevel::None`].
-    pub(crate) fn direct_bound(
-        &self,
-        points: &[f64],
-        reduced: &[f64],
-        dim: usize,
-        level: BoundLevel,
-    ) -> Option<f64> {
-        let tight = match level {
-            BoundLevel::None => return None,
-            BoundLevel::Fast => false,
-            BoundLevel::Tight => true,
-        };
-        let (n, m) = (self.degree_from(), self.degree_to());
-        let len = (n + 1) * dim;
-        let pieces_n = 1usize << FAST_LEVELS;
-        let mut pieces = vec![0.0; pieces_n * len];
-        cagd_core::kernel::elevate(reduced, dim, n - m, &mut pieces[..len]);
-        for (d, p) in pieces[..len].iter_mut().zip(points) {
-            *d = p - *d;
+    /// The node bound of one curve, through the fused loop; input whose largest coordinate
+    /// is outside `[2^-450, 2^450]` is first scaled by a power of two (exact), so that no
+    /// square in the norms overflows or underflows, and the bound scaled back.
+    pub(crate) fn one_bound(&self, bm: &BoundMap, points: &[f64], dim: usize) -> f64 {
+        if safe_range(points) {
+            return self.fused_bound(bm, points, dim);
         }
-        let top = max_norm(&pieces[..len], dim);
-        let (mut left, mut right) = (vec![0.0; len], vec![0.0; len]);
-        for lvl in 0..FAST_LEVELS {
-            for piece in (0..1usize << lvl).rev() {
-                split_half(
-                    &pieces[piece * len..(piece + 1) * len],
-                    dim,
-                    &mut left,
-                    &mut right,
-                );
-                pieces[2 * piece * len..(2 * piece + 1) * len].copy_from_slice(&left);
-                pieces[(2 * piece + 1) * len..(2 * piece + 2) * len].copy_from_slice(&right);
-            }
-        }
-        let eps = f64::EPSILON;
-        let mut scratch = Scratch::default();
-        let hull = pieces_bound(&pieces, n + 1, dim, tight, &mut scratch)
-            + ((FAST_LEVELS * n) as f64) * eps * top;
-        let slack = 2.0 * (n as f64 + 3.0) * eps * (max_norm(points, dim) + max_norm(reduced, dim));
-        let linear = hull * (1.0 + 4.0 * eps) + slack;
-        let bound = match self.own_bound(points, dim) {
-            Some(own) => own.min(linear),
-            None => linear,
-        };
-        Some(if bound.is_nan() { f64::INFINITY } else { bound })
+        let amax = points.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+        // 2^-e with e the binary exponent of amax: the scaled maximum is in [1, 2) (for a
+        // subnormal amax, in [2^-52, 1)).
+        let biased = i32::try_from((amax.to_bits() >> 52) & 0x7ff).unwrap_or(1023);
+        let e = biased - 1023;
+        // In two factors, each a normal number for every exponent (|e| <= 1075).
+        let (s1, s2) = (2f64.powi(-e / 2), 2f64.powi(-e + e / 2));
+        let scaled: Vec<f64> = points.iter().map(|x| x * s1 * s2).collect();
+        let b = self.fused_bound(bm, &scaled, dim) / s1 / s2;
+        // Subnormal rounding of the reduced points in the caller's scale: far below this.
+        b + f64::MIN_POSITIVE
     }
 
-    /// The bound of one curve from its computed error pieces (see
-    /// [`Operator::certified_bound`]); `+inf` if the numbers overflowed.
-    pub(crate) fn curve_bound(
+    fn fused_bound(&self, bm: &BoundMap, points: &[f64], dim: usize) -> f64 {
+        let basis = self.error_basis();
+        let mut stack = [0.0; 96];
+        let mut heap;
+        let len = basis.rank * dim;
+        let coef: &mut [f64] = if len <= stack.len() {
+            &mut stack[..len]
+        } else {
+            heap = vec![0.0; len];
+            &mut heap
+        };
+        basis.coef.apply_loop(points, dim, coef);
+        let smax = max_value_norm(bm.samples.matrix(), basis.rank, coef, dim);
+        self.curve_bound(bm, points, dim, smax)
+    }
+
+    /// `bound` (a node bound of `points`) or, when it is mostly rounding allowance (a
+    /// curve of nearly degree `m`: the operator-sized allowance exceeds a 64th of it), the
+    /// smaller of it and the hull bound of the error curve `P - E Q` formed from the
+    /// computed reduced points (seed 000 §14.4.3, refined by subdivision; its allowance is
+    /// relative to `max ||P_j||` and `max ||Q_i||` only). Both are true bounds.
+    pub(crate) fn with_reduced(
         &self,
         bm: &BoundMap,
         points: &[f64],
+        reduced: &[f64],
         dim: usize,
-        pieces: &[f64],
-        tight: bool,
-        scratch: &mut Scratch,
+        bound: f64,
     ) -> f64 {
-        let n1 = self.degree_from() + 1;
-        let pmax = max_norm(points, dim);
-        let hull = pieces_bound(pieces, n1, dim, tight, scratch);
-        let linear = hull + bm.slack * pmax * (1.0 + 4.0 * f64::EPSILON);
-        let bound = match self.own_bound(points, dim) {
-            Some(own) => own.min(linear),
-            None => linear,
-        };
-        if bound.is_nan() { f64::INFINITY } else { bound }
+        let allowance = (bm.sec * bm.inner + bm.outer) * max_norm(points, dim);
+        if bound > 64.0 * allowance || !bound.is_finite() || !safe_range(points) {
+            return bound;
+        }
+        bound.min(hull_bound(points, reduced, dim))
     }
+
+    /// The bound of one curve from the largest computed node value `smax` of its error
+    /// curve (see [`Operator::certified_bound`]).
+    pub(crate) fn curve_bound(&self, bm: &BoundMap, points: &[f64], dim: usize, smax: f64) -> f64 {
+        let node = bm.finish(smax, max_norm(points, dim), dim);
+        match self.own_bound(points, dim) {
+            Some(own) if !own.is_nan() => own.min(node),
+            _ => node,
+        }
+    }
+}
+
+/// Whether the largest coordinate of `points` is zero or inside the range where the node
+/// bound needs no scaling (see [`Operator::one_bound`]); non-finite input counts as safe
+/// (its bound is `+inf`, or the caller reports it).
+pub(crate) fn safe_range(points: &[f64]) -> bool {
+    let amax = points.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+    amax == 0.0 || (SAFE_LOW..=SAFE_HIGH).contains(&amax) || !amax.is_finite()
 }

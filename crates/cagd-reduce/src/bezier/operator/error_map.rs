@@ -1,81 +1,168 @@
-//! The certified bound as a linear map of the input (goes beyond the seed; its convex-hull
-//! argument is seed 000 §14.4.3): the error curve `D = P - E Q` (`E` = elevation `m -> n`,
-//! `Q = A P` the reduction) is `R P` with `R = I - E A`, and its `2^k` pieces after `k`
-//! midpoint subdivisions are `S_k R P`, one precomputed `(2^k (n+1)) x (n+1)` map `T`.
-//! Each piece lies in the convex hull of its control points, so the largest control-point
-//! norm bounds `max_t ||D(t)||`; it exceeds the true maximum by `O(4^-k)` of `D''`.
+//! The certified bound as two small linear maps of the input (goes beyond the seed; the
+//! error curve is that of seed 000 §14.4.3): the error curve's coefficient points
+//! `c = G P` ([`ErrorBasis`], `r = n - m` of them) and its values `D(t_j) = V c` at the
+//! `N + 1` Chebyshev–Lobatto nodes `t_j = sin^2(j pi / (2N))` of `[0, 1]`.
+//!
+//! The Ehlich–Zeller inequality: a real polynomial `p` of degree `n < N` satisfies
+//! `max_[0,1] |p| <= sec(n pi / (2N)) max_j |p(t_j)|`. (With `t = sin^2(theta/2)`,
+//! `q(theta) = p(t)` is a cosine polynomial of degree `n`; where `|q|` is largest, at
+//! `theta*`, the Szegő inequality `q'^2 + n^2 q^2 <= n^2 ||q||^2` gives
+//! `|q(theta)| >= ||q|| cos(n |theta - theta*|)` for `n |theta - theta*| <= pi`, and a node
+//! `j pi / N` lies within `pi / (2N)` of `theta*`.) For a curve, apply it to
+//! `p = u . D` with `u` the unit vector along `D` at its largest norm: `max_t ||D(t)|| <=
+//! sec(n pi / (2N)) max_j ||D(t_j)||`. The node values are themselves curve values, so the
+//! bound is within `sec(n pi / (2N))` of the true maximum, whatever the curve: `N` is
+//! chosen from the ratio a level asks (1.25 fast, 1.075 tight).
+
+use nalgebra::DMatrix;
 
 use super::super::gemm::LinearMap;
+use super::error_basis::ErrorBasis;
 
-/// The precomputed map `T = S_k (I - E A)` and the rounding allowance of its use.
+/// Angle margin added to `pi / (2N)` for the rounding of the nodes (`|theta^_j - theta_j|`
+/// is a few ulps of `theta_j`, far below this).
+const NODE_ANGLE_MARGIN: f64 = 1e-9;
+
+/// The node values map of one level and the constants of its bound.
 #[derive(Debug, Clone)]
 pub(crate) struct BoundMap {
-    /// `T`, rows = piece control points, piece after piece.
-    pub(crate) map: LinearMap,
-    /// Rounding allowance per unit of `max_j ||P_j||` (see [`BoundMap::new`]).
-    pub(crate) slack: f64,
+    /// `V`, `(N+1) x r`: `V_jk = phi_k(t_j)`.
+    pub(crate) samples: LinearMap,
+    /// `sec(n (pi / (2N) + margin))`, rounded up.
+    pub(crate) sec: f64,
+    /// Rounding allowance inside the secant factor, per unit of `max_j ||P_j||`.
+    pub(crate) inner: f64,
+    /// Allowance outside it (the basis residual and the rounding of the reduced points),
+    /// per unit of `max_j ||P_j||`.
+    pub(crate) outer: f64,
 }
 
 impl BoundMap {
-    /// `T` for the `f64` operator `a` (`(m+1) x (n+1)`, row-major) with `op_norm =
-    /// max_i sum_j |a_ij|`, split into `2^levels` pieces.
+    /// The map for `basis` whose secant factor is at most `ratio` (`> 1`), for an operator
+    /// whose row sums of absolute values are at most `op_norm`.
     ///
-    /// Rounding (`eps` = unit roundoff, `n1 = n + 1`): the reduced points are `fl(A P) =
-    /// A P + d1` with `|d1| <= gamma_{n1} |A| |P|`; `T` itself is computed with
-    /// `|fl(T) - S_k (I - E A)| <= gamma_{k n + m + 3} (1 + ||A||)` per row sum (elevation and
-    /// subtraction, then `k` de Casteljau splits, all convex combinations); and
-    /// `fl(T P) = T P + d2` with `|d2| <= gamma_{n1} |T| |P|`. `S_k E` has non-negative rows
-    /// summing to 1, so every control point of the true pieces of `P - E fl(A P)` is within
-    /// `(n1 (||T|| + ||A||) + (k n + m + 3)(1 + ||A||)) eps (1 + O(eps)) max_j ||P_j||` of
-    /// the computed one; `slack` is twice that factor.
-    pub(crate) fn new(a: &[f64], n: usize, m: usize, op_norm: f64, levels: usize) -> Self {
-        let (n1, m1) = (n + 1, m + 1);
-        let pieces = 1usize << levels;
-        // R = I - E A, column by column (column j is the error curve of the unit input e_j).
-        let mut col = vec![0.0; m1];
-        let mut elevated = vec![0.0; n1];
-        let mut t = vec![0.0; pieces * n1 * n1];
-        let mut work = vec![0.0; pieces * n1];
-        let (mut left, mut right) = (vec![0.0; n1], vec![0.0; n1]);
-        for j in 0..n1 {
-            for (i, c) in col.iter_mut().enumerate() {
-                *c = a[i * n1 + j];
+    /// Rounding (`eps` unit roundoff; `g_k`, `u_k = max_i |U_ik|` from the basis): the
+    /// Bernstein values at the `f64` nodes are within `(3n + 3) eps` of themselves
+    /// (binomial, powers, products), so `V^` is within `(4n + 5) eps u_k` of the exact
+    /// `phi_k(t^_j)`; `c^ = fl(G P)` within `(n + 1) eps g_k pmax` of `c`; `fl(V^ c^)` within
+    /// `r eps sum_k |V^_jk| ||c^_k||`. So `||D~(t^_j)|| <= ||s^_j|| (1 + (dim + 3) eps) +
+    /// inner pmax` with `inner = 2 eps ((r + n + 1) vg + (4n + 5) ug)`, `vg = max_j sum_k
+    /// |V^_jk| g_k`, `ug = sum_k u_k g_k` (2: margin for second-order terms). The true
+    /// error curve `P - E fl(A P)` differs from `D~ = U G P` by the basis residual
+    /// (`rho pmax`) and `E (fl(A P) - A P)` (`(n + 1) eps op_norm pmax`, `E` convex):
+    /// `outer = rho + 2 (n + 1) eps op_norm`.
+    pub(crate) fn new(basis: &ErrorBasis, op_norm: f64, ratio: f64) -> Self {
+        let (n, r) = (basis.n, basis.rank);
+        let nf = n as f64;
+        // Smallest N with sec(n (pi/(2N) + margin)) <= ratio.
+        let half = (1.0 / ratio).acos() / nf - NODE_ANGLE_MARGIN;
+        #[allow(
+            clippy::cast_possible_truncation,
+            reason = "n <= 64 and ratio >= 1.075 give N < 300"
+        )]
+        let big_n = ((std::f64::consts::FRAC_PI_2 / half).ceil() as usize).max(n + 1);
+        let angle = nf * (std::f64::consts::PI / (2.0 * big_n as f64) + NODE_ANGLE_MARGIN);
+        let sec = (1.0 / angle.cos()) * (1.0 + 8.0 * f64::EPSILON);
+        let binom: Vec<f64> = (0..=n).map(|i| cagd_core::binomial_f64(n, i)).collect();
+        let (mut tp, mut sp) = (vec![1.0; n + 1], vec![1.0; n + 1]);
+        // The Bernstein values at the nodes, then V = B U through the GEMM kernel.
+        let mut bern = DMatrix::zeros(big_n + 1, n + 1);
+        for j in 0..=big_n {
+            let t = node(j, big_n);
+            let s = 1.0 - t;
+            for i in 1..=n {
+                tp[i] = tp[i - 1] * t;
+                sp[i] = sp[i - 1] * s;
             }
-            cagd_core::kernel::elevate(&col, 1, n - m, &mut elevated);
-            for (i, e) in elevated.iter_mut().enumerate() {
-                *e = f64::from(u8::from(i == j)) - *e;
-            }
-            // Split level by level: `work` holds the current pieces, in parameter order.
-            work[..n1].copy_from_slice(&elevated);
-            for level in 0..levels {
-                let count = 1usize << level;
-                for p in (0..count).rev() {
-                    cagd_core::kernel::subdivide(
-                        &work[p * n1..(p + 1) * n1],
-                        1,
-                        0.5,
-                        &mut left,
-                        &mut right,
-                    );
-                    work[2 * p * n1..(2 * p + 1) * n1].copy_from_slice(&left);
-                    work[(2 * p + 1) * n1..(2 * p + 2) * n1].copy_from_slice(&right);
-                }
-            }
-            for (row, v) in work.iter().enumerate() {
-                t[row * n1 + j] = *v;
+            for i in 0..=n {
+                bern[(j, i)] = binom[i] * tp[i] * sp[n - i];
             }
         }
-        let t_norm = t
-            .chunks_exact(n1)
-            .map(|r| r.iter().map(|x| x.abs()).sum::<f64>())
+        let vm = bern * DMatrix::from_row_slice(n + 1, r, &basis.u);
+        let v: Vec<f64> = (0..=big_n)
+            .flat_map(|j| (0..r).map(move |k| (j, k)))
+            .map(|(j, k)| vm[(j, k)])
+            .collect();
+        let umax: Vec<f64> = (0..r)
+            .map(|k| {
+                (0..=n)
+                    .map(|i| basis.u[i * r + k].abs())
+                    .fold(0.0, f64::max)
+            })
+            .collect();
+        let ug: f64 = umax.iter().zip(&basis.gsum).map(|(u, g)| u * g).sum();
+        let vg = v
+            .chunks_exact(r.max(1))
+            .map(|row| row.iter().zip(&basis.gsum).map(|(x, g)| x.abs() * g).sum())
             .fold(0.0, f64::max);
         let eps = f64::EPSILON;
-        let slack = 2.0
-            * eps
-            * ((n1 as f64) * (t_norm + op_norm) + ((levels * n + m + 3) as f64) * (1.0 + op_norm));
+        let inner = 2.0 * eps * ((r as f64 + nf + 1.0) * vg + (4.0 * nf + 5.0) * ug);
+        let outer = basis.rho + 2.0 * (nf + 1.0) * eps * op_norm;
         Self {
-            map: LinearMap::new(pieces * n1, n1, t),
-            slack,
+            samples: LinearMap::new(big_n + 1, r, v),
+            sec,
+            inner,
+            outer,
+        }
+    }
+
+    /// The bound from the largest node value `smax = max_j ||s^_j||` and `pmax = max_j
+    /// ||P_j||` (both as computed); `+inf` if they overflowed.
+    pub(crate) fn finish(&self, smax: f64, pmax: f64, dim: usize) -> f64 {
+        let eps = f64::EPSILON;
+        let pmax = pmax * (1.0 + (dim as f64 + 2.0) * eps);
+        let b = (self.sec * (smax * (1.0 + (dim as f64 + 3.0) * eps) + self.inner * pmax)
+            + self.outer * pmax)
+            * (1.0 + 4.0 * eps)
+            + f64::MIN_POSITIVE;
+        if b.is_nan() { f64::INFINITY } else { b }
+    }
+}
+
+/// The node `t_j = sin^2(j pi / (2N))` (`t_0 = 0`, `t_N = 1` exactly).
+fn node(j: usize, big_n: usize) -> f64 {
+    if j == big_n {
+        return 1.0;
+    }
+    let s = (j as f64 * std::f64::consts::PI / (2.0 * big_n as f64)).sin();
+    s * s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The inequality itself on the worst polynomials we know: Chebyshev polynomials
+    /// shifted so their extrema fall between nodes, measured on a fine grid.
+    #[test]
+    fn secant_factor_bounds_shifted_chebyshev_polynomials() {
+        for n in [1usize, 2, 5, 10, 30] {
+            for ratio in [1.25, 1.075] {
+                let angle_half = (1.0_f64 / ratio).acos() / n as f64;
+                #[allow(clippy::cast_possible_truncation, reason = "N < 300")]
+                let big_n = ((std::f64::consts::FRAC_PI_2 / angle_half).ceil() as usize).max(n + 1);
+                let sec = 1.0 / (n as f64 * std::f64::consts::PI / (2.0 * big_n as f64)).cos();
+                assert!(sec <= ratio * (1.0 + 1e-9));
+                // p(x) = T_n(a x + b) squeezed so that it has its extrema at shifted places.
+                for shift in 0..20 {
+                    let a = 1.0 - 0.01 * shift as f64;
+                    let b = 1.0 - a;
+                    let p = |t: f64| {
+                        let x = a * (1.0 - 2.0 * t) + b * (shift % 2) as f64;
+                        (n as f64 * x.clamp(-1.0, 1.0).acos()).cos()
+                    };
+                    let at_nodes = (0..=big_n)
+                        .map(|j| p(node(j, big_n)).abs())
+                        .fold(0.0, f64::max);
+                    let true_max = (0..=20000)
+                        .map(|i| p(i as f64 / 20000.0).abs())
+                        .fold(0.0, f64::max);
+                    assert!(
+                        true_max <= sec * at_nodes * (1.0 + 1e-12),
+                        "n {n} ratio {ratio} shift {shift}: {true_max} > {sec} * {at_nodes}"
+                    );
+                }
+            }
         }
     }
 }

@@ -12,6 +12,7 @@ use cagd_core::{Error, Result};
 
 mod chebyshev;
 mod ends;
+mod error_basis;
 mod error_map;
 mod fast;
 mod hull;
@@ -26,6 +27,7 @@ use least_squares::{ginv_ends, l2};
 use one_step::{residual_term, step};
 
 pub use chebyshev::{ChebyshevTerms, constrained_chebyshev_terms};
+pub(crate) use error_basis::ErrorBasis;
 pub(crate) use error_map::BoundMap;
 pub use fast::OperatorRoute;
 pub use one_step::eck_lambdas;
@@ -54,7 +56,9 @@ pub struct Operator {
     /// The matrix and its GEMM data path.
     map: LinearMap,
     terms: Vec<BoundTerm>,
-    /// The piecewise error maps of the fast and the tight bound level, built on first use.
+    /// The error curve's basis and the node maps of the fast and the tight bound level,
+    /// built on first use.
+    error_basis: OnceLock<ErrorBasis>,
     bound_maps: [OnceLock<BoundMap>; 2],
     /// `max_i sum_j |a_ij|` (rounding amplification of the operator).
     op_norm: f64,
@@ -210,6 +214,7 @@ impl Operator {
             m,
             map: LinearMap::new(m + 1, n + 1, matrix),
             terms,
+            error_basis: OnceLock::new(),
             bound_maps: Default::default(),
             op_norm,
             terms_norm,
@@ -255,12 +260,17 @@ impl Operator {
         &self.map
     }
 
-    /// The piecewise error map in cache slot `slot` (0: the fast level's, 1: the tight
-    /// level's) with `levels` midpoint levels, built on first use (see
-    /// `bound/mod.rs`, which picks the slot and levels).
-    pub(crate) fn error_map(&self, slot: usize, levels: usize) -> &BoundMap {
-        self.bound_maps[slot]
-            .get_or_init(|| BoundMap::new(self.matrix(), self.n, self.m, self.op_norm, levels))
+    /// The error curve's basis (see `error_basis.rs`), built on first use.
+    pub(crate) fn error_basis(&self) -> &ErrorBasis {
+        self.error_basis
+            .get_or_init(|| ErrorBasis::new(self.matrix(), self.n, self.m, self.op_norm))
+    }
+
+    /// The node map in cache slot `slot` (0: the fast level's, 1: the tight level's) with
+    /// secant factor at most `ratio`, built on first use (see `bound/mod.rs`, which picks
+    /// the slot and ratio).
+    pub(crate) fn error_map(&self, slot: usize, ratio: f64) -> &BoundMap {
+        self.bound_maps[slot].get_or_init(|| BoundMap::new(self.error_basis(), self.op_norm, ratio))
     }
 
     /// The method's own bound (e.g. `W_n ||F|| / (C(2n,n) - 2)` for [`Method::Perturb`],
