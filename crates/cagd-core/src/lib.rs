@@ -60,6 +60,7 @@ mod error;
 mod exact;
 mod frame;
 pub mod kernel;
+mod norm;
 mod patch;
 mod quadrature;
 mod validate;
@@ -92,6 +93,7 @@ pub use exact::{
     ExactMatrix, curve_invariant_exact, tensor_invariants_exact, tri_invariants_exact,
 };
 pub use frame::{ModelFrame, centred_rational_bound};
+pub use norm::{max_point_norm, point_norm};
 pub use patch::{TensorPatch, TriPatch, tri_count, tri_index};
 pub use quadrature::{MAX_GAUSS_NODES, gauss_legendre};
 pub use validate::{check_finite_param, check_points, check_tolerance, check_weights};

@@ -259,11 +259,8 @@ fn exact_case(
         // evaluating `sum w N P / sum w N` beside `sum N P` (de Boor, a few (p + 2) ulps of
         // the largest point). The bound covers that rounding, so it is never below a
         // measurement (the fuzz harness measured 5.7e-17 beside a reported 0).
-        let pmax = curve
-            .points()
-            .chunks_exact(curve.dim())
-            .map(|q| q.iter().map(|x| x * x).sum::<f64>().sqrt())
-            .fold(0.0, f64::max);
+        // Overflow-safe: a coordinate of 1e300 made this `+inf` (C ABI fuzz run).
+        let pmax = cagd_core::max_point_norm(curve.points(), curve.dim());
         let rounding = 8.0 * (p as f64 + 2.0) * f64::EPSILON * pmax;
         let bound = rounding.max(max_error);
         return Ok(PolynomialReduction {

@@ -208,11 +208,7 @@ fn exact_case(
     // rounding of evaluating the rational form beside the polynomial one, a few (p + q + 2)
     // ulps of the largest point; the bound covers it, so it is never below a measurement.
     let bound = if target == (p, q) {
-        let pmax = s
-            .points()
-            .chunks_exact(s.dim())
-            .map(|x| x.iter().map(|c| c * c).sum::<f64>().sqrt())
-            .fold(0.0, f64::max);
+        let pmax = cagd_core::max_point_norm(s.points(), s.dim());
         (8.0 * (p + q + 2) as f64 * f64::EPSILON * pmax).max(max_error)
     } else {
         bound

@@ -406,3 +406,28 @@ fn many_span_spiral_gets_fewer_spans() {
         }
     }
 }
+
+/// Equal weights and a coordinate of 1e300 (C ABI fuzz run): the rounding bound was
+/// `8 (p + 2) eps sqrt(sum x^2)` with an overflowing square, so `+inf` with `Ok`. It is
+/// finite now, and still at least the measurement.
+#[test]
+fn equal_weights_with_huge_coordinates_give_a_finite_bound() {
+    let knots = vec![0.0, 0.0, 0.0, 0.0, 0.0, 1.5, 3.0, 3.0, 3.0, 3.0, 3.0];
+    let pts = vec![-0.372, -0.0826, 0.1236, 1e300, -0.346, 0.00883];
+    let c = BSplineCurve::new_rational(4, knots, pts, vec![1.0; 6], 1).unwrap();
+    let r = rational_to_polynomial(&c, None, 5.1e-7).unwrap();
+    assert!(r.report.equal_weights);
+    for b in [r.report.error_bound, r.report.segment_bound] {
+        assert!(
+            b.is_finite() && b >= r.report.max_error,
+            "{b:e} vs {:e}",
+            r.report.max_error
+        );
+    }
+    // The rounding level of the largest point, not more.
+    assert!(
+        r.report.error_bound <= 1e-12 * 1e300,
+        "{:e}",
+        r.report.error_bound
+    );
+}
