@@ -1790,7 +1790,8 @@ CagdStatus cagd_bspline_to_beziers(const struct CagdBSpline *spline,
  *   discontinuous there).
  * - `CAGD_ERR_CONDITION_NOT_MET`: `CAGD_SPLINE_FIT`, `CAGD_SPLINE_SEGMENTS`: the
  *   tolerance cannot be met (below the rounding level of the curve, or more than `2^20`
- *   spans needed); `CAGD_SPLINE_PIEGL_TILLER_1995`: the curve is not reducible within the
+ *   spans, or for the fit more than `2^23` span coordinates fitted over the refinement
+ *   rounds, needed); `CAGD_SPLINE_PIEGL_TILLER_1995`: the curve is not reducible within the
  *   tolerance without subdivision (a segment reduction or a required knot removal does
  *   not fit in the tolerance left on its spans), or a reduced NURBS weight is not
  *   positive.
@@ -2087,7 +2088,9 @@ CagdStatus cagd_bsplinesurface_reduce(const struct CagdBSplineSurface *surface,
  *   above `m - 1` of a reduced direction), `CAGD_ERR_NON_POSITIVE_WEIGHT`: as
  *   `cagd_bsplinesurface_reduce`.
  * - `CAGD_ERR_BAD_KNOTS` (fit): a knot line of multiplicity `p + 1`.
- * - `CAGD_ERR_CONDITION_NOT_MET` (fit): the tolerance is below the rounding level.
+ * - `CAGD_ERR_CONDITION_NOT_MET` (fit): the tolerance is below the rounding level, or
+ *   the refinement of a direction needs more than `2^23` span coordinates fitted over
+ *   its rounds (bounded work: about a second).
  * - `CAGD_ERR_NO_CONVERGENCE` (segments): level 6 is not enough.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
@@ -4229,7 +4232,7 @@ CagdStatus cagd_curve_distance(const struct CagdCurve *a, const struct CagdCurve
  * between two tensor-product patches of any degrees (cagd_core::tensor_patch_distance:
  * both elevated to the common degree, control points subtracted, grid of
  * `4 (m + n) + 32` intervals per side, `(m, n)` the common degrees, sampled with cached
- * bases; the 32 largest sampled local maxima refined locally: bounded work, about 0.3 s
+ * bases; the 8 largest sampled local maxima refined locally: bounded work, about 0.3 s
  * at degrees 64 x 64).
  *
  * Parameters:
@@ -4255,7 +4258,7 @@ CagdStatus cagd_tensorpatch_distance(const struct CagdTensorPatch *a,
  * triangle `u, v >= 0, u + v <= 1` between two triangular patches of any degrees
  * (cagd_core::tri_patch_distance: elevated to the common degree, control points
  * subtracted, grid of `8 n + 32` intervals per side, `n` the common degree, sampled with
- * cached bases; the 32 largest sampled local maxima refined locally: bounded work, about
+ * cached bases; the 8 largest sampled local maxima refined locally: bounded work, about
  * 0.3 s at degree 64).
  *
  * Parameters:
@@ -4857,7 +4860,8 @@ CagdStatus cagd_report_patch(const struct CagdReport *report,
  * - `CAGD_ERR_BAD_KNOTS`: an interior knot of multiplicity `p + 1` (the input may jump
  *   there).
  * - `CAGD_ERR_CONDITION_NOT_MET`: the tolerance is below the rounding level of the curve
- *   or needs more than `2^20` spans.
+ *   or needs more than `2^20` spans (or more than `2^19` spans fitted over the refinement
+ *   rounds: bounded work).
  * - `CAGD_ERR_SINGULAR`: the least-squares system is rank-deficient (not expected).
  * - `CAGD_ERR_NON_FINITE`: the sampled error is not finite.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
@@ -4889,8 +4893,8 @@ CagdStatus cagd_bspline_to_polynomial(const struct CagdBSpline *spline,
  * - `surface_out` (out): on `CAGD_OK`, the polynomial surface (no weights), owned by the
  *   caller: release with `cagd_bsplinesurface_free`.
  * - `report_out` (out): on `CAGD_OK`, the report (`cagd_report_bound`: the certified
- *   bound; `cagd_report_max_error`: the distance sampled on a 17 x 17 grid per input
- *   patch; `cagd_report_patch`: patch method -1 and the patches of the result; `cagd_report_method`:
+ *   bound; `cagd_report_max_error`: the measured distance (every cell
+ *   sampled, the 16 of largest sampled distance maximised locally); `cagd_report_patch`: patch method -1 and the patches of the result; `cagd_report_method`:
  *   `CAGD_METHOD_L2`), owned by the caller: release with `cagd_report_free`. Neither
  *   output is written on failure.
  *
@@ -4902,7 +4906,8 @@ CagdStatus cagd_bspline_to_polynomial(const struct CagdBSpline *spline,
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: a target above 64.
  * - `CAGD_ERR_BAD_KNOTS`: a knot line of multiplicity `p + 1`.
  * - `CAGD_ERR_CONDITION_NOT_MET`: the tolerance cannot be reached (rounding level, or
- *   more than `2^20` patches).
+ *   more than `2^20` patches, or more than `2^17` patches fitted over the refinement
+ *   rounds: bounded work).
  * - `CAGD_ERR_SINGULAR`: the least-squares system is rank-deficient (not expected).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *

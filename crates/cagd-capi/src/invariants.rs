@@ -217,7 +217,7 @@ pub unsafe extern "C" fn cagd_curve_distance(
 /// between two tensor-product patches of any degrees (cagd_core::tensor_patch_distance:
 /// both elevated to the common degree, control points subtracted, grid of
 /// `4 (m + n) + 32` intervals per side, `(m, n)` the common degrees, sampled with cached
-/// bases; the 32 largest sampled local maxima refined locally: bounded work, about 0.3 s
+/// bases; the 8 largest sampled local maxima refined locally: bounded work, about 0.3 s
 /// at degrees 64 x 64).
 ///
 /// Parameters:
@@ -253,7 +253,7 @@ pub unsafe extern "C" fn cagd_tensorpatch_distance(
 /// triangle `u, v >= 0, u + v <= 1` between two triangular patches of any degrees
 /// (cagd_core::tri_patch_distance: elevated to the common degree, control points
 /// subtracted, grid of `8 n + 32` intervals per side, `n` the common degree, sampled with
-/// cached bases; the 32 largest sampled local maxima refined locally: bounded work, about
+/// cached bases; the 8 largest sampled local maxima refined locally: bounded work, about
 /// 0.3 s at degree 64).
 ///
 /// Parameters:

@@ -79,7 +79,8 @@ fn degree_or_input(m: usize) -> Option<usize> {
 /// - `CAGD_ERR_BAD_KNOTS`: an interior knot of multiplicity `p + 1` (the input may jump
 ///   there).
 /// - `CAGD_ERR_CONDITION_NOT_MET`: the tolerance is below the rounding level of the curve
-///   or needs more than `2^20` spans.
+///   or needs more than `2^20` spans (or more than `2^19` spans fitted over the refinement
+///   rounds: bounded work).
 /// - `CAGD_ERR_SINGULAR`: the least-squares system is rank-deficient (not expected).
 /// - `CAGD_ERR_NON_FINITE`: the sampled error is not finite.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
@@ -142,8 +143,8 @@ pub unsafe extern "C" fn cagd_bspline_to_polynomial(
 /// - `surface_out` (out): on `CAGD_OK`, the polynomial surface (no weights), owned by the
 ///   caller: release with `cagd_bsplinesurface_free`.
 /// - `report_out` (out): on `CAGD_OK`, the report (`cagd_report_bound`: the certified
-///   bound; `cagd_report_max_error`: the distance sampled on a 17 x 17 grid per input
-///   patch; `cagd_report_patch`: patch method -1 and the patches of the result; `cagd_report_method`:
+///   bound; `cagd_report_max_error`: the measured distance (every cell
+///   sampled, the 16 of largest sampled distance maximised locally); `cagd_report_patch`: patch method -1 and the patches of the result; `cagd_report_method`:
 ///   `CAGD_METHOD_L2`), owned by the caller: release with `cagd_report_free`. Neither
 ///   output is written on failure.
 ///
@@ -155,7 +156,8 @@ pub unsafe extern "C" fn cagd_bspline_to_polynomial(
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`: a target above 64.
 /// - `CAGD_ERR_BAD_KNOTS`: a knot line of multiplicity `p + 1`.
 /// - `CAGD_ERR_CONDITION_NOT_MET`: the tolerance cannot be reached (rounding level, or
-///   more than `2^20` patches).
+///   more than `2^20` patches, or more than `2^17` patches fitted over the refinement
+///   rounds: bounded work).
 /// - `CAGD_ERR_SINGULAR`: the least-squares system is rank-deficient (not expected).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///

@@ -224,3 +224,33 @@ fn many_cells_measured_within_the_node_budget() {
     let d = surface_max_deviation(&bump, &zero).unwrap();
     assert!((d - 1.0 / 27.0).abs() <= 1e-12 / 27.0, "{d}");
 }
+
+/// The curve measurement in bounded work: a zero polyline of 30 000 pieces against the
+/// cubic `t^2 (1 - t)` (maximum `4/27` at `t = 2/3`, inside a piece) has more pieces than
+/// the full-density budget; the coarse first pass still ranks the piece of the peak first
+/// and the second pass maximises it in full.
+#[test]
+fn many_pieces_measured_within_the_point_budget() {
+    use cagd_core::BSplineCurve;
+    let pieces = 30_001u32;
+    let mut k = vec![0.0, 0.0];
+    k.extend((1..pieces).map(|i| f64::from(i) / f64::from(pieces)));
+    k.extend([1.0, 1.0]);
+    let n = k.len() - 2;
+    let zero = BSplineCurve::new(1, k, vec![0.0; n], 1).unwrap();
+    let cubic = BSplineCurve::new(
+        3,
+        vec![0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0],
+        vec![0.0, 0.0, 1.0 / 3.0, 0.0],
+        1,
+    )
+    .unwrap();
+    assert!(
+        pieces as usize * (8 * 4 + 64) > cagd_reduce::SPLINE_MEASURE_NODE_BUDGET,
+        "the test must exceed the budget"
+    );
+    for (a, b) in [(&zero, &cubic), (&cubic, &zero)] {
+        let d = cagd_reduce::spline_max_deviation(a, b).unwrap();
+        assert!((d - 4.0 / 27.0).abs() <= 1e-13, "{d}");
+    }
+}

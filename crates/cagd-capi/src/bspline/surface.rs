@@ -389,7 +389,9 @@ pub unsafe extern "C" fn cagd_bsplinesurface_reduce(
 ///   above `m - 1` of a reduced direction), `CAGD_ERR_NON_POSITIVE_WEIGHT`: as
 ///   `cagd_bsplinesurface_reduce`.
 /// - `CAGD_ERR_BAD_KNOTS` (fit): a knot line of multiplicity `p + 1`.
-/// - `CAGD_ERR_CONDITION_NOT_MET` (fit): the tolerance is below the rounding level.
+/// - `CAGD_ERR_CONDITION_NOT_MET` (fit): the tolerance is below the rounding level, or
+///   the refinement of a direction needs more than `2^23` span coordinates fitted over
+///   its rounds (bounded work: about a second).
 /// - `CAGD_ERR_NO_CONVERGENCE` (segments): level 6 is not enough.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///

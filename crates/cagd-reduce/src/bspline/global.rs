@@ -48,6 +48,13 @@ const CREEP_ROUNDS: usize = 6;
 /// rounding floor stops the refinement at once).
 pub(crate) const MAX_FIT_SPANS: usize = 1 << 20;
 
+/// Most work of one refinement, counted as spans times point coordinates summed over its
+/// rounds (each round fits and bounds every span): `2^23`, about a second in a release
+/// build. A bundle (the rows of a surface fitted together) has many coordinates per
+/// point, so a surface that would need `2^20` spans in one direction is refused by this
+/// cap, not by [`MAX_FIT_SPANS`] after minutes (ADDED; bounded work, issue 18).
+pub(crate) const MAX_FIT_WORK: usize = 1 << 23;
+
 /// The error for a tolerance the refinement cannot reach.
 fn unreachable(why: &'static str) -> Error {
     Error::ConditionNotMet {
@@ -129,7 +136,7 @@ fn splits(
 ///
 /// # Errors
 /// [`Error::ConditionNotMet`] when the budget is below the rounding level or needs more
-/// than [`MAX_FIT_SPANS`] spans; the errors of [`fit`].
+/// than [`MAX_FIT_SPANS`] spans or [`MAX_FIT_WORK`]; the errors of [`fit`].
 pub(crate) fn fit_to_budget(
     src: &Source,
     m: usize,
@@ -137,6 +144,7 @@ pub(crate) fn fit_to_budget(
     budget: f64,
 ) -> Result<(Vec<f64>, Vec<f64>, Vec<SpanBound>)> {
     let mut rounds = 0;
+    let mut work = 0usize;
     loop {
         let points = fit(src, m, &knots)?;
         let bounds = span_bounds(src, m, &knots, &points)?;
@@ -144,6 +152,7 @@ pub(crate) fn fit_to_budget(
             return Ok((knots, points, bounds));
         }
         rounds += 1;
+        work = work.saturating_add(bounds.len().saturating_mul(src.pdim));
         // The first split aims at the budget (the input's spans are far from it, so the
         // prediction has slack); later ones, which refine spans already near it, aim lower.
         let target = if rounds >= 2 {
@@ -161,6 +170,12 @@ pub(crate) fn fit_to_budget(
         let spans = bounds.len() + new.len();
         if rounds > MAX_ROUNDS || spans > MAX_FIT_SPANS {
             return Err(too_many());
+        }
+        let next = (bounds.len() + new.len()).saturating_mul(src.pdim);
+        if work.saturating_add(next) > MAX_FIT_WORK {
+            return Err(unreachable(
+                "the refinement needs too much work (more than 2^23 span coordinates over its rounds)",
+            ));
         }
         knots.extend(new);
         knots.sort_by(f64::total_cmp);

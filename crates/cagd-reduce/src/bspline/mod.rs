@@ -24,8 +24,8 @@ mod tests;
 mod uniform;
 
 pub use measure::{
-    SURFACE_MEASURE_NODE_BUDGET, SURFACE_MEASURED_CELLS, spline_max_deviation,
-    surface_max_deviation,
+    SPLINE_MEASURE_NODE_BUDGET, SPLINE_MEASURED_PIECES, SURFACE_MEASURE_NODE_BUDGET,
+    SURFACE_MEASURED_CELLS, spline_max_deviation, surface_max_deviation,
 };
 pub use options::{BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy};
 pub use piegl_tiller::reduce_bspline_piegl_tiller;

@@ -5,7 +5,10 @@
 //! whole edges, never T-junctions; with a boundary-consistent method (see the functions)
 //! the reduced pieces meet C⁰ along every shared edge.
 
-use cagd_core::{Error, Result, TensorPatch, TriPatch, check_tolerance};
+use cagd_core::{
+    Error, Result, TensorPatch, TriPatch, check_tolerance, tensor_patch_distance,
+    tri_patch_distance,
+};
 
 use crate::patch::report::{
     PatchConstraint, PatchOptions, TensorPiece, TriMethod, TriOptions, TriPiece,
@@ -40,6 +43,12 @@ pub fn reduce_tensor_to_tolerance(
     opts: &PatchOptions,
 ) -> Result<Vec<TensorPiece>> {
     check_tolerance(tol)?;
+    // The levels are searched without measuring; only the accepted pieces are measured
+    // (bounded work: every rejected level measured its pieces too).
+    let search = PatchOptions {
+        measure: false,
+        ..*opts
+    };
     let mut cells: Vec<TensorCell> = vec![(p.clone(), [0.0, 1.0, 0.0, 1.0])];
     let mut achieved = f64::INFINITY;
     for level in 0..=MAX_SUBDIVISION_LEVEL {
@@ -49,10 +58,13 @@ pub fn reduce_tensor_to_tolerance(
         let mut pieces = Vec::with_capacity(cells.len());
         let mut worst = 0.0f64;
         for (patch, d) in &cells {
-            let reduction = reduce_tensor(patch, target, opts)?;
+            let mut reduction = reduce_tensor(patch, target, &search)?;
             worst = worst.max(reduction.report.error_bound);
             if worst > tol {
                 break;
+            }
+            if opts.measure {
+                reduction.report.max_error = Some(tensor_patch_distance(patch, &reduction.patch)?);
             }
             pieces.push(TensorPiece {
                 u: (d[0], d[1]),
@@ -118,6 +130,10 @@ pub fn reduce_triangle_to_tolerance(
             });
         }
     }
+    let search = TriOptions {
+        measure: false,
+        ..*opts
+    };
     type Cell = (TriPatch, [(f64, f64); 3]);
     let mut cells: Vec<Cell> = vec![(t.clone(), [(1.0, 0.0), (0.0, 1.0), (0.0, 0.0)])];
     let mut achieved = f64::INFINITY;
@@ -135,10 +151,13 @@ pub fn reduce_triangle_to_tolerance(
         let mut pieces = Vec::with_capacity(cells.len());
         let mut worst = 0.0f64;
         for (patch, vertices) in &cells {
-            let reduction = reduce_triangle(patch, m, opts)?;
+            let mut reduction = reduce_triangle(patch, m, &search)?;
             worst = worst.max(reduction.report.error_bound);
             if worst > tol {
                 break;
+            }
+            if opts.measure {
+                reduction.report.max_error = Some(tri_patch_distance(patch, &reduction.patch)?);
             }
             pieces.push(TriPiece {
                 vertices: *vertices,

@@ -22,6 +22,10 @@ const SPLIT_TARGET: f64 = 0.95;
 const GLOBAL_ROUNDS: usize = 3;
 /// Most spans the refinement may create.
 const MAX_SPANS: usize = 1 << 20;
+/// Most spans fitted and bounded over all rounds of one refinement: `2^19`, about a second
+/// in a release build (ADDED; bounded work, issue 18: the fuzz harness found curves whose
+/// refinement ran for 60 rounds near `2^20` spans).
+const MAX_SPAN_WORK: usize = 1 << 19;
 
 /// Gauss nodes per span for degrees `p -> m`.
 pub(crate) fn nodes_per_span(p: usize, m: usize) -> usize {
@@ -191,6 +195,7 @@ pub(crate) fn fit_to_budget(
     budget: f64,
 ) -> Result<(Vec<f64>, Vec<f64>, Vec<SpanBound>)> {
     let mut rounds = 0;
+    let mut work = 0usize;
     let mut knots = start.clone();
     // The refinement places knots anew between the distinct knots of `start`.
     let mut groups = start.clone();
@@ -202,6 +207,7 @@ pub(crate) fn fit_to_budget(
             return Ok((knots, points, bounds));
         }
         rounds += 1;
+        work = work.saturating_add(bounds.len());
         // Equidistribution in the first rounds, local splits after (see `refine_with`).
         let added = refine_with(
             &bounds,
@@ -214,6 +220,12 @@ pub(crate) fn fit_to_budget(
             return Err(Error::ConditionNotMet {
                 eq: "tolerance",
                 why: "the refinement needs too many spans",
+            });
+        }
+        if work.saturating_add(src.len() + added.len()) > MAX_SPAN_WORK {
+            return Err(Error::ConditionNotMet {
+                eq: "tolerance",
+                why: "the refinement needs too much work (more than 2^19 spans fitted over its rounds)",
             });
         }
         knots.clone_from(&start);

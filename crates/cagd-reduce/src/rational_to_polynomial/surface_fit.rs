@@ -20,6 +20,10 @@ use crate::{BandedLsq, SpanBound};
 /// Most refine-and-refit rounds, and most patches.
 const MAX_ROUNDS: usize = 40;
 const MAX_PATCHES: usize = 1 << 20;
+/// Most patches fitted and bounded over all rounds of one refinement: `2^17`, about a
+/// second in a release build (ADDED; bounded work, issue 18: a 3 x 4 NURBS surface within
+/// 0.5 of coordinates up to 2e6 asked for 883 000 patches and minutes).
+const MAX_PATCH_WORK: usize = 1 << 17;
 
 /// A NURBS surface as homogeneous Bézier patches on a grid of breaks.
 #[derive(Debug, Clone)]
@@ -272,7 +276,8 @@ pub(crate) struct SurfaceFit {
 ///
 /// # Errors
 /// [`Error::ConditionNotMet`] when the budget is below the rounding level or needs too
-/// many patches; the errors of [`fit`].
+/// many patches ([`MAX_PATCHES`] in one round, [`MAX_PATCH_WORK`] over all rounds); the
+/// errors of [`fit`].
 pub(crate) fn fit_to_budget(
     src: &RationalPatches,
     m: (usize, usize),
@@ -280,6 +285,7 @@ pub(crate) fn fit_to_budget(
     budget: f64,
 ) -> Result<SurfaceFit> {
     let mut rounds = 0;
+    let mut work = 0usize;
     let (mut ku, mut kv) = (su.clone(), sv.clone());
     loop {
         let net = fit(src, m, (&ku, &kv))?;
@@ -296,6 +302,7 @@ pub(crate) fn fit_to_budget(
             });
         }
         rounds += 1;
+        work = work.saturating_add(bounds.len());
         let target = 0.95 * budget;
         let new_u = refine(
             &direction_spans(&bounds, true),
@@ -316,6 +323,12 @@ pub(crate) fn fit_to_budget(
             return Err(Error::ConditionNotMet {
                 eq: "tolerance",
                 why: "the refinement needs too many patches",
+            });
+        }
+        if work.saturating_add(count) > MAX_PATCH_WORK {
+            return Err(Error::ConditionNotMet {
+                eq: "tolerance",
+                why: "the refinement needs too much work (more than 2^17 patches fitted over its rounds)",
             });
         }
         ku.clone_from(&su);

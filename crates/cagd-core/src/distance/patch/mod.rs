@@ -32,7 +32,7 @@ const FLAT: f64 = 1e-13;
 /// largest ones): a noisy distance (rounding noise of two nearly equal patches) has
 /// thousands of strict grid maxima, and refining all of them made one distance of two
 /// degree-64 triangles take minutes (ADDED; bounded work).
-pub const MAX_REFINED_MAXIMA: usize = 32;
+pub const MAX_REFINED_MAXIMA: usize = 8;
 
 /// The parameter domain of [`max_distance_2d`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
