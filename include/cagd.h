@@ -4121,6 +4121,8 @@ CagdStatus cagd_triangle_elevation_matrix(size_t m,
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the size; only `*out_needed` is
  *   written.
+ * - `CAGD_ERR_NON_FINITE`: the difference overflows (coordinates near the largest
+ *   double); only `*out_needed` is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -4160,6 +4162,8 @@ CagdStatus cagd_curve_forward_difference(const struct CagdCurve *curve,
  *   pointer is misaligned.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `f_cap` or `g_cap` is below its size; both `*f_needed`
  *   and `*g_needed` are written, nothing else.
+ * - `CAGD_ERR_NON_FINITE`: an invariant overflows (coordinates near the largest double);
+ *   only `*f_needed` and `*g_needed` are written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -4194,6 +4198,8 @@ CagdStatus cagd_tensorpatch_degeneracy(const struct CagdTensorPatch *patch,
  *   `out_cap > 0`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < (n + 1) * dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_NON_FINITE`: an invariant overflows (coordinates near the largest double);
+ *   only `*out_needed` is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety

@@ -5,7 +5,9 @@
 
 use cagd_core::{curve_distance, tensor_patch_distance, tri_patch_distance};
 
-use crate::boundary::{Failure, OUT, OutNames, boundary, disjoint, handle_ref, out_ref, slice_out};
+use crate::boundary::{
+    Failure, OUT, OutNames, boundary, check_finite_out, disjoint, handle_ref, out_ref, slice_out,
+};
 use crate::curve::CagdCurve;
 use crate::status::CagdStatus;
 use crate::tensorpatch::CagdTensorPatch;
@@ -34,6 +36,8 @@ use crate::tripatch::CagdTriPatch;
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
 /// - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the size; only `*out_needed` is
 ///   written.
+/// - `CAGD_ERR_NON_FINITE`: the difference overflows (coordinates near the largest
+///   double); only `*out_needed` is written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -96,6 +100,8 @@ const G_OUT: OutNames = OutNames {
 ///   pointer is misaligned.
 /// - `CAGD_ERR_BUFFER_TOO_SMALL`: `f_cap` or `g_cap` is below its size; both `*f_needed`
 ///   and `*g_needed` are written, nothing else.
+/// - `CAGD_ERR_NON_FINITE`: an invariant overflows (coordinates near the largest double);
+///   only `*f_needed` and `*g_needed` are written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -133,6 +139,10 @@ pub unsafe extern "C" fn cagd_tensorpatch_degeneracy(
         )?;
         let (f_res, g_res) = (f_dst.take(f.len()), g_dst.take(g.len()));
         let (fs, gs) = (f_res?, g_res?);
+        // Alternating sums with binomials up to C(64, 32) overflow for coordinates near
+        // the largest double (C ABI fuzz long run: -inf returned with CAGD_OK).
+        check_finite_out(&f, "f_out")?;
+        check_finite_out(&g, "g_out")?;
         fs.copy_from_slice(&f);
         gs.copy_from_slice(&g);
         Ok(())
@@ -158,6 +168,8 @@ pub unsafe extern "C" fn cagd_tensorpatch_degeneracy(
 ///   `out_cap > 0`.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
 /// - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < (n + 1) * dim`; only `*out_needed` is written.
+/// - `CAGD_ERR_NON_FINITE`: an invariant overflows (coordinates near the largest double);
+///   only `*out_needed` is written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

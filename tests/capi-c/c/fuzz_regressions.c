@@ -215,3 +215,22 @@ cleanup:
     cagd_curve_free(c);
     return rc;
 }
+
+/* A (2, 1) patch with alternating coordinates near the largest double: the invariant
+ * F_j = P_0j - 2 P_1j + P_2j overflowed and came back as -inf with CAGD_OK (long fuzz run);
+ * now CAGD_ERR_NON_FINITE with only the sizes written. */
+int cagd_ctest_fuzz_tensor_degeneracy_overflow_is_non_finite(void) {
+    int rc = 1;
+    CagdTensorPatch *p = NULL;
+    const double pts[6] = {-1.5e308, -1.5e308, 1.5e308, 1.5e308, -1.5e308, -1.5e308};
+    double f[2] = {9.0, 9.0}, g[3] = {9.0, 9.0, 9.0};
+    size_t fn = 77, gn = 77;
+    CHECK_OK(cagd_tensorpatch_new(pts, 2, 1, 1, &p));
+    CHECK_STATUS(cagd_tensorpatch_degeneracy(p, f, 2, &fn, g, 3, &gn), CAGD_ERR_NON_FINITE);
+    CHECK_MESSAGE_HAS("not finite");
+    CHECK(fn == 2 && gn == 3 && f[0] == 9.0 && g[0] == 9.0);
+    rc = 0;
+cleanup:
+    cagd_tensorpatch_free(p);
+    return rc;
+}

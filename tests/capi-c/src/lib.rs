@@ -51,6 +51,7 @@ c_tests![
     fuzz_bezier_report_bound_never_infinite,
     fuzz_curve_reduce_batch_overflow_is_non_finite,
     fuzz_nurbs_span_extrapolation_overflow_refused,
+    fuzz_tensor_degeneracy_overflow_is_non_finite,
     // c/interval.c
     intervaltri_example_1,
     intervaltri_elevation_matrix,
