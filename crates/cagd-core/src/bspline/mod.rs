@@ -11,6 +11,7 @@ mod extract;
 mod insert;
 mod knots;
 mod merge;
+mod refine;
 mod removal;
 mod surface;
 mod uniform;

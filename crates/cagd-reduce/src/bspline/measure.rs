@@ -246,20 +246,21 @@ fn with_knots_of(s: &BSplineSurface, other: &BSplineSurface) -> Result<BSplineSu
         let mut out: Vec<f64> = theirs
             .iter()
             .copied()
-            .filter(|t| *t > lo && *t < hi && !mine.contains(t))
+            .filter(|t| {
+                // `mine` is sorted: a binary search (a linear `contains` per knot was
+                // quadratic too).
+                let i = mine.partition_point(|v| v < t);
+                *t > lo && *t < hi && mine.get(i) != Some(t)
+            })
             .collect();
         out.dedup();
         out
     };
     let ((_, _), (p, q)) = (s.degrees(), other.degrees());
-    let mut r = s.clone();
-    for t in missing(s.knots_u(), other.knots_u(), p) {
-        r = r.insert_knot_u(t, 1)?;
-    }
-    for t in missing(s.knots_v(), other.knots_v(), q) {
-        r = r.insert_knot_v(t, 1)?;
-    }
-    Ok(r)
+    // All at once (knot refinement): one insertion after another copied the whole net per
+    // knot, quadratic in the spans of `other` (minutes in the C ABI fuzz long run).
+    s.refine_knots_u(&missing(s.knots_u(), other.knots_u(), p))?
+        .refine_knots_v(&missing(s.knots_v(), other.knots_v(), q))
 }
 
 /// One Bézier cell evaluated on the unit square (homogeneous and projected for NURBS).

@@ -91,6 +91,37 @@ proptest! {
     }
 
     #[test]
+    fn refinement_equals_one_insertion_after_another(
+        s in surface_strategy(),
+        ts in proptest::collection::vec(0.01f64..0.99, 1..8),
+    ) {
+        let (p, q) = s.degrees();
+        let ((u0, u1), (v0, v1)) = s.domain();
+        let xu: Vec<f64> = ts.iter().map(|t| u0 + (u1 - u0) * t).collect();
+        let xv: Vec<f64> = ts.iter().map(|t| v0 + (v1 - v0) * t).collect();
+        prop_assume!(xu.iter().all(|t| knot_multiplicity(s.knots_u(), *t) == 0) && p >= 1);
+        prop_assume!(xv.iter().all(|t| knot_multiplicity(s.knots_v(), *t) == 0) && q >= 1);
+        let ru = s.refine_knots_u(&xu).unwrap();
+        let rv = s.refine_knots_v(&xv).unwrap();
+        let (mut su, mut sv) = (s.clone(), s.clone());
+        for (a, b) in xu.iter().zip(&xv) {
+            su = su.insert_knot_u(*a, 1).unwrap();
+            sv = sv.insert_knot_v(*b, 1).unwrap();
+        }
+        prop_assert_eq!(ru.knots_u(), su.knots_u());
+        prop_assert_eq!(rv.knots_v(), sv.knots_v());
+        let sc = scale(&s);
+        for (x, y) in [(&ru, &su), (&rv, &sv)] {
+            prop_assert_eq!(x.counts(), y.counts());
+            for (a, b) in x.points().iter().zip(y.points()) {
+                prop_assert!((a - b).abs() <= 1e-12 * sc, "{} vs {}", a, b);
+            }
+        }
+        assert_same_surface(&s, &ru);
+        assert_same_surface(&s, &rv);
+    }
+
+    #[test]
     fn pieces_evaluate_to_the_surface(s in surface_strategy()) {
         let pieces = s.to_beziers().unwrap();
         let sc = scale(&s);
