@@ -505,7 +505,8 @@ pub(crate) fn list_pieces(l: &CagdCurveList) -> CResult<BezierPieces> {
 /// - `CAGD_ERR_NULL_POINTER`: `curve` or `curve_out` is NULL.
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`: a rational curve of degree 0.
 /// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a scaled weight under- or overflows.
-/// - `CAGD_ERR_INVALID_ARGUMENT`: a misaligned pointer.
+/// - `CAGD_ERR_INVALID_ARGUMENT`: a misaligned pointer, or `rho` itself over- or
+///   underflows (end weights too far apart, e.g. 1e300 and 1e-300 at degree 1).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

@@ -34,7 +34,8 @@ impl StandardForm {
 /// # Errors
 /// [`Error::DegreeOutOfRange`] is impossible for a valid curve; [`Error::BadDegreePair`]
 /// for degree 0 (no reparametrisation can change a single weight);
-/// [`Error::NonPositiveWeight`] when a scaled weight under- or overflows.
+/// [`Error::NonPositiveWeight`] when a scaled weight under- or overflows;
+/// [`Error::BadParameter`] (`rho`) when `rho` itself does.
 ///
 /// ```
 /// # use cagd_core::BezierCurve;
@@ -64,6 +65,16 @@ pub fn standard_form(curve: &BezierCurve) -> Result<StandardForm> {
     }
     let exponent = 1.0 / n as f64;
     let rho = (w[0] / w[n]).powf(exponent);
+    // Degree 1 with end weights 1e300 and 1e-300 gave rho = inf with Ok (C ABI fuzz long
+    // run): the reparametrisation is not representable then.
+    if !(rho.is_finite() && rho > 0.0) {
+        return Err(Error::BadParameter {
+            name: "rho",
+            value: rho,
+            why: "the Möbius factor (w_0 / w_n)^(1/n) over- or underflows f64 (end weights too \
+                  far apart)",
+        });
+    }
     // w_i rho^i / w_0 = (w_i / w_0) (w_0/w_n)^(i/n): computed as a power of the ratio.
     let ratio = w[0] / w[n];
     let new: Vec<f64> = w

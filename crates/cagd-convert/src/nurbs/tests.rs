@@ -1,7 +1,7 @@
 //! Tests across the modules of the NURBS conversions: the public spec vectors, the laws of
 //! the general route (round trip, evaluation), closed forms = general route, surfaces.
 
-use cagd_core::{BSplineCurve, BSplineSurface, BezierCurve};
+use cagd_core::{BSplineCurve, BSplineSurface, BezierCurve, Error};
 use proptest::prelude::*;
 
 use crate::{
@@ -138,7 +138,7 @@ fn non_separable_weights_are_refused_by_the_closed_form() {
     let w = [1.0, 2.0, 1.0, 2.0, 4.0, 2.0, 1.0, 2.0, 1.5];
     let e = separable_factors(&w).unwrap_err();
     assert!(
-        matches!(e, cagd_core::Error::ConversionCondition { index: 8, .. }),
+        matches!(e, Error::ConversionCondition { index: 8, .. }),
         "{e:?}"
     );
     let ok = [1.0, 2.0, 0.5, 2.0, 4.0, 1.0, 3.0, 6.0, 1.5];
@@ -422,6 +422,20 @@ fn standard_form_keeps_the_shape() {
             assert!((x - y).abs() < 1e-13, "{u}: {a:?} {b:?}");
         }
     }
+}
+
+/// End weights 1e300 and 1e-300 at degree 1: `rho = 1e600` is not a double. Refused by
+/// name (was `rho = inf` with `Ok`, C ABI fuzz long run); 1e150 / 1e-150 still works.
+#[test]
+fn standard_form_refuses_an_unrepresentable_rho() {
+    let c = BezierCurve::new_rational(vec![0.0, 1.0], vec![1e300, 1e-300], 1).unwrap();
+    assert!(matches!(
+        standard_form(&c),
+        Err(Error::BadParameter { name: "rho", .. })
+    ));
+    let ok = BezierCurve::new_rational(vec![0.0, 1.0], vec![1e150, 1e-150], 1).unwrap();
+    let s = standard_form(&ok).unwrap();
+    assert!(s.rho.is_finite() && s.rho > 0.0);
 }
 
 /// Whether `r` in `[0, 1)` falls into the first `m` of `deg` equal parts.
