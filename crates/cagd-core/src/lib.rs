@@ -96,4 +96,4 @@ pub use frame::{ModelFrame, centred_rational_bound};
 pub use norm::{max_point_norm, point_norm};
 pub use patch::{TensorPatch, TriPatch, tri_count, tri_index};
 pub use quadrature::{MAX_GAUSS_NODES, gauss_legendre};
-pub use validate::{check_finite_param, check_points, check_tolerance, check_weights};
+pub use validate::{all_finite, check_finite_param, check_points, check_tolerance, check_weights};

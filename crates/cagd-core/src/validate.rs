@@ -4,6 +4,24 @@
 
 use crate::{Error, Result};
 
+/// Whether every value is finite, in one pass that vectorises: `x * 0` is `0` for finite
+/// `x` and NaN otherwise, summed in eight independent lanes (a `position(!is_finite)` or
+/// one chain of additions does not vectorise). The batch kernels scan whole inputs and
+/// outputs with it.
+pub fn all_finite(x: &[f64]) -> bool {
+    let mut acc = [0.0f64; 8];
+    let mut chunks = x.chunks_exact(8);
+    for c in &mut chunks {
+        for (a, v) in acc.iter_mut().zip(c) {
+            *a += v * 0.0;
+        }
+    }
+    for (a, v) in acc.iter_mut().zip(chunks.remainder()) {
+        *a += v * 0.0;
+    }
+    acc.iter().all(|a| *a == 0.0)
+}
+
 /// Checks a flat row-major point buffer (`point i, coordinate k at i * dim + k`) and returns
 /// the number of points.
 ///

@@ -6,9 +6,11 @@
 use cagd_core::check_degree;
 use cagd_reduce::{Operator, operator};
 
+use cagd_core::all_finite;
+
 use super::kernel::{
-    Overflow, PointMajorBlock, all_finite, elevate_curve_major, elevate_point_major,
-    elevation_terms, reduce_curve_major, reduce_point_major,
+    Overflow, PointMajorBlock, elevate_curve_major, elevate_point_major, elevation_terms,
+    reduce_curve_major, reduce_point_major,
 };
 use super::layout::CagdBatchLayout;
 use super::threads::{block_count, block_range, run_blocks};

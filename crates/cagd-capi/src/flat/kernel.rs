@@ -16,6 +16,7 @@ use std::marker::PhantomData;
 use std::ops::Range;
 use std::sync::Arc;
 
+use cagd_core::all_finite;
 use cagd_core::kernel::{elevate, elevation_coefficient};
 use cagd_reduce::{Method, Operator, operator, reduce_batch};
 
@@ -299,22 +300,6 @@ impl<'a> PointMajorBlock<'a> {
         }
         Ok(())
     }
-}
-
-/// Whether every value is finite: `x * 0` is `0` for finite `x` and NaN otherwise, summed
-/// in eight independent lanes (vectorises; `position(!is_finite)` does not).
-pub(super) fn all_finite(x: &[f64]) -> bool {
-    let mut acc = [0.0f64; 8];
-    let mut chunks = x.chunks_exact(8);
-    for c in &mut chunks {
-        for (a, v) in acc.iter_mut().zip(c) {
-            *a += v * 0.0;
-        }
-    }
-    for (a, v) in acc.iter_mut().zip(chunks.remainder()) {
-        *a += v * 0.0;
-    }
-    acc.iter().all(|a| *a == 0.0)
 }
 
 /// A slice length (or a stride within one) as the kernel's `isize`: a slice never spans

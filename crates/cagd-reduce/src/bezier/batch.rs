@@ -4,10 +4,10 @@
 //! and [`Operator::apply`] (one curve) are defined here, on top of it, so that `operator/`
 //! does not depend on this module.
 
+use cagd_core::all_finite;
 use cagd_core::{Error, Result};
 
 use super::bound::{BoundLevel, max_row_norm, safe_range};
-use super::gemm::all_finite;
 use super::operator::Operator;
 
 impl Operator {

@@ -226,26 +226,10 @@ fn loop_dyn(a: &[f64], cols: usize, rows: usize, dim: usize, input: &[f64], outp
     }
 }
 
-/// Whether every value is finite (`x * 0` is `0` for finite `x`, NaN otherwise; one
-/// pass with eight independent sums, so that it vectorises instead of waiting on one
-/// chain of additions).
-pub(crate) fn all_finite(x: &[f64]) -> bool {
-    let mut acc = [0.0f64; 8];
-    let mut chunks = x.chunks_exact(8);
-    for c in &mut chunks {
-        for (a, v) in acc.iter_mut().zip(c) {
-            *a += v * 0.0;
-        }
-    }
-    for (a, v) in acc.iter_mut().zip(chunks.remainder()) {
-        *a += v * 0.0;
-    }
-    acc.iter().all(|a| *a == 0.0)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use cagd_core::all_finite;
 
     /// The reference: the definition, curve by curve, coordinate by coordinate.
     fn reference(a: &[f64], rows: usize, cols: usize, input: &[f64], dim: usize) -> Vec<f64> {
