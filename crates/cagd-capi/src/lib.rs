@@ -52,8 +52,9 @@
 //!   Bézier method) with the `CagdWsgbReport` struct, `cagd_wsgb_reduce_to_tolerance`
 //!   (pieces in a `CagdWsgbCurveList`).
 //! - Every reduction of cagd-reduce: `cagd_curve_reduce` (twelve methods, with report),
-//!   `cagd_curve_reduce_batch`, `cagd_curve_reduce_to_tolerance` (C^k B-spline) and
-//!   `_stepwise` (seed 000 Algorithm 14.2.1), `cagd_curve_reduce_exact` /
+//!   `cagd_curve_reduce_batch` (`_bounded`: with per-curve bounds),
+//!   `cagd_curve_reduce_to_tolerance` (C^k B-spline) and `_stepwise` (seed 000 Algorithm
+//!   14.2.1), `cagd_curve_reduce_exact` /
 //!   `cagd_curve_exact_degree`, `cagd_curve_reduce_g1_optimal`, `cagd_reduce_operator`,
 //!   `cagd_bspline_reduce` (to a tolerance) and `cagd_bspline_reduce_uniform` (seed 001),
 //!   `cagd_bsplinesurface_reduce`, `cagd_tensorpatch_reduce` / `cagd_tripatch_reduce` and
