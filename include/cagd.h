@@ -4977,7 +4977,8 @@ CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
  * reduces `n_curves` polynomial curves of one degree `n` to degree `opts->target` with
  * one cached operator through a GEMM kernel, no per-curve allocation. With
  * `bounds_out == NULL` it is exactly `cagd_curve_reduce_batch`; a bound costs two more
- * small GEMMs (the error curve's coefficients and its values at the bound level's nodes).
+ * small GEMMs (the error curve's coefficients and its values at the bound level's nodes;
+ * the error curve is seed 000 §14.4.3's, the node bound goes beyond the seed).
  * Only `opts->method`, `target`, `r`, `p`, `l1`, `l2` and (with `bounds_out`)
  * `bound_level` are used. Rational curves: pass their homogeneous points
  * `(w_i P_i, w_i)` as polynomial curves of dimension `dim + 1` (the bounds are then

@@ -7,7 +7,7 @@ use crate::{Error, Result};
 /// Whether every value is finite, in one pass that vectorises: `x * 0` is `0` for finite
 /// `x` and NaN otherwise, summed in eight independent lanes (a `position(!is_finite)` or
 /// one chain of additions does not vectorise). The batch kernels scan whole inputs and
-/// outputs with it.
+/// outputs with it. Goes beyond the seeds (input validation).
 pub fn all_finite(x: &[f64]) -> bool {
     let mut acc = [0.0f64; 8];
     let mut chunks = x.chunks_exact(8);

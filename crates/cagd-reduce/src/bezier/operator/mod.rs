@@ -103,6 +103,8 @@ pub fn operator(method: Method, n: usize, m: usize) -> Result<Arc<Operator>> {
 /// Builds the operator of `method` (`n -> m`) afresh, without the cache: by the fast routes
 /// (falling back to the exact one) as [`operator`] does, or with `exact` by the exact
 /// rational route only. For measuring and testing construction; use [`operator`] otherwise.
+/// The methods and their formulas are seed 000 §14.2–14.5 (see [`Method`]); the fast routes
+/// go beyond the seed only in how they evaluate them (proven f64 / double-word error).
 ///
 /// # Errors
 /// As [`operator`].
