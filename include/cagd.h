@@ -917,8 +917,10 @@ typedef struct CagdReduceOptions {
    */
   size_t continuity;
   /**
-   * Reduction of a curve to a tolerance only: the deepest midpoint-subdivision level
-   * allowed (pieces of length `2^-max_depth` of the parameter range). Default 30.
+   * Reduction of a curve to a tolerance only: the depth limit, i.e. no piece shorter
+   * than `2^-max_depth` of the parameter range (not below `2^-46`; for
+   * `cagd_curve_reduce_to_tolerance_stepwise` the deepest midpoint-subdivision level,
+   * a total over all steps). Default 30.
    * (Patches to a tolerance stop at level 8, `4^8` pieces.)
    */
   size_t max_depth;
@@ -5293,8 +5295,11 @@ CagdStatus cagd_reduce_options_init(struct CagdReduceOptions *opts);
  * Reduces a Bézier curve of degree `n` (polynomial or rational) to a B-spline of degree
  * `opts->target` whose certified distance to the curve is at most `opts->tolerance`, with
  * `C^k` joins, `k = opts->continuity` (seed 000 §14.2.2 and Algorithm 14.2.1 generalised
- * to every linear method; SPEC-reduce §2.2). The curve is split at midpoints until every
- * piece's certified bound (of `opts->method`) meets the tolerance; the reduced pieces are
+ * to every linear method; SPEC-reduce §2.2). The breakpoints are placed by marching
+ * along the parameter, each piece as long as its certified bound (of `opts->method`, the
+ * rounding of extracting the piece included) allows within the tolerance (fewer pieces
+ * than the seed's midpoint subdivision, which `cagd_curve_reduce_to_tolerance_stepwise`
+ * keeps); the reduced pieces are
  * merged into one spline on `[0, 1]` whose interior knots have multiplicity
  * `target - k`; what the merge moved is added to the bound.
  *
@@ -5524,7 +5529,8 @@ CagdStatus cagd_report_space(const struct CagdReport *report,
 
 /**
  * Reads the shape of a piecewise reduction (to a tolerance): the number of pieces, the
- * deepest midpoint-subdivision level used (0: the curve was not split), the continuity
+ * depth of the shortest piece (`ceil(-log2(length))`, the midpoint-subdivision level a
+ * dyadic split would need for it; 0: the curve was not split), the continuity
  * order `k` of the joins, and the largest certified bound of a single piece (the bound
  * of the whole, `cagd_report_bound`, adds what merging into the spline moved).
  *

@@ -29,8 +29,9 @@ pub(crate) const MAX_TOTAL_POINTS: usize = 1_000_000;
 /// (`(n + 1)(n + 2) / 2` points, `n_points + degree + 1` knots) cannot overflow.
 pub(crate) const MAX_DEGREE: usize = cagd_core::MAX_DEGREE;
 
-/// The deepest midpoint subdivision of a Bézier curve reduced to a tolerance (`reduce --tol`
-/// on a `"bezier"`): at most 2^14 = 16384 pieces (the library allows 2^20, minutes of work;
+/// The depth limit of a Bézier curve reduced to a tolerance (`reduce --tol` on a
+/// `"bezier"`): no piece shorter than 2^-14 of the parameter range, so at most
+/// 2^14 + 1 = 16385 pieces (the library allows 2^20, minutes of work;
 /// the fuzzer found a degree-8 curve to degree 1 within 1e-9 that ran for minutes). WSGB
 /// curves have the library's own limit of 2^10 pieces (`cagd_reduce::MAX_WSGB_PIECES`).
 pub(crate) const MAX_TOLERANCE_DEPTH: usize = 14;
@@ -40,8 +41,8 @@ pub(crate) const LIMITS_TEXT: &str = "\
 Input limits (larger inputs are refused, exit 2, naming the field): 32 MiB per input file or
 stdin; 10000 objects per input array; 100000 control points (knots, weights, numbers of one
 list) per object and 1000000 in one input; 64 coordinates per point; degrees (and WSGB L)
-<= 64; JSON nesting depth 128. A Bezier curve reduced to a tolerance is cut into at
-most 16384 pieces (a WSGB curve 1024); other reduction work is bounded by the library (subdivision depth, fit
+<= 64; JSON nesting depth 128. A Bezier curve reduced to a tolerance is cut into
+pieces no shorter than 2^-14 of its parameter range, at most 16385 (a WSGB curve 1024 pieces); other reduction work is bounded by the library (subdivision depth, fit
 rounds and piece counts capped). A reduction that reaches a cap is refused, naming it.
 ";
 

@@ -271,8 +271,10 @@ pub struct CagdReduceOptions {
     /// (e.g. `CAGD_METHOD_L2` with `r = p = k`). Default 0 (`C^0`). Not used by
     /// `cagd_bspline_reduce`, which reads `spline_continuity`.
     pub continuity: usize,
-    /// Reduction of a curve to a tolerance only: the deepest midpoint-subdivision level
-    /// allowed (pieces of length `2^-max_depth` of the parameter range). Default 30.
+    /// Reduction of a curve to a tolerance only: the depth limit, i.e. no piece shorter
+    /// than `2^-max_depth` of the parameter range (not below `2^-46`; for
+    /// `cagd_curve_reduce_to_tolerance_stepwise` the deepest midpoint-subdivision level,
+    /// a total over all steps). Default 30.
     /// (Patches to a tolerance stop at level 8, `4^8` pieces.)
     pub max_depth: usize,
     /// Tensor-product patches only: the target degree in v (`target` is the one in u).

@@ -73,8 +73,11 @@ unsafe fn run(
 /// Reduces a Bézier curve of degree `n` (polynomial or rational) to a B-spline of degree
 /// `opts->target` whose certified distance to the curve is at most `opts->tolerance`, with
 /// `C^k` joins, `k = opts->continuity` (seed 000 §14.2.2 and Algorithm 14.2.1 generalised
-/// to every linear method; SPEC-reduce §2.2). The curve is split at midpoints until every
-/// piece's certified bound (of `opts->method`) meets the tolerance; the reduced pieces are
+/// to every linear method; SPEC-reduce §2.2). The breakpoints are placed by marching
+/// along the parameter, each piece as long as its certified bound (of `opts->method`, the
+/// rounding of extracting the piece included) allows within the tolerance (fewer pieces
+/// than the seed's midpoint subdivision, which `cagd_curve_reduce_to_tolerance_stepwise`
+/// keeps); the reduced pieces are
 /// merged into one spline on `[0, 1]` whose interior knots have multiplicity
 /// `target - k`; what the merge moved is added to the bound.
 ///

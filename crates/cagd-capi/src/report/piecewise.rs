@@ -24,7 +24,8 @@ fn piecewise(
 }
 
 /// Reads the shape of a piecewise reduction (to a tolerance): the number of pieces, the
-/// deepest midpoint-subdivision level used (0: the curve was not split), the continuity
+/// depth of the shortest piece (`ceil(-log2(length))`, the midpoint-subdivision level a
+/// dyadic split would need for it; 0: the curve was not split), the continuity
 /// order `k` of the joins, and the largest certified bound of a single piece (the bound
 /// of the whole, `cagd_report_bound`, adds what merging into the spline moved).
 ///

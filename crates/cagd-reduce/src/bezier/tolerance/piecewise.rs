@@ -37,7 +37,9 @@ pub struct PiecewiseReport {
     pub tolerance: f64,
     /// Number of pieces.
     pub pieces: usize,
-    /// Deepest midpoint-subdivision level used (`0`: the curve was not split).
+    /// The depth of the shortest piece: `ceil(-log2(length))`, the midpoint-subdivision
+    /// level a dyadic split would need for it (`0`: the curve was not split; for
+    /// [`crate::reduce_to_tolerance_alg_14_2_1`] the deepest level used).
     pub depth: usize,
     /// Largest certified bound of the pieces ([`ReducedPiece::error_bound`]).
     pub pieces_bound: f64,
@@ -87,8 +89,12 @@ pub(crate) fn assemble(
     // piece, and added to the piece's bound.
     let pieces_bound = pieces.iter().map(|p| p.error_bound).fold(0.0, f64::max);
     let slack = (tolerance - pieces_bound).max((1.0 - PIECE_SHARE) * tolerance);
-    let mut spline = BSplineCurve::from_beziers(&curves, &breaks, 0, slack)?;
-    if k > 0 {
+    let mut spline = if k == 1 && curves.len() > 1 {
+        c1_spline(&curves, &breaks)?
+    } else {
+        BSplineCurve::from_beziers(&curves, &breaks, 0, slack)?
+    };
+    if k > 1 {
         for &b in &breaks[1..breaks.len() - 1] {
             let r = spline.remove_knot(b, k, slack)?;
             if r.removed != k {
@@ -114,6 +120,47 @@ pub(crate) fn assemble(
         bound = bound.max(piece.error_bound + hull_distance(&piece.curve, &seg.curve));
     }
     Ok((spline, pieces, bound))
+}
+
+/// The degree-`m` spline with interior knots of multiplicity `m - 1` (C1) made of pieces
+/// that join C1 (up to rounding), without knot removal. Each de Boor point is the blossom
+/// of the spline at its `m` knots; with multiplicity `m - 1` those knots take at most two
+/// distinct values `t_i, t_(i+1)`, so the de Boor point is a Bézier point of the piece on
+/// `[t_i, t_(i+1)]`: piece `i` gives its points `1..=m-1` (the first piece also its point
+/// `0`, the last also its point `m`), and the shared joint points, implied by C1, are
+/// dropped. Rational pieces are taken in homogeneous space (point and weight together).
+/// Goes beyond the seed (the same spline as the C0 merge of seed 001 §4.1 followed by one
+/// knot removal per joint, when the joints are exactly C1); the caller certifies the result
+/// against the pieces.
+fn c1_spline(curves: &[BezierCurve], breaks: &[f64]) -> Result<BSplineCurve> {
+    let (m, dim) = (curves[0].degree(), curves[0].dim());
+    let last = curves.len() - 1;
+    let rational = curves.iter().any(BezierCurve::is_rational);
+    let count = (m + 1) + last * (m - 1);
+    let mut points = Vec::with_capacity(count * dim);
+    let mut weights = Vec::with_capacity(if rational { count } else { 0 });
+    let mut knots = Vec::with_capacity(count + m + 1);
+    knots.extend(std::iter::repeat_n(breaks[0], m + 1));
+    for (i, c) in curves.iter().enumerate() {
+        let lo = usize::from(i > 0);
+        let hi = if i == last { m } else { m - 1 };
+        points.extend_from_slice(&c.points()[lo * dim..(hi + 1) * dim]);
+        if rational {
+            match c.weights() {
+                Some(w) => weights.extend_from_slice(&w[lo..=hi]),
+                None => weights.extend(std::iter::repeat_n(1.0, hi + 1 - lo)),
+            }
+        }
+        if i > 0 {
+            knots.extend(std::iter::repeat_n(breaks[i], m - 1));
+        }
+    }
+    knots.extend(std::iter::repeat_n(breaks[last + 1], m + 1));
+    if rational {
+        BSplineCurve::new_rational(m, knots, points, weights, dim)
+    } else {
+        BSplineCurve::new(m, knots, points, dim)
+    }
 }
 
 /// A certified bound of `max_s ||a(s) - b(s)||` for two curves of the same degree and kind:
