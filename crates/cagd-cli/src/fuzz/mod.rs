@@ -41,6 +41,15 @@ pub(crate) fn case_count(default: usize) -> usize {
         .unwrap_or(default)
 }
 
+/// `CAGD_FUZZ_FROM`: the first case run (the ones before are drawn but not run), to replay
+/// a case of a long campaign alone; 0 by default.
+pub(crate) fn first_case() -> usize {
+    std::env::var("CAGD_FUZZ_FROM")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(0)
+}
+
 /// `CAGD_FUZZ_SEED` or [`DEFAULT_SEED`].
 pub(crate) fn seed() -> u64 {
     std::env::var("CAGD_FUZZ_SEED")
@@ -146,8 +155,12 @@ pub(crate) fn campaign(
     let mut rng = Rng::new(seed);
     let mut summary = Summary::default();
     let start = Instant::now();
+    let from = first_case();
     for i in 0..count {
         let case = next_case(&mut rng);
+        if i < from {
+            continue;
+        }
         progress(i, &case);
         let t = Instant::now();
         let ran = run(&case);
