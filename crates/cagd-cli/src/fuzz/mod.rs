@@ -6,7 +6,8 @@
 //! Two drivers run the same cases: in-process (`crate::fuzz_in_process`, the command's
 //! [`crate::run`] with buffers for its streams; fast) and as a subprocess of the built
 //! binary (`tests/cli_fuzz.rs`, which includes this folder by path). Both read
-//! `CAGD_FUZZ_CASES` (how many cases; short defaults for `cargo test`) and `CAGD_FUZZ_SEED`;
+//! `CAGD_FUZZ_CASES` (how many cases; short defaults for `cargo test`), `CAGD_FUZZ_SEED` and
+//! `CAGD_FUZZ_FROM` (replay from case N);
 //! the README's Fuzzing section has the long runs.
 
 pub(crate) mod cases;
