@@ -127,3 +127,41 @@ fn surface_segments_with_an_extreme_weight_is_refused() {
         );
     }
 }
+
+/// Conversions whose report overflowed (coordinates of 1e308; CLI fuzz, seed 23) wrote
+/// `null` for a NaN: now one named line, exit 2.
+#[test]
+fn conversion_reports_that_overflow_are_refused() {
+    let cases = [
+        (
+            vec!["convert", "--to", "bezier"],
+            r#"{"degree":2,"knots":[-2.1049820820556753,-2.1049820820556753,-2.1049820820556753,-1.0451210958438035,-0.07679819945475197,0.7960488543499915,0.7960488543499915,0.7960488543499915],"points":[[-4359000.0,-3860000.0],[-1216000.0,-1e+308],[-1385000.0,-2000000.0],[-132000.0,-4341000.0],[-4657000.0,-896000.0]],"type":"bspline"}"#,
+        ),
+        (
+            vec!["convert", "--to", "nurbs"],
+            r#"{"segments":[[[2.15,0.502,0.86],[1.475,-4.723,3.189],[1.541,4.743,0.663],[-4.0,3.621,-3.015]],[[-4.0,-1e+308,-3.015],[1.199,-0.004,-0.202],[-1.822,4.734,-2.411],[1.575,1.341,4.737]],[[1.575,1.341,4.737],[-3.56,0.232,-3.375],[0.977,1.0,-1.166],[-0.537,-1.38,-1.276]],[[-0.537,-1.38,-1.276],[4.966,1.0,-1.566],[-3.041,-0.36,-4.23],[-1.823,-2.815,0.448]]],"type":"beziers","weights":[null,[2.1512932806545333,0.26867267595001865,0.44418452392272156,1.538012749219753],null,[2.1988537938713617,1.4295156828665312,1.431117141580208,0.7698638996450422]]}"#,
+        ),
+    ];
+    for (args, input) in cases {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_cagd"))
+            .args(&args)
+            .stdin(std::process::Stdio::piped())
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        std::io::Write::write_all(&mut child.stdin.take().unwrap(), input.as_bytes()).unwrap();
+        let out = child.wait_with_output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        assert!(!stdout.contains("null"), "{args:?}: {stdout}");
+        if out.status.code() == Some(2) {
+            assert!(
+                err.lines().count() == 1 && err.starts_with("cagd: "),
+                "{err}"
+            );
+        } else {
+            assert_eq!(out.status.code(), Some(0), "{err}");
+        }
+    }
+}
