@@ -92,5 +92,5 @@ fn fuzz_the_binary() {
     let _gone = std::fs::remove_dir_all(&dir);
     println!("seed {seed}: {}", summary.report());
     assert!(summary.failures.is_empty(), "{}", summary.report());
-    assert_eq!(summary.runs + summary.pending, count);
+    assert_eq!(summary.runs, count.saturating_sub(fuzz::first_case()));
 }

@@ -259,12 +259,26 @@ fn beziers_json(pieces: &BezierPieces, segs: &[BezierCurve]) -> Value {
     json
 }
 
+/// `x`, or the error naming `what` when it is not finite: a report never carries a NaN or
+/// an infinity (issue 18: coordinates of 1e308 overflowed the measured difference and the
+/// certified bound of a conversion, written as `null`).
+fn finite(x: f64, what: &str) -> Result<f64, InputError> {
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        Err(InputError::new(
+            "input",
+            format!("the conversion's {what} is {x} (coordinates too large: it overflows)"),
+        ))
+    }
+}
+
 fn spline_to_beziers(c: &BSplineCurve, standard_form: bool) -> Result<Converted, InputError> {
     let pieces = to_bezier_pieces(c).map_err(|e| InputError::new("input", e.to_string()))?;
     let mut segs = pieces
         .to_segments()
         .map_err(|e| InputError::new("input", e.to_string()))?;
-    let diff = measured(&pieces, &|t| c.eval(t).ok());
+    let diff = finite(measured(&pieces, &|t| c.eval(t).ok()), "max_difference")?;
     if standard_form {
         for (k, s) in segs.iter_mut().enumerate() {
             *s = standard(s, &format!("pieces[{k}]"))?;
@@ -286,7 +300,11 @@ fn spline_to_beziers(c: &BSplineCurve, standard_form: bool) -> Result<Converted,
 
 fn beziers_to_spline(pieces: &BezierPieces, tol: Option<f64>) -> Result<Converted, InputError> {
     let r = pieces_to_nurbs(pieces, tol).map_err(|e| InputError::new("input", e.to_string()))?;
-    let diff = measured(pieces, &|t| r.curve.eval(t).ok());
+    let diff = finite(
+        measured(pieces, &|t| r.curve.eval(t).ok()),
+        "max_difference",
+    )?;
+    finite(r.bound, "certified_bound")?;
     let picture = picture(&r.curve, pieces, "bezier -> nurbs");
     let mut json = Shape::BSpline(r.curve).to_json();
     json["report"] = json!({

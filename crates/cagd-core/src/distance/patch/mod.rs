@@ -282,6 +282,15 @@ pub fn tensor_patch_grid(p: &TensorPatch, samples: usize) -> Vec<f64> {
     TensorEval::new(p).grid(samples.max(2))
 }
 
+/// The triangular patch `t` at the nodes of [`max_distance_2d_with_grid`]'s triangle grid
+/// of `samples` intervals per side: node `(i, j)`, `i + j <= samples`, at
+/// `(i (samples + 1) + j) dim` (on the hypotenuse `i + j = samples` the point
+/// `(i / samples, 1 - i / samples)`; entries outside the triangle are 0), by its rows
+/// elevated once and cached bases (`O(N^2 n)` for `N` samples, ADDED).
+pub fn tri_patch_grid(t: &TriPatch, samples: usize) -> Vec<f64> {
+    TriEval::new(t).grid(samples.max(2))
+}
+
 /// Grid size for two patches of the given total degrees.
 fn grid_for(total_degree: usize) -> usize {
     4 * total_degree + 32

@@ -55,17 +55,14 @@ fn spans(knots: &[f64], p: usize) -> usize {
     inner.len().saturating_sub(1).max(1)
 }
 
+/// `s` with every non-empty span split into `2^level` equal spans in both directions, all
+/// knots of a direction inserted in one pass (knot refinement: one insertion after another
+/// copied the whole net per knot, quadratic in the spans of the level).
 fn refine(s: &BSplineSurface, level: usize) -> Result<BSplineSurface> {
     let parts = 1usize << level;
     let (p, q) = s.degrees();
-    let mut r = s.clone();
-    for t in midpoints(s.knots_u(), p, parts) {
-        r = r.insert_knot_u(t, 1)?;
-    }
-    for t in midpoints(s.knots_v(), q, parts) {
-        r = r.insert_knot_v(t, 1)?;
-    }
-    Ok(r)
+    s.refine_knots_u(&midpoints(s.knots_u(), p, parts))?
+        .refine_knots_v(&midpoints(s.knots_v(), q, parts))
 }
 
 /// Reduces a B-spline / NURBS surface to degrees `opts.target` with a certified error
@@ -218,6 +215,30 @@ mod tests {
         }
         let again = reduce_to_tolerance_capped(&s, &opts, 1e-5, full.patches).unwrap();
         assert_eq!(again.surface, full.surface);
+    }
+
+    #[test]
+    fn refine_inserts_what_one_at_a_time_would() {
+        let s = surface();
+        for level in 0..4 {
+            let fast = refine(&s, level).unwrap();
+            let mut slow = s.clone();
+            for t in midpoints(s.knots_u(), 3, 1 << level) {
+                slow = slow.insert_knot_u(t, 1).unwrap();
+            }
+            for t in midpoints(s.knots_v(), 3, 1 << level) {
+                slow = slow.insert_knot_v(t, 1).unwrap();
+            }
+            assert_eq!(fast.knots_u(), slow.knots_u());
+            assert_eq!(fast.knots_v(), slow.knots_v());
+            let d = fast
+                .points()
+                .iter()
+                .zip(slow.points())
+                .map(|(a, b)| (a - b).abs())
+                .fold(0.0, f64::max);
+            assert!(d < 1e-13, "level {level}: {d}");
+        }
     }
 
     #[test]

@@ -250,3 +250,21 @@ fn each_direction_keeps_its_own_continuity() {
         }
     }
 }
+
+/// The result-size cap (issue 18: a rational (3, 1) surface to (1, 1) within 1e-9 was
+/// answered with 386 140 patches): more than 2^16 patches, and more than the input, is
+/// refused by name; the input's own size is always allowed.
+#[test]
+fn results_beyond_the_patch_cap_are_refused() {
+    assert!(within_patch_cap(256, 256, 4).is_ok());
+    assert!(within_patch_cap(1, MAX_SURFACE_PATCHES, 1).is_ok());
+    match within_patch_cap(193_070, 2, 4) {
+        Err(Error::ConditionNotMet { eq, why }) => {
+            assert_eq!(eq, "tolerance");
+            assert!(why.contains("too much work"), "{why}");
+        }
+        other => panic!("expected ConditionNotMet, got {other:?}"),
+    }
+    assert!(within_patch_cap(300, 300, 90_000).is_ok());
+    assert!(within_patch_cap(301, 300, 90_000).is_err());
+}
