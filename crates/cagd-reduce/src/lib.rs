@@ -220,12 +220,13 @@ pub use ball::{
     wsgb_uniform_step_exact,
 };
 pub use bezier::{
-    BoundLevel, ChebyshevTerms, DEFAULT_MAX_DEPTH, DEFAULT_REL_TOL, ErrorSpace, MAX_PIECES, Method,
-    Operator, OperatorRoute, PiecewiseReduction, PiecewiseReport, ReduceOptions, ReducedPiece,
-    Reduction, Report, ToleranceOptions, build_operator, constrained_chebyshev_terms, eck_lambdas,
-    exact_degree, max_deviation, operator, perturbation_error_factor, reduce, reduce_batch,
-    reduce_batch_with_bounds, reduce_exact, reduce_g1_optimal, reduce_to_tolerance,
-    reduce_to_tolerance_alg_14_2_1, reduce_with, subdivision_levels,
+    BoundLevel, ChebyshevTerms, DEFAULT_MAX_DEPTH, DEFAULT_REL_TOL, ErrorSpace, MAX_PIECES,
+    MAX_TOLERANCE_WORK, Method, Operator, OperatorRoute, PiecewiseReduction, PiecewiseReport,
+    ReduceOptions, ReducedPiece, Reduction, Report, ToleranceOptions, build_operator,
+    constrained_chebyshev_terms, eck_lambdas, exact_degree, max_deviation, operator,
+    perturbation_error_factor, reduce, reduce_batch, reduce_batch_with_bounds, reduce_exact,
+    reduce_g1_optimal, reduce_to_tolerance, reduce_to_tolerance_alg_14_2_1, reduce_with,
+    subdivision_levels,
 };
 pub use bspline::{
     BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy, MAX_SEGMENT_REDUCTIONS,

@@ -21,6 +21,25 @@ pub const DEFAULT_MAX_DEPTH: usize = 30;
 /// The largest number of pieces a reduction to a tolerance may produce (`2^20`).
 pub const MAX_PIECES: usize = 1 << 20;
 
+/// Most work of one [`reduce_to_tolerance`]: the pieces reduced (accepted or split), each
+/// counted `((n + 1)^2 + 64) (d + 1)` for degree `n` in dimension `d`: `2^27`, under a
+/// second in a release build (ADDED, bounded work, issue 18: a degree-52 curve ran a
+/// million reductions of 27 us each in the C ABI fuzz run; measured, a degree-5 curve in
+/// 1D takes 1.2 us per piece).
+pub const MAX_TOLERANCE_WORK: usize = 1 << 27;
+
+/// The deepest midpoint subdivision that still splits: below `2^-52` of the parameter
+/// range a midpoint near `t = 1` rounds to an end.
+const MAX_SPLIT_DEPTH: usize = 52;
+
+/// The rounding level of a reduction of `piece`: `2 (n + 3) eps max ||P_i||` (Euclidean
+/// points; the allowance of the B-spline fit's spans). No split brings a piece's bound
+/// below it: subdividing keeps the points' size, and with it their rounding.
+fn rounding_floor(piece: &BezierCurve) -> f64 {
+    let n = piece.degree() as f64;
+    2.0 * (n + 3.0) * f64::EPSILON * cagd_core::max_point_norm(piece.points(), piece.dim())
+}
+
 /// Options of [`reduce_to_tolerance`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ToleranceOptions {
@@ -148,10 +167,12 @@ pub(crate) fn split_levels(
 /// ([`Error::BadDegreePair`] for `m >= n`, [`Error::TooManyConstraints`] for `r + p + 1 > m`);
 /// [`Error::BadParameter`] (`continuity`) when `k >= m` or the method does not interpolate
 /// order `k` at both ends; [`Error::NoConvergence`] (with the largest bound reached) when a
-/// piece still fails at depth `max_depth`, when more than [`MAX_PIECES`] pieces would be
-/// needed, or when the merged spline's bound exceeds `delta`; [`Error::ConditionNotMet`] if
-/// the pieces do not join within `delta / 128` (only when `delta` is near the rounding
-/// level); [`Error::NonPositiveWeight`] when a reduced weight of a rational piece is still
+/// piece still fails at depth `max_depth` (at most 52: a shorter piece cannot be split),
+/// when more than [`MAX_PIECES`] pieces would be needed, or when the merged spline's bound
+/// exceeds `delta`; [`Error::ConditionNotMet`] if the pieces do not join within
+/// `delta / 128` (only when `delta` is near the rounding level), when a piece above the
+/// goal has a rounding level `2 (n + 3) eps max ||P_i||` above half of it (no split can
+/// help), or when the work exceeds [`MAX_TOLERANCE_WORK`]; [`Error::NonPositiveWeight`] when a reduced weight of a rational piece is still
 /// not positive at depth `max_depth` (before that such a piece is split).
 ///
 /// ```
@@ -184,7 +205,17 @@ pub fn reduce_to_tolerance(
     let mut stack = vec![(0.0, 1.0, 0usize, curve.clone())];
     let mut done: Vec<ReducedPiece> = Vec::new();
     let mut depth_used = 0;
+    let unit = ((n + 1) * (n + 1) + 64) * (curve.dim() + 1);
+    let mut work = 0usize;
     while let Some((a, b, depth, piece)) = stack.pop() {
+        work = work.saturating_add(unit);
+        if work > MAX_TOLERANCE_WORK {
+            return Err(Error::ConditionNotMet {
+                eq: "tolerance",
+                why: "the subdivision needs too much work (more than 2^27 reduced pieces \
+                      times ((n + 1)^2 + 64) (d + 1))",
+            });
+        }
         // A rational piece whose reduced weights are not positive is split like one whose
         // bound is too large (shorter pieces have reduced weights nearer the original's).
         let (red, e) = match reduce_with(&piece, &ropts) {
@@ -198,6 +229,7 @@ pub fn reduce_to_tolerance(
             Err(Error::NonPositiveWeight { .. }) => (None, f64::INFINITY),
             Err(err) => return Err(err),
         };
+        let reduced = red.is_some();
         if let Some(red) = red.filter(|_| e <= goal) {
             depth_used = depth_used.max(depth);
             done.push(ReducedPiece {
@@ -208,7 +240,13 @@ pub fn reduce_to_tolerance(
             });
             continue;
         }
-        let room = opts.max_depth.saturating_sub(depth);
+        if reduced && rounding_floor(&piece) > 0.5 * goal {
+            return Err(Error::ConditionNotMet {
+                eq: "tolerance",
+                why: "the tolerance is below the rounding level of the curve",
+            });
+        }
+        let room = opts.max_depth.min(MAX_SPLIT_DEPTH).saturating_sub(depth);
         let mut levels = if predict && e.is_finite() {
             levels_for(e / goal, n, false).max(1)
         } else {
