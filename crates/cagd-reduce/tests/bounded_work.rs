@@ -170,3 +170,45 @@ fn measurement_of_a_high_degree_spline_matches_de_boor_sampling() {
     assert!(measured >= dense * (1.0 - 1e-9), "{measured} < {dense}");
     assert!(measured <= dense * 1.01, "{measured} far above {dense}");
 }
+
+/// Fuzz session 0x5d1080fd3edaf05b call 286 (7.8 s): a degree-64 WSGB curve to cubics
+/// within 4.4e-7 by perturbation; every piece tried was measured in exact arithmetic. Now
+/// only the pieces of largest bound are measured, within a budget: the answer is the same
+/// pieces, certified, and the piece of largest bound is measured.
+#[test]
+fn degree_64_wsgb_to_tolerance_measures_within_a_budget() {
+    let c = cagd_core::WsgbCurve::new(points(65 * 2, 0x5d10), 2, 3).unwrap();
+    let tol = 4.4e-7;
+    let r =
+        cagd_reduce::reduce_wsgb_to_tolerance(&c, 3, cagd_reduce::WsgbMethod::Perturbation, tol)
+            .unwrap();
+    assert!(r.error_bound <= tol && r.max_error <= r.error_bound);
+    let top = r
+        .pieces
+        .iter()
+        .max_by(|a, b| a.error_bound.total_cmp(&b.error_bound))
+        .unwrap();
+    assert!(top.reduction.report.max_error.is_some());
+    let measured = r
+        .pieces
+        .iter()
+        .filter(|p| p.reduction.report.max_error.is_some())
+        .count();
+    assert!((1..=cagd_reduce::WSGB_MEASURED_PIECES).contains(&measured));
+    // Independent: every piece against the curve at its own parameters.
+    for p in &r.pieces {
+        for k in 0..=20 {
+            let s = f64::from(k) / 20.0;
+            let (a, b) = (
+                c.eval(p.start + s * (p.end - p.start)),
+                p.reduction.curve.eval(s),
+            );
+            let d = ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)).sqrt();
+            assert!(
+                d <= p.error_bound * (1.0 + 1e-9) + 1e-15,
+                "{d} > {}",
+                p.error_bound
+            );
+        }
+    }
+}
