@@ -64,7 +64,7 @@ pub struct WsgbPiecewise {
 /// does not.
 ///
 /// # Errors
-/// [`Error::BadTolerance`]; the errors of [`reduce_wsgb`]; [`Error::NoConvergence`] when
+/// [`Error::BadTolerance`]; the errors of [`reduce_wsgb`](super::reduce_wsgb); [`Error::NoConvergence`] when
 /// the depth or piece limit is reached.
 pub fn reduce_wsgb_to_tolerance(
     curve: &WsgbCurve,
