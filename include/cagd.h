@@ -1793,7 +1793,10 @@ CagdStatus cagd_bspline_to_beziers(const struct CagdBSpline *spline,
  * - `CAGD_ERR_CONDITION_NOT_MET`: `CAGD_SPLINE_FIT`, `CAGD_SPLINE_SEGMENTS`: the
  *   tolerance cannot be met (below the rounding level of the curve, or more than `2^20`
  *   spans, or for the fit more than `2^23` span coordinates fitted over the refinement
- *   rounds, needed); `CAGD_SPLINE_PIEGL_TILLER_1995`: the curve is not reducible within the
+ *   rounds, each span counted with 24 more and, above degree 7, `(p + 1)^2 / 64` times,
+ *   needed; for the segments more than `2^20` segment reductions, or a `C^k` joint of two
+ *   reduced NURBS pieces whose knot removal would make a control weight non-positive);
+ *   `CAGD_SPLINE_PIEGL_TILLER_1995`: the curve is not reducible within the
  *   tolerance without subdivision (a segment reduction or a required knot removal does
  *   not fit in the tolerance left on its spans), or a reduced NURBS weight is not
  *   positive.
@@ -2092,7 +2095,8 @@ CagdStatus cagd_bsplinesurface_reduce(const struct CagdBSplineSurface *surface,
  * - `CAGD_ERR_BAD_KNOTS` (fit): a knot line of multiplicity `p + 1`.
  * - `CAGD_ERR_CONDITION_NOT_MET` (fit): the tolerance is below the rounding level, or
  *   the refinement of a direction needs more than `2^23` span coordinates fitted over
- *   its rounds (bounded work: about a second).
+ *   its rounds, each span counted with 24 more and, above degree 7, `(p + 1)^2 / 64`
+ *   times (bounded work: about a second).
  * - `CAGD_ERR_NO_CONVERGENCE` (segments): level 6 is not enough.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
@@ -4869,8 +4873,10 @@ CagdStatus cagd_report_patch(const struct CagdReport *report,
  * - `CAGD_ERR_BAD_KNOTS`: an interior knot of multiplicity `p + 1` (the input may jump
  *   there).
  * - `CAGD_ERR_CONDITION_NOT_MET`: the tolerance is below the rounding level of the curve
- *   or needs more than `2^20` spans (or more than `2^19` spans fitted over the refinement
- *   rounds: bounded work).
+ *   or needs more than `2^20` spans, or too much work (bounded work: more than `2^19`
+ *   spans fitted over the refinement rounds, a span above degree 7 counted
+ *   `(max(p, target) + 1)^2 / 64` times and in more than 3D `ceil((dim + 1) / 4)` times;
+ *   equal weights reduced below `p`: as `cagd_bspline_reduce`'s global fit).
  * - `CAGD_ERR_SINGULAR`: the least-squares system is rank-deficient (not expected).
  * - `CAGD_ERR_NON_FINITE`: the sampled error is not finite.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
@@ -5332,9 +5338,13 @@ CagdStatus cagd_reduce_options_init(struct CagdReduceOptions *opts);
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n` or below the method's minimum.
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target`, or `r`, `p` below -1.
  * - `CAGD_ERR_NO_CONVERGENCE`: the tolerance was not reached within `max_depth`
- *   subdivision levels or 2^20 pieces (the message gives the bound reached).
+ *   subdivision levels (at most 52 are used) or 2^20 pieces (the message gives the bound
+ *   reached).
  * - `CAGD_ERR_CONDITION_NOT_MET`: the pieces do not join within `tolerance / 128` (only
- *   for a tolerance near the rounding level).
+ *   for a tolerance near the rounding level); a piece above the tolerance has a rounding
+ *   level `2 (n + 3) eps max |P_i|` above half of it (no subdivision can help: e.g. a
+ *   curve far from the origin); or the subdivision needs too much work (more than `2^27`
+ *   pieces reduced times `((n + 1)^2 + 64) (dim + 1)`, bounded work).
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational piece is not positive.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *

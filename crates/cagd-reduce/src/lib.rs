@@ -213,19 +213,20 @@ mod patch;
 mod rational_to_polynomial;
 
 pub use ball::{
-    MAX_WSGB_PIECES, WsgbMethod, WsgbPiece, WsgbPiecewise, WsgbReduction, WsgbReport, WsgbStep,
-    reduce_wsgb, reduce_wsgb_to_tolerance, reduce_wsgb_via_bezier, reduce_wsgb_with,
-    wsgb_chebyshev_coefficients, wsgb_paper_bound_11, wsgb_perturbation_error_factor,
-    wsgb_perturbation_step, wsgb_perturbed_points, wsgb_sampled_error_inf, wsgb_uniform_points,
-    wsgb_uniform_step_exact,
+    MAX_WSGB_PIECES, WSGB_MEASURED_PIECES, WsgbMethod, WsgbPiece, WsgbPiecewise, WsgbReduction,
+    WsgbReport, WsgbStep, reduce_wsgb, reduce_wsgb_to_tolerance, reduce_wsgb_via_bezier,
+    reduce_wsgb_with, wsgb_chebyshev_coefficients, wsgb_paper_bound_11,
+    wsgb_perturbation_error_factor, wsgb_perturbation_step, wsgb_perturbed_points,
+    wsgb_sampled_error_inf, wsgb_uniform_points, wsgb_uniform_step_exact,
 };
 pub use bezier::{
-    BoundLevel, ChebyshevTerms, DEFAULT_MAX_DEPTH, DEFAULT_REL_TOL, ErrorSpace, MAX_PIECES, Method,
-    Operator, OperatorRoute, PiecewiseReduction, PiecewiseReport, ReduceOptions, ReducedPiece,
-    Reduction, Report, ToleranceOptions, build_operator, constrained_chebyshev_terms, eck_lambdas,
-    exact_degree, max_deviation, operator, perturbation_error_factor, reduce, reduce_batch,
-    reduce_batch_with_bounds, reduce_exact, reduce_g1_optimal, reduce_to_tolerance,
-    reduce_to_tolerance_alg_14_2_1, reduce_with, subdivision_levels,
+    BoundLevel, ChebyshevTerms, DEFAULT_MAX_DEPTH, DEFAULT_REL_TOL, ErrorSpace, MAX_PIECES,
+    MAX_TOLERANCE_WORK, Method, Operator, OperatorRoute, PiecewiseReduction, PiecewiseReport,
+    ReduceOptions, ReducedPiece, Reduction, Report, ToleranceOptions, build_operator,
+    constrained_chebyshev_terms, eck_lambdas, exact_degree, max_deviation, operator,
+    perturbation_error_factor, reduce, reduce_batch, reduce_batch_with_bounds, reduce_exact,
+    reduce_g1_optimal, reduce_to_tolerance, reduce_to_tolerance_alg_14_2_1, reduce_with,
+    subdivision_levels,
 };
 pub use bspline::{
     BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy, MAX_SEGMENT_REDUCTIONS,

@@ -110,9 +110,13 @@ unsafe fn run(
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n` or below the method's minimum.
 /// - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target`, or `r`, `p` below -1.
 /// - `CAGD_ERR_NO_CONVERGENCE`: the tolerance was not reached within `max_depth`
-///   subdivision levels or 2^20 pieces (the message gives the bound reached).
+///   subdivision levels (at most 52 are used) or 2^20 pieces (the message gives the bound
+///   reached).
 /// - `CAGD_ERR_CONDITION_NOT_MET`: the pieces do not join within `tolerance / 128` (only
-///   for a tolerance near the rounding level).
+///   for a tolerance near the rounding level); a piece above the tolerance has a rounding
+///   level `2 (n + 3) eps max |P_i|` above half of it (no subdivision can help: e.g. a
+///   curve far from the origin); or the subdivision needs too much work (more than `2^27`
+///   pieces reduced times `((n + 1)^2 + 64) (dim + 1)`, bounded work).
 /// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational piece is not positive.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///

@@ -59,7 +59,9 @@ pub use perturbation::{
 };
 pub use reduce::{reduce_wsgb, reduce_wsgb_with};
 pub use report::{WsgbMethod, WsgbReduction, WsgbReport, WsgbStep};
-pub use tolerance::{MAX_WSGB_PIECES, WsgbPiece, WsgbPiecewise, reduce_wsgb_to_tolerance};
+pub use tolerance::{
+    MAX_WSGB_PIECES, WSGB_MEASURED_PIECES, WsgbPiece, WsgbPiecewise, reduce_wsgb_to_tolerance,
+};
 pub use uniform::{wsgb_chebyshev_coefficients, wsgb_uniform_points, wsgb_uniform_step_exact};
 pub use via_bezier::reduce_wsgb_via_bezier;
 

@@ -4,9 +4,20 @@
 
 use cagd_core::{Error, Result, WsgbCurve, check_tolerance};
 
-use super::measure::norm_inf;
-use super::{WsgbMethod, WsgbReduction, reduce_wsgb};
+use super::measure::{measured, norm_inf};
+use super::{WsgbMethod, WsgbReduction, reduce_wsgb_with};
 use crate::DEFAULT_MAX_DEPTH;
+
+/// The most pieces [`reduce_wsgb_to_tolerance`] measures (those of largest bound first):
+/// a measurement elevates the reduced piece back to degree `n` in exact arithmetic, 75 ms
+/// at degree 64 (ADDED; bounded work, issue 18: measuring every piece tried made a
+/// degree-64 curve take 7.8 s in the C ABI fuzz run).
+pub const WSGB_MEASURED_PIECES: usize = 16;
+
+/// Work budget of the measurements of [`reduce_wsgb_to_tolerance`], counted `(n + 1)^3`
+/// per piece: `2^20` (three pieces at degree 64, 16 up to degree 39; the piece of largest
+/// bound is always measured).
+const WSGB_MEASURE_WORK: usize = 1 << 20;
 
 /// The most pieces [`reduce_wsgb_to_tolerance`] makes before it refuses (2^10; beyond the
 /// seed: a bound on its work, issue 18 — the fuzzer's WSGB curve of degree 8 reduced to
@@ -35,7 +46,9 @@ pub struct WsgbPiecewise {
     pub pieces: Vec<WsgbPiece>,
     /// Largest certified bound of the pieces (`<= tolerance`).
     pub error_bound: f64,
-    /// Largest measured error of the pieces (against the subdivided original pieces).
+    /// Largest measured error of the measured pieces (against the subdivided original
+    /// pieces): the [`WSGB_MEASURED_PIECES`] of largest bound, fewer at high degree (a
+    /// piece's report has `max_error: None` when it was not measured).
     pub max_error: f64,
     /// Deepest midpoint-subdivision level used.
     pub depth: usize,
@@ -51,7 +64,7 @@ pub struct WsgbPiecewise {
 /// does not.
 ///
 /// # Errors
-/// [`Error::BadTolerance`]; the errors of [`reduce_wsgb`]; [`Error::NoConvergence`] when
+/// [`Error::BadTolerance`]; the errors of [`reduce_wsgb`](super::reduce_wsgb); [`Error::NoConvergence`] when
 /// the depth or piece limit is reached.
 pub fn reduce_wsgb_to_tolerance(
     curve: &WsgbCurve,
@@ -64,9 +77,10 @@ pub fn reduce_wsgb_to_tolerance(
     let l = curve.order();
     let mut stack = vec![(0.0f64, 1.0f64, 0usize, curve.clone())];
     let mut done: Vec<WsgbPiece> = Vec::new();
+    let mut sources: Vec<WsgbCurve> = Vec::new();
     let mut depth_used = 0;
     while let Some((a, b, depth, piece)) = stack.pop() {
-        let red = reduce_wsgb(&piece, m, method)?;
+        let red = reduce_wsgb_with(&piece, m, method, false)?;
         // Rounding of the subdivision (de Casteljau, a few n ulp per level) and of the two
         // exact conversions, relative to the points' size, carried by the convex hull.
         let size = norm_inf(piece.points()).max(norm_inf(curve.points()));
@@ -85,6 +99,7 @@ pub fn reduce_wsgb_to_tolerance(
                 reduction: red,
                 error_bound: e,
             });
+            sources.push(piece);
             continue;
         }
         if depth >= DEFAULT_MAX_DEPTH || done.len() + stack.len() + 2 > MAX_WSGB_PIECES {
@@ -99,6 +114,21 @@ pub fn reduce_wsgb_to_tolerance(
         stack.push((a, mid, depth + 1, WsgbCurve::from_bezier(&left, l)?));
     }
     let error_bound = done.iter().map(|p| p.error_bound).fold(0.0, f64::max);
+    // Measure the pieces of largest bound, within the budget.
+    let mut order: Vec<usize> = (0..done.len()).collect();
+    order.sort_by(|&i, &j| done[j].error_bound.total_cmp(&done[i].error_bound));
+    let cost = (n + 1).saturating_pow(3);
+    let mut spent = 0usize;
+    for &i in order.iter().take(WSGB_MEASURED_PIECES) {
+        if spent > 0 && spent.saturating_add(cost) > WSGB_MEASURE_WORK {
+            break;
+        }
+        spent = spent.saturating_add(cost);
+        let (e2, einf) = measured(&sources[i], &done[i].reduction.curve, true)?;
+        let report = &mut done[i].reduction.report;
+        report.max_error = e2;
+        report.max_error_inf = einf;
+    }
     let max_error = done
         .iter()
         .filter_map(|p| p.reduction.report.max_error)

@@ -30,8 +30,9 @@ pub use operator::{
 };
 pub use reduce::{ErrorSpace, ReduceOptions, Reduction, Report, reduce, reduce_with};
 pub use tolerance::{
-    DEFAULT_MAX_DEPTH, MAX_PIECES, PiecewiseReduction, PiecewiseReport, ReducedPiece,
-    ToleranceOptions, reduce_to_tolerance, reduce_to_tolerance_alg_14_2_1, subdivision_levels,
+    DEFAULT_MAX_DEPTH, MAX_PIECES, MAX_TOLERANCE_WORK, PiecewiseReduction, PiecewiseReport,
+    ReducedPiece, ToleranceOptions, reduce_to_tolerance, reduce_to_tolerance_alg_14_2_1,
+    subdivision_levels,
 };
 pub use wn_table::perturbation_error_factor;
 

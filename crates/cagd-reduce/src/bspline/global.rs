@@ -48,12 +48,28 @@ const CREEP_ROUNDS: usize = 6;
 /// rounding floor stops the refinement at once).
 pub(crate) const MAX_FIT_SPANS: usize = 1 << 20;
 
-/// Most work of one refinement, counted as spans times point coordinates summed over its
-/// rounds (each round fits and bounds every span): `2^23`, about a second in a release
-/// build. A bundle (the rows of a surface fitted together) has many coordinates per
-/// point, so a surface that would need `2^20` spans in one direction is refused by this
-/// cap, not by [`MAX_FIT_SPANS`] after minutes (ADDED; bounded work, issue 18).
+/// Most work of one refinement, counted per span as its point coordinates plus
+/// [`SPAN_OVERHEAD`], times [`degree_cost`], summed over its rounds (each round fits and
+/// bounds every span): `2^23`, about a second in a release build. A bundle (the rows of a
+/// surface fitted together) has many coordinates per point, so a surface that would need
+/// `2^20` spans in one direction is refused by this cap, not by [`MAX_FIT_SPANS`] after
+/// minutes (ADDED; bounded work, issue 18).
 pub(crate) const MAX_FIT_WORK: usize = 1 << 23;
+
+/// The cost of a span beside its coordinates (basis, bound, bookkeeping), in coordinates:
+/// measured, a degree-5 curve in 3D took 1.1 us per span coordinate (3.7 s for 61 rounds
+/// near 19 000 spans, C ABI fuzz run, issue 18), about 25 times a bundle's per coordinate.
+const SPAN_OVERHEAD: usize = 24;
+
+/// The cost of one span coordinate of a source of degree `p` in units of [`MAX_FIT_WORK`]:
+/// `max(1, (p + 1)^2 / 64)`. Fitting a span evaluates the source at `p + 1` Gauss nodes
+/// (`O(p)` each) and bounding it restricts a piece by two de Casteljau subdivisions
+/// (`O(p^2)`), so a span costs `O(p^2)` per coordinate; the unit is a degree-7 span. Without
+/// the factor a degree-60 spline to lines within `4e-7` fitted 12 000 spans per round for
+/// a minute (C ABI fuzz run, issue 18).
+pub(crate) fn degree_cost(p: usize) -> usize {
+    ((p + 1) * (p + 1) / 64).max(1)
+}
 
 /// The error for a tolerance the refinement cannot reach.
 fn unreachable(why: &'static str) -> Error {
@@ -152,7 +168,8 @@ pub(crate) fn fit_to_budget(
             return Ok((knots, points, bounds));
         }
         rounds += 1;
-        work = work.saturating_add(bounds.len().saturating_mul(src.pdim));
+        let unit = (src.pdim.saturating_add(SPAN_OVERHEAD)).saturating_mul(degree_cost(src.degree));
+        work = work.saturating_add(bounds.len().saturating_mul(unit));
         // The first split aims at the budget (the input's spans are far from it, so the
         // prediction has slack); later ones, which refine spans already near it, aim lower.
         let target = if rounds >= 2 {
@@ -171,10 +188,10 @@ pub(crate) fn fit_to_budget(
         if rounds > MAX_ROUNDS || spans > MAX_FIT_SPANS {
             return Err(too_many());
         }
-        let next = (bounds.len() + new.len()).saturating_mul(src.pdim);
+        let next = (bounds.len() + new.len()).saturating_mul(unit);
         if work.saturating_add(next) > MAX_FIT_WORK {
             return Err(unreachable(
-                "the refinement needs too much work (more than 2^23 span coordinates over its rounds)",
+                "the refinement needs too much work (more than 2^23 span coordinates over its rounds, each span counted with 24 more, times (p + 1)^2 / 64 above degree 7)",
             ));
         }
         knots.extend(new);

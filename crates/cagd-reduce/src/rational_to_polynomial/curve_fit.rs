@@ -22,10 +22,19 @@ const SPLIT_TARGET: f64 = 0.95;
 const GLOBAL_ROUNDS: usize = 3;
 /// Most spans the refinement may create.
 const MAX_SPANS: usize = 1 << 20;
-/// Most spans fitted and bounded over all rounds of one refinement: `2^19`, about a second
-/// in a release build (ADDED; bounded work, issue 18: the fuzz harness found curves whose
-/// refinement ran for 60 rounds near `2^20` spans).
+/// Most spans fitted and bounded over all rounds of one refinement, each counted
+/// [`span_cost`] times: `2^19` spans of a cubic in 3D, about a second in a release build
+/// (ADDED; bounded work, issue 18: the fuzz harness found curves whose refinement ran for
+/// 60 rounds near `2^20` spans, and degree-60 curves whose spans cost 50 times a cubic's).
 const MAX_SPAN_WORK: usize = 1 << 19;
+
+/// The cost of one fitted and bounded span of a degree-`p` input of dimension `d` fitted
+/// by degree `m`, in cubic-3D spans: [`crate::bspline::degree_cost`] of `max(p, m)`
+/// (the `p + m + 1` nodes, the restriction and the product bound grow with the degrees)
+/// times `ceil((d + 1) / 4)`.
+fn span_cost(p: usize, m: usize, d: usize) -> usize {
+    crate::bspline::degree_cost(p.max(m)).saturating_mul((d + 1).div_ceil(4))
+}
 
 /// Gauss nodes per span for degrees `p -> m`.
 pub(crate) fn nodes_per_span(p: usize, m: usize) -> usize {
@@ -94,7 +103,7 @@ pub(crate) fn fit(src: &RationalPieces, m: usize, knots: &[f64]) -> Result<Vec<f
     let (nodes, weights) = gauss_legendre(nodes_per_span(p, m))?;
     let mut lsq = BandedLsq::new(free, m + 1, d);
     let (mut basis, mut scratch) = (vec![0.0; m + 1], vec![0.0; 2 * m + 2]);
-    let (mut work, mut hom) = (vec![0.0; (p + 1) * (d + 1)], vec![0.0; d + 1]);
+    let (mut bern, mut hom) = (vec![0.0; p + 1], vec![0.0; d + 1]);
     let mut value = vec![0.0; d];
     let mut row = Vec::with_capacity(m + 1);
     let mut rhs = vec![0.0; d];
@@ -107,7 +116,7 @@ pub(crate) fn fit(src: &RationalPieces, m: usize, knots: &[f64]) -> Result<Vec<f
             let t = a + (b - a) * x;
             let sw = (w * (b - a)).sqrt();
             basis_functions(knots, s, m, t, &mut basis, &mut scratch);
-            src.eval(src.piece_at(t), t, &mut work, &mut hom, &mut value);
+            src.eval_fast(src.piece_at(t), t, &mut bern, &mut hom, &mut value);
             row.clear();
             let mut first = None;
             for (j, bj) in basis.iter().enumerate() {
@@ -207,7 +216,8 @@ pub(crate) fn fit_to_budget(
             return Ok((knots, points, bounds));
         }
         rounds += 1;
-        work = work.saturating_add(bounds.len());
+        let unit = span_cost(src.degree, m, src.dim);
+        work = work.saturating_add(bounds.len().saturating_mul(unit));
         // Equidistribution in the first rounds, local splits after (see `refine_with`).
         let added = refine_with(
             &bounds,
@@ -222,10 +232,10 @@ pub(crate) fn fit_to_budget(
                 why: "the refinement needs too many spans",
             });
         }
-        if work.saturating_add(src.len() + added.len()) > MAX_SPAN_WORK {
+        if work.saturating_add((src.len() + added.len()).saturating_mul(unit)) > MAX_SPAN_WORK {
             return Err(Error::ConditionNotMet {
                 eq: "tolerance",
-                why: "the refinement needs too much work (more than 2^19 spans fitted over its rounds)",
+                why: "the refinement needs too much work (more than 2^19 spans fitted over its rounds, a span above degree 7 or in more than 3D counted as several)",
             });
         }
         knots.clone_from(&start);

@@ -2,7 +2,7 @@
 //! 001's Bézier extraction applied to the homogeneous control points), evaluated in model
 //! space `C = A / W` and restricted to sub-intervals for the certified bounds.
 
-use cagd_core::kernel::{de_casteljau, subdivide};
+use cagd_core::kernel::{bernstein_all, de_casteljau, subdivide};
 use cagd_core::{BSplineCurve, Result};
 
 /// A NURBS curve as homogeneous Bézier pieces on increasing breaks.
@@ -72,6 +72,33 @@ impl RationalPieces {
     ) {
         let (a, b) = (self.breaks[k], self.breaks[k + 1]);
         de_casteljau(self.piece(k), self.dim + 1, (t - a) / (b - a), work, hom);
+        let w = hom[self.dim];
+        for (o, x) in out.iter_mut().zip(hom.iter()) {
+            *o = x / w;
+        }
+    }
+
+    /// [`RationalPieces::eval`] by the Bernstein sum `sum B_i(s) (w_i P_i, w_i)`, `O(p)` per
+    /// coordinate where de Casteljau is `O(p^2)` (all `B_i >= 0`, `sum B_i = 1`: the same
+    /// few `(p + 2)` ulps of rounding); `bern` holds `p + 1` and `hom` `d + 1` scratch
+    /// values. The fit evaluates `p + m + 1` nodes per span: with de Casteljau a degree-60
+    /// input cost `O(p^3)` per span (C ABI fuzz run, issue 18).
+    pub(crate) fn eval_fast(
+        &self,
+        k: usize,
+        t: f64,
+        bern: &mut [f64],
+        hom: &mut [f64],
+        out: &mut [f64],
+    ) {
+        let (a, b) = (self.breaks[k], self.breaks[k + 1]);
+        bernstein_all(self.degree, (t - a) / (b - a), bern);
+        hom.fill(0.0);
+        for (bi, q) in bern.iter().zip(self.piece(k).chunks_exact(self.dim + 1)) {
+            for (h, c) in hom.iter_mut().zip(q) {
+                *h += bi * c;
+            }
+        }
         let w = hom[self.dim];
         for (o, x) in out.iter_mut().zip(hom.iter()) {
             *o = x / w;

@@ -14,7 +14,7 @@
 
 use cagd_core::{BezierCurve, Error, Result, max_point_norm};
 
-use super::{MAX_PIECES, ToleranceOptions};
+use super::{MAX_PIECES, MAX_TOLERANCE_WORK, ToleranceOptions, rounding_floor};
 use crate::bezier::reduce::{ReduceOptions, reduce_with};
 use crate::bezier::tolerance::ReducedPiece;
 
@@ -49,6 +49,8 @@ struct Rest {
 struct Try {
     reduced: Option<BezierCurve>,
     bound: f64,
+    /// The piece's rounding level ([`rounding_floor`]).
+    floor: f64,
     right: Option<Rest>,
 }
 
@@ -69,16 +71,19 @@ fn try_piece(
         let moved = rest.moved + split_move;
         (l, moved, Some(Rest { curve: r, moved }))
     };
+    let floor = rounding_floor(&piece);
     match reduce_with(&piece, ropts) {
         Ok(red) => Ok(Try {
             bound: red.report.error_bound.unwrap_or(f64::INFINITY) + moved,
             reduced: Some(red.curve),
+            floor,
             right,
         }),
         Err(err @ Error::NonPositiveWeight { .. }) if last_chance => Err(err),
         Err(Error::NonPositiveWeight { .. }) => Ok(Try {
             reduced: None,
             bound: f64::INFINITY,
+            floor,
             right,
         }),
         Err(err) => Err(err),
@@ -151,6 +156,8 @@ pub(crate) fn march(
     let mut a = 0.0f64;
     let mut h = 1.0f64;
     let mut min_len = 1.0f64;
+    let unit = ((curve.degree() + 1).pow(2) + 64) * (curve.dim() + 1);
+    let mut work = 0usize;
     while a < 1.0 {
         if done.len() >= MAX_PIECES {
             return Err(Error::NoConvergence {
@@ -169,8 +176,16 @@ pub(crate) fn march(
             let b = if a + 1.1 * h >= 1.0 { 1.0 } else { a + h };
             let len = b - a;
             let last_chance = len <= shortest;
+            work = work.saturating_add(unit);
+            if work > MAX_TOLERANCE_WORK {
+                return Err(Error::ConditionNotMet {
+                    eq: "tolerance",
+                    why: "the subdivision needs too much work (more than 2^27 pieces tried \
+                          times ((n + 1)^2 + 64) (d + 1))",
+                });
+            }
             let t = try_piece(&rest, &ropts, (a, b), split_move, last_chance)?;
-            let e = t.bound;
+            let (e, floor, reduced) = (t.bound, t.floor, t.reduced.is_some());
             match t.reduced.filter(|_| e <= goal) {
                 Some(q) => {
                     let longer = predict(len, e, goal, order).min(0.5 * (len + fail));
@@ -185,6 +200,13 @@ pub(crate) fn march(
                     fail = fail.min(len);
                     if let Some(found) = best.take() {
                         break found;
+                    }
+                    // No shorter piece gets below the rounding level of the points.
+                    if reduced && floor > 0.5 * goal {
+                        return Err(Error::ConditionNotMet {
+                            eq: "tolerance",
+                            why: "the tolerance is below the rounding level of the curve",
+                        });
                     }
                     if last_chance {
                         return Err(Error::NoConvergence {

@@ -22,6 +22,21 @@ pub const DEFAULT_MAX_DEPTH: usize = 30;
 /// The largest number of pieces a reduction to a tolerance may produce (`2^20`).
 pub const MAX_PIECES: usize = 1 << 20;
 
+/// Most work of one [`reduce_to_tolerance`]: the pieces tried (accepted or not), each
+/// counted `((n + 1)^2 + 64) (d + 1)` for degree `n` in dimension `d`: `2^27`, under a
+/// second in a release build (ADDED, bounded work, issue 18: a degree-52 curve ran a
+/// million reductions of 27 us each in the C ABI fuzz run; measured, a degree-5 curve in
+/// 1D takes 1.2 us per piece).
+pub const MAX_TOLERANCE_WORK: usize = 1 << 27;
+
+/// The rounding level of a reduction of `piece`: `2 (n + 3) eps max ||P_i||` (Euclidean
+/// points; the allowance of the B-spline fit's spans). No split brings a piece's bound
+/// below it: subdividing keeps the points' size, and with it their rounding.
+pub(crate) fn rounding_floor(piece: &BezierCurve) -> f64 {
+    let n = piece.degree() as f64;
+    2.0 * (n + 3.0) * f64::EPSILON * cagd_core::max_point_norm(piece.points(), piece.dim())
+}
+
 /// Options of [`reduce_to_tolerance`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ToleranceOptions {
@@ -152,11 +167,14 @@ pub(crate) fn split_levels(
 /// [`Error::BadParameter`] (`continuity`) when `k >= m` or the method does not interpolate
 /// order `k` at both ends; [`Error::NoConvergence`] (with the bound reached) when a
 /// piece of the shortest allowed length (`2^-max_depth`, at least `2^-46`) still fails,
-/// when more than [`MAX_PIECES`] pieces would be
-/// needed, or when the merged spline's bound exceeds `delta`; [`Error::ConditionNotMet`] if
-/// the pieces do not join within `delta / 128` (only when `delta` is near the rounding
-/// level; for `k = 1` a join that is off shows in the merged bound instead); [`Error::NonPositiveWeight`] when a reduced weight of a rational piece is still
-/// not positive at the shortest allowed length (before that such a piece is shortened).
+/// when more than [`MAX_PIECES`] pieces would be needed, or when the merged spline's bound
+/// exceeds `delta`; [`Error::ConditionNotMet`] if the pieces do not join within
+/// `delta / 128` (only when `delta` is near the rounding level; for `k = 1` a join that is
+/// off shows in the merged bound instead), when a piece above the goal has a rounding
+/// level `2 (n + 3) eps max ||P_i||` above half of it (no shorter piece can help), or when
+/// the work exceeds [`MAX_TOLERANCE_WORK`]; [`Error::NonPositiveWeight`] when a reduced
+/// weight of a rational piece is still not positive at the shortest allowed length (before
+/// that such a piece is shortened).
 ///
 /// ```
 /// use cagd_core::BezierCurve;
