@@ -1619,6 +1619,8 @@ CagdStatus cagd_bspline_from_beziers(const struct CagdCurve *const *segments,
  *   `out_cap > 0`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `t` is NaN or infinite, or a pointer is misaligned.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_NON_FINITE`: the point overflows f64 (`t` far outside the domain, or
+ *   coordinates near the limits of f64); nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -1657,6 +1659,8 @@ CagdStatus cagd_bspline_eval(const struct CagdBSpline *spline,
  *   misaligned.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < (order + 1) * dim`; only `*out_needed` is
  *   written.
+ * - `CAGD_ERR_NON_FINITE`: a derivative overflows f64 (`t` far outside the domain,
+ *   close knots, or coordinates near the limits of f64); nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -1994,6 +1998,8 @@ CagdStatus cagd_bsplinesurface_array(const struct CagdBSplineSurface *surface,
  * - `CAGD_ERR_INVALID_ARGUMENT`: `u` or `v` is NaN or infinite, or a pointer is
  *   misaligned.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_NON_FINITE`: the point overflows f64 (`(u, v)` far outside the
+ *   domain, or coordinates near the limits of f64); nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2041,6 +2047,8 @@ CagdStatus cagd_bsplinesurface_eval(const struct CagdBSplineSurface *surface,
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: a target 0 or above its degree, or both equal.
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `continuity` too large for a reduced direction.
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced NURBS weight is not positive.
+ * - `CAGD_ERR_CONDITION_NOT_MET`: coordinates near the limits of f64, whose rounding
+ *   level in the centred model frame overflows.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2563,7 +2571,8 @@ CagdStatus cagd_tensorpatch_split_line(const struct CagdTensorPatch *patch,
  * - `CAGD_OK`: `*list_out` is written.
  * - `CAGD_ERR_NULL_POINTER`: `patch`, `coeffs` or `list_out` is NULL.
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
- * - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_coeffs == 0`. `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `k > 64`.
+ * - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_coeffs == 0`.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `k > 64`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `f` leaves `[0, 1]` or a coefficient is not finite, or a
  *   pointer is misaligned.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
@@ -2605,6 +2614,8 @@ CagdStatus cagd_tensorpatch_split_curve(const struct CagdTensorPatch *patch,
  *   interval outside `[0, 1]`, a sum of counts that overflows, or a misaligned pointer.
  * - `CAGD_ERR_UNSUPPORTED_TRIM`: a layout outside the supported one (gap, jump, end inside
  *   the square, degree > 3, no segment).
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: a piece's degree would exceed 64 (the patch's
+ *   degree composed with a trimming curve's).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2638,7 +2649,8 @@ CagdStatus cagd_tensorpatch_trim(const struct CagdTensorPatch *patch,
  * - `CAGD_OK`: `*list_out` is written.
  * - `CAGD_ERR_NULL_POINTER`: `patch` or `list_out` is NULL.
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
- * - `CAGD_ERR_BAD_DEGREE_PAIR`: `m < n`. `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `m > 64`.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `m < n`.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `m > 64`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
@@ -3257,6 +3269,8 @@ CagdStatus cagd_curvelist_copy(const struct CagdCurveList *list,
  *   `out_cap > 0`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `t` is NaN or infinite, or a pointer is misaligned.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_NON_FINITE`: the point overflows f64 (`t` far outside `[0, 1]`, or
+ *   coordinates near the limits of f64); nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -3292,6 +3306,8 @@ CagdStatus cagd_curve_eval(const struct CagdCurve *curve,
  * - `CAGD_ERR_INVALID_ARGUMENT`: a parameter is NaN or infinite (the message gives its
  *   index), `n_params * dim` overflows, or a pointer is misaligned.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < n_params * dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_NON_FINITE`: a point overflows f64 (a parameter far outside `[0, 1]`,
+ *   or coordinates near the limits of f64); nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -3346,6 +3362,9 @@ CagdStatus cagd_curve_elevate(const struct CagdCurve *curve,
  * - `CAGD_ERR_NULL_POINTER`: `curve`, `left_out` or `right_out` is NULL.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `t` is NaN or infinite, `left_out == right_out`, or a
  *   pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: a piece's point overflows f64 (`t` far outside `[0, 1]`).
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a rational piece's weight is not finite and `> 0`
+ *   (`t` outside `[0, 1]`, beyond a pole of the curve's weight function).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -3375,6 +3394,8 @@ CagdStatus cagd_curve_subdivide(const struct CagdCurve *curve,
  *   misaligned.
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: rational curve whose piece outside `[0, 1]` has a
  *   weight `<= 0`.
+ * - `CAGD_ERR_NON_FINITE`: a point of the piece overflows f64 (`[a, b]` far outside
+ *   `[0, 1]`).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -3752,6 +3773,8 @@ CagdStatus cagd_implicit_coefficients(const struct CagdImplicit *implicit,
  * - `CAGD_ERR_NULL_POINTER`: `implicit` or `out_needed` NULL, or `out` NULL with
  *   `out_cap > 0`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a misaligned pointer.
+ * - `CAGD_ERR_NON_FINITE`: a matrix entry overflows f64 (coordinates near the limits
+ *   of f64); nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -3775,8 +3798,8 @@ CagdStatus cagd_implicit_bezout(const struct CagdImplicit *implicit,
  * - `sign_out` (out): -1, 0 or 1 (0 only for an exact zero).
  * - `distance_out` (out): `f / |∇f|`.
  *
- * Returns: (outputs are written only on `CAGD_OK`)
- * - `CAGD_OK`: the three outputs written.
+ * Returns:
+ * - `CAGD_OK`: the three outputs written (they are written only on `CAGD_OK`).
  * - `CAGD_ERR_NULL_POINTER`: a pointer is NULL.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `x` or `y` not finite, or a misaligned pointer.
  * - `CAGD_ERR_NON_FINITE`: `f(x, y)` overflows f64 (a point far from the curve).
@@ -3878,6 +3901,8 @@ CagdStatus cagd_curve_intersect(const struct CagdCurve *a,
  * - `CAGD_ERR_NULL_POINTER`: `out_needed` NULL, or `out` NULL with `out_cap > 0`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `alpha` not finite, or a misaligned pointer.
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n` is 0 or above 16.
+ * - `CAGD_ERR_NON_FINITE`: an entry overflows f64 (`|alpha|` large for `n`);
+ *   nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -5833,6 +5858,8 @@ CagdStatus cagd_tensorpatch_points(const struct CagdTensorPatch *patch,
  * - `CAGD_ERR_INVALID_ARGUMENT`: `u` or `v` is NaN or infinite, or a pointer is
  *   misaligned.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_NON_FINITE`: the point overflows f64 (`(u, v)` far outside the unit
+ *   square, or coordinates near the limits of f64); nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -6051,6 +6078,8 @@ CagdStatus cagd_tripatch_points(const struct CagdTriPatch *patch,
  * - `CAGD_ERR_INVALID_ARGUMENT`: `u` or `v` is NaN or infinite, or a pointer is
  *   misaligned.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_NON_FINITE`: the point overflows f64 (`(u, v)` far outside the
+ *   triangle, or coordinates near the limits of f64); nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -6224,6 +6253,8 @@ CagdStatus cagd_wsgb_points(const struct CagdWsgbCurve *curve,
  *   `out_cap > 0`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `u` is NaN or infinite, or a pointer is misaligned.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_NON_FINITE`: the point overflows f64 (`u` far outside `[0, 1]`, or
+ *   coordinates near the limits of f64); nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -6325,6 +6356,8 @@ CagdStatus cagd_wsgb_elevate(const struct CagdWsgbCurve *curve,
  *   is NULL with `out_cap > 0`.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: the coefficient overflows f64 (coordinates near the
+ *   limits of f64, high degree); nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety

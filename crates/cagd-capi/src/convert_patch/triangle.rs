@@ -76,7 +76,8 @@ pub(crate) fn put(list_out: &mut *mut CagdPatchPieceList, pieces: Vec<PatchPiece
 /// - `CAGD_OK`: `*list_out` is written.
 /// - `CAGD_ERR_NULL_POINTER`: `patch` or `list_out` is NULL.
 /// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
-/// - `CAGD_ERR_BAD_DEGREE_PAIR`: `m < n`. `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `m > 64`.
+/// - `CAGD_ERR_BAD_DEGREE_PAIR`: `m < n`.
+/// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `m > 64`.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
