@@ -1693,6 +1693,8 @@ CagdStatus cagd_bspline_derivatives(const struct CagdBSpline *spline,
  * - `CAGD_ERR_INVALID_ARGUMENT`: `t` is NaN, infinite or outside the domain, or a pointer
  *   is misaligned.
  * - `CAGD_ERR_MULTIPLICITY`: the multiplicity of `t` would exceed `degree + 1`.
+ * - `CAGD_ERR_NON_FINITE`: a new control point overflows f64 (coordinates near the limits of f64, or their
+ *   products with the weights).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2515,6 +2517,7 @@ CagdStatus cagd_patchpiecelist_domain(const struct CagdPatchPieceList *list,
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `m + n > 64`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2544,6 +2547,7 @@ CagdStatus cagd_tensorpatch_to_triangles(const struct CagdTensorPatch *patch,
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `f1` or `f0` not finite, the line does not cut the open
  *   square in two, or a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2575,6 +2579,7 @@ CagdStatus cagd_tensorpatch_split_line(const struct CagdTensorPatch *patch,
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `k > 64`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `f` leaves `[0, 1]` or a coefficient is not finite, or a
  *   pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2652,6 +2657,7 @@ CagdStatus cagd_tensorpatch_trim(const struct CagdTensorPatch *patch,
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `m < n`.
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `m > 64`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2711,6 +2717,7 @@ CagdStatus cagd_tripatch_to_quad(const struct CagdTriPatch *patch,
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a point outside its range, or a pointer misaligned.
  * - `CAGD_ERR_DEGENERATE_SPLIT`: one of the three quadrilaterals folds.
+ * - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -3336,6 +3343,8 @@ CagdStatus cagd_curve_eval_many(const struct CagdCurve *curve,
  * - `CAGD_ERR_NULL_POINTER`: `curve` or `curve_out` is NULL.
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n + r > 64`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: a point of the result overflows f64 (a rational curve's
+ *   homogeneous points `w_i P_i` beyond f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -3871,6 +3880,7 @@ CagdStatus cagd_implicit_invert(const struct CagdImplicit *implicit,
  * - `CAGD_ERR_CONDITION_NOT_MET`: an implicit coefficient is beyond the double range.
  * - `CAGD_ERR_COINCIDENT`: the curves overlap along an arc (the message gives the
  *   overlap on `a`).
+ * - `CAGD_ERR_NON_FINITE`: an intermediate value overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -4079,6 +4089,7 @@ CagdStatus cagd_intervaltri_contains(const struct CagdIntervalTriPatch *outer,
  * - `CAGD_ERR_LP_FAILED`: the LP solver failed or panicked (caught).
  * - `CAGD_ERR_NOT_CERTIFIED`: the containment could not be certified after repair.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -4252,6 +4263,7 @@ CagdStatus cagd_tripatch_degeneracy(const struct CagdTriPatch *patch,
  * - `CAGD_ERR_NULL_POINTER`: `a`, `b` or `out` is NULL.
  * - `CAGD_ERR_DIMENSION_MISMATCH`: the dimensions differ.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: the computation overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -4276,6 +4288,7 @@ CagdStatus cagd_curve_distance(const struct CagdCurve *a, const struct CagdCurve
  * - `CAGD_ERR_NULL_POINTER`: `a`, `b` or `out` is NULL.
  * - `CAGD_ERR_DIMENSION_MISMATCH`: the dimensions differ.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: the computation overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -4302,6 +4315,7 @@ CagdStatus cagd_tensorpatch_distance(const struct CagdTensorPatch *a,
  * - `CAGD_ERR_NULL_POINTER`: `a`, `b` or `out` is NULL.
  * - `CAGD_ERR_DIMENSION_MISMATCH`: the dimensions differ.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: the computation overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -4741,6 +4755,7 @@ CagdStatus cagd_tensorpatch_reduce(const struct CagdTensorPatch *patch,
  *   `CAGD_PATCH_PERTURB`.
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: corner / boundary constraints with `target = 0`, or
  *   a boundary method that does not interpolate the end points.
+ * - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -4985,6 +5000,7 @@ CagdStatus cagd_bsplinesurface_to_polynomial(const struct CagdBSplineSurface *su
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target`, or `r` or `p` below -1
  *   (CONSTRAINED_CHEBYSHEV, L2).
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational curve is not positive.
+ * - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -5166,6 +5182,7 @@ CagdStatus cagd_curve_exact_degree(const struct CagdCurve *curve,
  * - `CAGD_ERR_INVALID_ARGUMENT`: the two outputs are the same address, or a pointer is
  *   misaligned.
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational curve is not positive.
+ * - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -5200,6 +5217,7 @@ CagdStatus cagd_curve_reduce_exact(const struct CagdCurve *curve,
  * - `CAGD_ERR_CONDITION_NOT_MET`: an optimal scale gives `1 + l <= 0` (the tangent would
  *   flip; eq. 14.2.12).
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational curve is not positive.
+ * - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -5356,6 +5374,7 @@ CagdStatus cagd_reduce_options_init(struct CagdReduceOptions *opts);
  * - `CAGD_ERR_CONDITION_NOT_MET`: the pieces do not join within `tolerance / 128` (only
  *   for a tolerance near the rounding level).
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational piece is not positive.
+ * - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety

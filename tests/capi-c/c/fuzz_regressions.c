@@ -110,7 +110,8 @@ cleanup:
 
 /* A rational curve whose elevated Euclidean points overflow (w P = 4 DBL_MAX):
  * cagd_bezier_elevate fails with CAGD_ERR_NON_FINITE and writes no point (was CAGD_OK
- * with inf in `out`; the handle path refuses the same points in cagd_curve_points). */
+ * with inf in `out`); cagd_curve_elevate refuses the same curve (it made a handle with
+ * inf points, which only cagd_curve_points reported). */
 int cagd_ctest_fuzz_bezier_elevate_overflow_is_non_finite(void) {
     int rc = 1;
     const double pts[2] = {DBL_MAX, DBL_MAX};
@@ -119,8 +120,15 @@ int cagd_ctest_fuzz_bezier_elevate_overflow_is_non_finite(void) {
     size_t needed = 0;
     CHECK_STATUS(cagd_bezier_elevate(pts, 2, 1, w, 1, out, 4, &needed, wout, 4),
                  CAGD_ERR_NON_FINITE);
-    CHECK_MESSAGE_HAS("overflows");
+    CHECK_MESSAGE_HAS("not finite");
     CHECK(out[0] == 9.0 && out[1] == 9.0 && out[2] == 9.0 && wout[0] == 9.0);
+    {
+        CagdCurve *c = NULL, *e = NULL;
+        CHECK_OK(cagd_curve_new_rational(pts, w, 2, 1, &c));
+        CagdStatus st = cagd_curve_elevate(c, 1, &e);
+        cagd_curve_free(c);
+        CHECK(st == CAGD_ERR_NON_FINITE && e == NULL);
+    }
     /* the same curve with moderate coordinates is fine */
     const double small[2] = {1.0, 2.0};
     CHECK_OK(cagd_bezier_elevate(small, 2, 1, w, 1, out, 4, &needed, wout, 4));

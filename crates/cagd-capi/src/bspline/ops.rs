@@ -126,6 +126,8 @@ pub unsafe extern "C" fn cagd_bspline_derivatives(
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `t` is NaN, infinite or outside the domain, or a pointer
 ///   is misaligned.
 /// - `CAGD_ERR_MULTIPLICITY`: the multiplicity of `t` would exceed `degree + 1`.
+/// - `CAGD_ERR_NON_FINITE`: a new control point overflows f64 (coordinates near the limits of f64, or their
+///   products with the weights).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

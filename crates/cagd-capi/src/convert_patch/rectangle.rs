@@ -36,6 +36,7 @@ pub const CAGD_TRIM_KEEP_ABOVE: i32 = 1;
 /// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
 /// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `m + n > 64`.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+/// - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -75,6 +76,7 @@ pub unsafe extern "C" fn cagd_tensorpatch_to_triangles(
 /// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `f1` or `f0` not finite, the line does not cut the open
 ///   square in two, or a pointer is misaligned.
+/// - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -116,6 +118,7 @@ pub unsafe extern "C" fn cagd_tensorpatch_split_line(
 /// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `k > 64`.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `f` leaves `[0, 1]` or a coefficient is not finite, or a
 ///   pointer is misaligned.
+/// - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

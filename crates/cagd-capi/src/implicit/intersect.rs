@@ -34,6 +34,7 @@ pub const CAGD_INTERSECTION_STRIDE: usize = 5;
 /// - `CAGD_ERR_CONDITION_NOT_MET`: an implicit coefficient is beyond the double range.
 /// - `CAGD_ERR_COINCIDENT`: the curves overlap along an arc (the message gives the
 ///   overlap on `a`).
+/// - `CAGD_ERR_NON_FINITE`: an intermediate value overflows f64 (coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

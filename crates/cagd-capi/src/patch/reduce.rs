@@ -234,6 +234,7 @@ pub unsafe extern "C" fn cagd_tensorpatch_reduce(
 ///   `CAGD_PATCH_PERTURB`.
 /// - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: corner / boundary constraints with `target = 0`, or
 ///   a boundary method that does not interpolate the end points.
+/// - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

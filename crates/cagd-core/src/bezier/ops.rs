@@ -97,7 +97,10 @@ impl BezierCurve {
     /// parametrisation.
     ///
     /// # Errors
-    /// [`Error::DegreeOutOfRange`] when `n + r > MAX_DEGREE`.
+    /// [`Error::DegreeOutOfRange`] when `n + r > MAX_DEGREE`; [`Error::NonFinite`] when a
+    /// point overflows (a rational curve's homogeneous points `w_i P_i` beyond f64, or a
+    /// rounding of coordinates at `f64::MAX`), never an `Ok` curve with infinite points
+    /// (the C ABI fuzz harness found one).
     pub fn elevate(&self, r: usize) -> Result<BezierCurve> {
         let n = self.degree();
         check_degree(n.saturating_add(r))?;
@@ -105,13 +108,13 @@ impl BezierCurve {
             None => {
                 let mut out = vec![0.0; (n + r + 1) * self.dim()];
                 kernel::elevate(self.points(), self.dim(), r, &mut out);
-                Ok(Self::with_parts(self.dim(), out, None))
+                Self::with_parts(self.dim(), out, None).checked_piece()
             }
             Some(_) => {
                 let hom = self.homogeneous_points();
                 let mut out = vec![0.0; (n + r + 1) * (self.dim() + 1)];
                 kernel::elevate(&hom, self.dim() + 1, r, &mut out);
-                Ok(self.rational_from_hom(&out))
+                self.rational_from_hom(&out).checked_piece()
             }
         }
     }
@@ -267,6 +270,9 @@ mod tests {
         // Far but representable: still fine, and exact at the ends.
         let (l, _) = cubic.subdivide(1e50).expect("finite pieces");
         assert_eq!(l.eval(0.0), cubic.eval(0.0));
+        // A rational curve whose homogeneous points w_i P_i overflow cannot be elevated.
+        let big = BezierCurve::new_rational(vec![1e308, -1e308], vec![4.0, 1.0], 1).expect("ok");
+        assert!(matches!(big.elevate(1), Err(Error::NonFinite { .. })));
         let c = quarter_circle();
         // The homogeneous weights of the pieces change sign beyond the pole of w(t).
         assert!(matches!(
