@@ -847,6 +847,7 @@ uint64_t cagd_fuzz_run_seed(uint64_t seed, uint64_t calls, uint64_t session_call
                     (unsigned long long)fz.total_calls, difftime(time(NULL), t0));
         }
     }
+    fz_time_flush();
     if (verbose) {
         print_stats();
     }

@@ -2598,6 +2598,9 @@ static int heavy(int i) {
     }
 }
 
+static uint64_t ticks(void);
+static void time_call(int op, uint64_t dt);
+
 static int only = -2; /* CAGD_FUZZ_ONLY=<function>: run that operation alone */
 static int trace = -1; /* CAGD_FUZZ_TRACE=1: name every call on stderr (to read a replay) */
 
@@ -2623,19 +2626,65 @@ void fz_op_random(void) {
         fprintf(stderr, "call %llu: %s\n", (unsigned long long)fz.session_call, NAMES[i]);
     }
     fz_begin(i);
-    /* One CPU clock read per call (a clock() is a system call, about 1.3 us here, and two
-     * per call were 14 % of a run's CPU): a call's time runs from the end of the previous
-     * call, so it also holds the few microseconds of harness work in between. */
-    static clock_t last = (clock_t)-1;
-    if (last == (clock_t)-1) last = clock();
+    uint64_t t0 = ticks();
     OPS[i]();
+    time_call(i, ticks() - t0);
+}
+
+/* CPU time per operation without a system call per call: clock() (a system call of about
+ * 1.3 us here; two per call were 14 % of a run's CPU) is read once per window of about
+ * 4 ms of cycle counter (rdtsc, a few ns), and the window's CPU time is shared among its
+ * calls in proportion to their cycles. A call of 1 s CPU takes at least 1 s / cores of
+ * wall time, so it closes its window nearly alone and its share is its own CPU time
+ * (within the window's other few ms): the `slow call` report stays a CPU figure. Without
+ * a cycle counter every call is its own window (one clock() per call). */
+#if defined(__x86_64__) || defined(__i386__)
+#include <x86intrin.h>
+static uint64_t ticks(void) { return __rdtsc(); }
+#define WINDOW_TICKS 4000000ull
+#else
+static uint64_t ticks(void) { return 0; }
+#define WINDOW_TICKS 0ull
+#endif
+
+static struct {
+    clock_t clk;           /* clock() at the window's start; (clock_t)-1 before the first */
+    uint64_t total;        /* cycles of the window's calls */
+    uint64_t op_ticks[FN_COUNT];
+    int touched[FN_COUNT]; /* the operations with cycles in the window */
+    int n_touched;
+    int last_op;           /* the call that closed the window */
+    uint64_t last_ticks;
+} win = {.clk = (clock_t)-1};
+
+void fz_time_flush(void) {
+    if (win.clk == (clock_t)-1 || win.n_touched == 0) return;
     clock_t now = clock();
-    double secs = (double)(now - last) / CLOCKS_PER_SEC;
-    last = now;
-    fz.stats[i].secs += secs;
-    if (secs > 1.0) {
+    double cpu = (double)(now - win.clk) / CLOCKS_PER_SEC;
+    double total = win.total > 0 ? (double)win.total : 1.0;
+    for (int k = 0; k < win.n_touched; ++k) {
+        int op = win.touched[k];
+        double share = win.total > 0 ? (double)win.op_ticks[op] / total : 1.0 / win.n_touched;
+        fz.stats[op].secs += cpu * share;
+        win.op_ticks[op] = 0;
+    }
+    double own = win.total > 0 ? cpu * ((double)win.last_ticks / total) : cpu;
+    if (own > 1.0) {
         fprintf(stderr, "slow call: %s took %.1f s CPU (session seed 0x%016llx, call %llu)\n",
-                NAMES[i], secs, (unsigned long long)fz.session_seed,
+                NAMES[win.last_op], own, (unsigned long long)fz.session_seed,
                 (unsigned long long)fz.session_call);
     }
+    win.clk = now;
+    win.total = 0;
+    win.n_touched = 0;
+}
+
+static void time_call(int op, uint64_t dt) {
+    if (win.clk == (clock_t)-1) win.clk = clock();
+    if (win.op_ticks[op] == 0) win.touched[win.n_touched++] = op;
+    win.op_ticks[op] += dt > 0 ? dt : 1;
+    win.total += dt;
+    win.last_op = op;
+    win.last_ticks = dt;
+    if (win.total >= WINDOW_TICKS) fz_time_flush();
 }
