@@ -2102,6 +2102,8 @@ CagdStatus cagd_bsplinesurface_reduce(const struct CagdBSplineSurface *surface,
  *   the refinement of a direction needs more than `2^23` span coordinates fitted over
  *   its rounds (bounded work: about a second).
  * - `CAGD_ERR_NO_CONVERGENCE` (segments): level 6 is not enough.
+ * - `CAGD_ERR_SINGULAR`: a least-squares system of the fit is singular (degenerate
+ *   knots or data).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2688,6 +2690,8 @@ CagdStatus cagd_tripatch_to_rect(const struct CagdTriPatch *patch,
  * - `CAGD_ERR_INVALID_ARGUMENT`: a corner is not finite or outside the triangle, or a
  *   pointer is misaligned.
  * - `CAGD_ERR_DEGENERATE_SPLIT`: the map folds (Jacobian `<= 0` at a corner).
+ * - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near
+ *   the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -6128,6 +6132,8 @@ CagdStatus cagd_tripatch_eval(const struct CagdTriPatch *patch,
  * - `CAGD_ERR_NULL_POINTER`: `patch` or `patch_out` is NULL.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n + r > 64`.
+ * - `CAGD_ERR_NON_FINITE`: a point of the result rounds past f64 (coordinates near the
+ *   limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety

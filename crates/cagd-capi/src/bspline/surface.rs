@@ -397,6 +397,8 @@ pub unsafe extern "C" fn cagd_bsplinesurface_reduce(
 ///   the refinement of a direction needs more than `2^23` span coordinates fitted over
 ///   its rounds (bounded work: about a second).
 /// - `CAGD_ERR_NO_CONVERGENCE` (segments): level 6 is not enough.
+/// - `CAGD_ERR_SINGULAR`: a least-squares system of the fit is singular (degenerate
+///   knots or data).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

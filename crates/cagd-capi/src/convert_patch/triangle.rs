@@ -120,6 +120,8 @@ pub unsafe extern "C" fn cagd_tripatch_to_rect(
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a corner is not finite or outside the triangle, or a
 ///   pointer is misaligned.
 /// - `CAGD_ERR_DEGENERATE_SPLIT`: the map folds (Jacobian `<= 0` at a corner).
+/// - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near
+///   the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
