@@ -292,7 +292,7 @@ fn elevation_near_f64_max_is_finite_or_refused() {
             let t = TriPatch::new(pts, n, 1).expect("finite points");
             match t.elevate(r) {
                 Ok(e) => assert!(e.points().iter().all(|x| x.is_finite()), "n {n} r {r}"),
-                Err(crate::Error::NonFinite { .. }) => refused += 1,
+                Err(Error::NonFinite { .. }) => refused += 1,
                 Err(e) => panic!("n {n} r {r}: unexpected {e}"),
             }
         }
