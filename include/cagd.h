@@ -4719,6 +4719,8 @@ CagdStatus cagd_tripatchlist_copy(const struct CagdTriPatchList *list,
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: corner / boundary constraints with a target degree
  *   too small, a boundary method that does not interpolate the end points, or `r + p + 1`
  *   above a target degree.
+ * - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates
+ *   near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
