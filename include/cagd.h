@@ -1621,6 +1621,8 @@ CagdStatus cagd_bspline_from_beziers(const struct CagdCurve *const *segments,
  *   `out_cap > 0`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `t` is NaN or infinite, or a pointer is misaligned.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_NON_FINITE`: the point overflows f64 (`t` far outside the domain, or
+ *   coordinates near the limits of f64); nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -1659,6 +1661,8 @@ CagdStatus cagd_bspline_eval(const struct CagdBSpline *spline,
  *   misaligned.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < (order + 1) * dim`; only `*out_needed` is
  *   written.
+ * - `CAGD_ERR_NON_FINITE`: a derivative overflows f64 (`t` far outside the domain,
+ *   close knots, or coordinates near the limits of f64); nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -1691,6 +1695,8 @@ CagdStatus cagd_bspline_derivatives(const struct CagdBSpline *spline,
  * - `CAGD_ERR_INVALID_ARGUMENT`: `t` is NaN, infinite or outside the domain, or a pointer
  *   is misaligned.
  * - `CAGD_ERR_MULTIPLICITY`: the multiplicity of `t` would exceed `degree + 1`.
+ * - `CAGD_ERR_NON_FINITE`: a new control point overflows f64 (coordinates near the limits of f64, or their
+ *   products with the weights).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -1999,6 +2005,8 @@ CagdStatus cagd_bsplinesurface_array(const struct CagdBSplineSurface *surface,
  * - `CAGD_ERR_INVALID_ARGUMENT`: `u` or `v` is NaN or infinite, or a pointer is
  *   misaligned.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_NON_FINITE`: the point overflows f64 (`(u, v)` far outside the
+ *   domain, or coordinates near the limits of f64); nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2046,6 +2054,8 @@ CagdStatus cagd_bsplinesurface_eval(const struct CagdBSplineSurface *surface,
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: a target 0 or above its degree, or both equal.
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `continuity` too large for a reduced direction.
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced NURBS weight is not positive.
+ * - `CAGD_ERR_CONDITION_NOT_MET`: coordinates near the limits of f64, whose rounding
+ *   level in the centred model frame overflows.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2098,6 +2108,8 @@ CagdStatus cagd_bsplinesurface_reduce(const struct CagdBSplineSurface *surface,
  *   its rounds, each span counted with 24 more and, above degree 7, `(p + 1)^2 / 64`
  *   times (bounded work: about a second).
  * - `CAGD_ERR_NO_CONVERGENCE` (segments): level 6 is not enough.
+ * - `CAGD_ERR_SINGULAR`: a least-squares system of the fit is singular (degenerate
+ *   knots or data).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2513,6 +2525,7 @@ CagdStatus cagd_patchpiecelist_domain(const struct CagdPatchPieceList *list,
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `m + n > 64`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2542,6 +2555,7 @@ CagdStatus cagd_tensorpatch_to_triangles(const struct CagdTensorPatch *patch,
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `f1` or `f0` not finite, the line does not cut the open
  *   square in two, or a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2569,9 +2583,11 @@ CagdStatus cagd_tensorpatch_split_line(const struct CagdTensorPatch *patch,
  * - `CAGD_OK`: `*list_out` is written.
  * - `CAGD_ERR_NULL_POINTER`: `patch`, `coeffs` or `list_out` is NULL.
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
- * - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_coeffs == 0`. `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `k > 64`.
+ * - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_coeffs == 0`.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `k > 64`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `f` leaves `[0, 1]` or a coefficient is not finite, or a
  *   pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2611,6 +2627,8 @@ CagdStatus cagd_tensorpatch_split_curve(const struct CagdTensorPatch *patch,
  *   interval outside `[0, 1]`, a sum of counts that overflows, or a misaligned pointer.
  * - `CAGD_ERR_UNSUPPORTED_TRIM`: a layout outside the supported one (gap, jump, end inside
  *   the square, degree > 3, no segment).
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: a piece's degree would exceed 64 (the patch's
+ *   degree composed with a trimming curve's).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2644,8 +2662,10 @@ CagdStatus cagd_tensorpatch_trim(const struct CagdTensorPatch *patch,
  * - `CAGD_OK`: `*list_out` is written.
  * - `CAGD_ERR_NULL_POINTER`: `patch` or `list_out` is NULL.
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
- * - `CAGD_ERR_BAD_DEGREE_PAIR`: `m < n`. `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `m > 64`.
+ * - `CAGD_ERR_BAD_DEGREE_PAIR`: `m < n`.
+ * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `m > 64`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2676,6 +2696,8 @@ CagdStatus cagd_tripatch_to_rect(const struct CagdTriPatch *patch,
  * - `CAGD_ERR_INVALID_ARGUMENT`: a corner is not finite or outside the triangle, or a
  *   pointer is misaligned.
  * - `CAGD_ERR_DEGENERATE_SPLIT`: the map folds (Jacobian `<= 0` at a corner).
+ * - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near
+ *   the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2705,6 +2727,7 @@ CagdStatus cagd_tripatch_to_quad(const struct CagdTriPatch *patch,
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a point outside its range, or a pointer misaligned.
  * - `CAGD_ERR_DEGENERATE_SPLIT`: one of the three quadrilaterals folds.
+ * - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -3263,6 +3286,8 @@ CagdStatus cagd_curvelist_copy(const struct CagdCurveList *list,
  *   `out_cap > 0`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `t` is NaN or infinite, or a pointer is misaligned.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_NON_FINITE`: the point overflows f64 (`t` far outside `[0, 1]`, or
+ *   coordinates near the limits of f64); nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -3298,6 +3323,8 @@ CagdStatus cagd_curve_eval(const struct CagdCurve *curve,
  * - `CAGD_ERR_INVALID_ARGUMENT`: a parameter is NaN or infinite (the message gives its
  *   index), `n_params * dim` overflows, or a pointer is misaligned.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < n_params * dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_NON_FINITE`: a point overflows f64 (a parameter far outside `[0, 1]`,
+ *   or coordinates near the limits of f64); nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -3326,6 +3353,8 @@ CagdStatus cagd_curve_eval_many(const struct CagdCurve *curve,
  * - `CAGD_ERR_NULL_POINTER`: `curve` or `curve_out` is NULL.
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n + r > 64`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: a point of the result overflows f64 (a rational curve's
+ *   homogeneous points `w_i P_i` beyond f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -3352,6 +3381,9 @@ CagdStatus cagd_curve_elevate(const struct CagdCurve *curve,
  * - `CAGD_ERR_NULL_POINTER`: `curve`, `left_out` or `right_out` is NULL.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `t` is NaN or infinite, `left_out == right_out`, or a
  *   pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: a piece's point overflows f64 (`t` far outside `[0, 1]`).
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a rational piece's weight is not finite and `> 0`
+ *   (`t` outside `[0, 1]`, beyond a pole of the curve's weight function).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -3381,6 +3413,8 @@ CagdStatus cagd_curve_subdivide(const struct CagdCurve *curve,
  *   misaligned.
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: rational curve whose piece outside `[0, 1]` has a
  *   weight `<= 0`.
+ * - `CAGD_ERR_NON_FINITE`: a point of the piece overflows f64 (`[a, b]` far outside
+ *   `[0, 1]`).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -3758,6 +3792,8 @@ CagdStatus cagd_implicit_coefficients(const struct CagdImplicit *implicit,
  * - `CAGD_ERR_NULL_POINTER`: `implicit` or `out_needed` NULL, or `out` NULL with
  *   `out_cap > 0`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a misaligned pointer.
+ * - `CAGD_ERR_NON_FINITE`: a matrix entry overflows f64 (coordinates near the limits
+ *   of f64); nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -3781,8 +3817,8 @@ CagdStatus cagd_implicit_bezout(const struct CagdImplicit *implicit,
  * - `sign_out` (out): -1, 0 or 1 (0 only for an exact zero).
  * - `distance_out` (out): `f / |∇f|`.
  *
- * Returns: (outputs are written only on `CAGD_OK`)
- * - `CAGD_OK`: the three outputs written.
+ * Returns:
+ * - `CAGD_OK`: the three outputs written (they are written only on `CAGD_OK`).
  * - `CAGD_ERR_NULL_POINTER`: a pointer is NULL.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `x` or `y` not finite, or a misaligned pointer.
  * - `CAGD_ERR_NON_FINITE`: `f(x, y)` overflows f64 (a point far from the curve).
@@ -3854,6 +3890,7 @@ CagdStatus cagd_implicit_invert(const struct CagdImplicit *implicit,
  * - `CAGD_ERR_CONDITION_NOT_MET`: an implicit coefficient is beyond the double range.
  * - `CAGD_ERR_COINCIDENT`: the curves overlap along an arc (the message gives the
  *   overlap on `a`).
+ * - `CAGD_ERR_NON_FINITE`: an intermediate value overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -3884,6 +3921,8 @@ CagdStatus cagd_curve_intersect(const struct CagdCurve *a,
  * - `CAGD_ERR_NULL_POINTER`: `out_needed` NULL, or `out` NULL with `out_cap > 0`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `alpha` not finite, or a misaligned pointer.
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n` is 0 or above 16.
+ * - `CAGD_ERR_NON_FINITE`: an entry overflows f64 (`|alpha|` large for `n`);
+ *   nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -4060,6 +4099,7 @@ CagdStatus cagd_intervaltri_contains(const struct CagdIntervalTriPatch *outer,
  * - `CAGD_ERR_LP_FAILED`: the LP solver failed or panicked (caught).
  * - `CAGD_ERR_NOT_CERTIFIED`: the containment could not be certified after repair.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -4233,6 +4273,7 @@ CagdStatus cagd_tripatch_degeneracy(const struct CagdTriPatch *patch,
  * - `CAGD_ERR_NULL_POINTER`: `a`, `b` or `out` is NULL.
  * - `CAGD_ERR_DIMENSION_MISMATCH`: the dimensions differ.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: the computation overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -4257,6 +4298,7 @@ CagdStatus cagd_curve_distance(const struct CagdCurve *a, const struct CagdCurve
  * - `CAGD_ERR_NULL_POINTER`: `a`, `b` or `out` is NULL.
  * - `CAGD_ERR_DIMENSION_MISMATCH`: the dimensions differ.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: the computation overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -4283,6 +4325,7 @@ CagdStatus cagd_tensorpatch_distance(const struct CagdTensorPatch *a,
  * - `CAGD_ERR_NULL_POINTER`: `a`, `b` or `out` is NULL.
  * - `CAGD_ERR_DIMENSION_MISMATCH`: the dimensions differ.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: the computation overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -4682,6 +4725,8 @@ CagdStatus cagd_tripatchlist_copy(const struct CagdTriPatchList *list,
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: corner / boundary constraints with a target degree
  *   too small, a boundary method that does not interpolate the end points, or `r + p + 1`
  *   above a target degree.
+ * - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates
+ *   near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -4722,6 +4767,7 @@ CagdStatus cagd_tensorpatch_reduce(const struct CagdTensorPatch *patch,
  *   `CAGD_PATCH_PERTURB`.
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: corner / boundary constraints with `target = 0`, or
  *   a boundary method that does not interpolate the end points.
+ * - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -4968,6 +5014,7 @@ CagdStatus cagd_bsplinesurface_to_polynomial(const struct CagdBSplineSurface *su
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target`, or `r` or `p` below -1
  *   (CONSTRAINED_CHEBYSHEV, L2).
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational curve is not positive.
+ * - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -5149,6 +5196,7 @@ CagdStatus cagd_curve_exact_degree(const struct CagdCurve *curve,
  * - `CAGD_ERR_INVALID_ARGUMENT`: the two outputs are the same address, or a pointer is
  *   misaligned.
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational curve is not positive.
+ * - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -5183,6 +5231,7 @@ CagdStatus cagd_curve_reduce_exact(const struct CagdCurve *curve,
  * - `CAGD_ERR_CONDITION_NOT_MET`: an optimal scale gives `1 + l <= 0` (the tangent would
  *   flip; eq. 14.2.12).
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational curve is not positive.
+ * - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -5346,6 +5395,7 @@ CagdStatus cagd_reduce_options_init(struct CagdReduceOptions *opts);
  *   curve far from the origin); or the subdivision needs too much work (more than `2^27`
  *   pieces reduced times `((n + 1)^2 + 64) (dim + 1)`, bounded work).
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational piece is not positive.
+ * - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -5849,6 +5899,8 @@ CagdStatus cagd_tensorpatch_points(const struct CagdTensorPatch *patch,
  * - `CAGD_ERR_INVALID_ARGUMENT`: `u` or `v` is NaN or infinite, or a pointer is
  *   misaligned.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_NON_FINITE`: the point overflows f64 (`(u, v)` far outside the unit
+ *   square, or coordinates near the limits of f64); nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -6067,6 +6119,8 @@ CagdStatus cagd_tripatch_points(const struct CagdTriPatch *patch,
  * - `CAGD_ERR_INVALID_ARGUMENT`: `u` or `v` is NaN or infinite, or a pointer is
  *   misaligned.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_NON_FINITE`: the point overflows f64 (`(u, v)` far outside the
+ *   triangle, or coordinates near the limits of f64); nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -6096,6 +6150,8 @@ CagdStatus cagd_tripatch_eval(const struct CagdTriPatch *patch,
  * - `CAGD_ERR_NULL_POINTER`: `patch` or `patch_out` is NULL.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n + r > 64`.
+ * - `CAGD_ERR_NON_FINITE`: a point of the result rounds past f64 (coordinates near the
+ *   limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -6240,6 +6296,8 @@ CagdStatus cagd_wsgb_points(const struct CagdWsgbCurve *curve,
  *   `out_cap > 0`.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `u` is NaN or infinite, or a pointer is misaligned.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+ * - `CAGD_ERR_NON_FINITE`: the point overflows f64 (`u` far outside `[0, 1]`, or
+ *   coordinates near the limits of f64); nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -6341,6 +6399,8 @@ CagdStatus cagd_wsgb_elevate(const struct CagdWsgbCurve *curve,
  *   is NULL with `out_cap > 0`.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: the coefficient overflows f64 (coordinates near the
+ *   limits of f64, high degree); nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety

@@ -1,6 +1,7 @@
 /* The cagd C ABI fuzz harness: infrastructure (decision source, generators, handle pools,
  * the oracle). The per-function operations are in ops.c. See fuzz/capi/README.md. */
 #include "harness_impl.h"
+#include "statuses.h"
 
 #include <float.h>
 #include <math.h>
@@ -558,8 +559,10 @@ void fz_put(FzType t, void *h) {
         uint32_t k = fz_r(FZ_POOL);
         FREE_FN[t](pool->h[k]);
         pool->h[k] = h;
+        pool->maker[k] = fz.fn_index;
         return;
     }
+    pool->maker[pool->n] = fz.fn_index;
     pool->h[pool->n++] = h;
 }
 
@@ -568,7 +571,9 @@ void *fz_pick(FzType t) {
     if (pool->n == 0 || fz_r(24) == 0) {
         return NULL;
     }
-    return pool->h[fz_r((uint32_t)pool->n)];
+    uint32_t k = fz_r((uint32_t)pool->n);
+    fz.last_maker = pool->maker[k];
+    return pool->h[k];
 }
 
 void *fz_take(FzType t) {
@@ -578,7 +583,9 @@ void *fz_take(FzType t) {
     }
     uint32_t k = fz_r((uint32_t)pool->n);
     void *h = pool->h[k];
-    pool->h[k] = pool->h[--pool->n];
+    --pool->n;
+    pool->h[k] = pool->h[pool->n];
+    pool->maker[k] = pool->maker[pool->n];
     return h;
 }
 
@@ -600,24 +607,29 @@ static int keep_going_armed;
 static struct {
     const char *fn;
     const char *fmt;
+    int code; /* the status of a status-oracle violation, -1 for the others */
     uint64_t count;
 } seen[256];
+static int fail_code = -1;
+static const char *fail_fn; /* the function of a status-oracle violation (maybe a side call) */
 static size_t n_seen;
 uint64_t fz_violations; /* violations seen in keep-going mode */
 
 void fz_fail(const char *fmt, ...) {
     fflush(stdout);
     if (keep_going_armed) {
+        const char *fn = fail_fn != NULL ? fail_fn : fz.fn;
         ++fz_violations;
         for (size_t i = 0; i < n_seen; ++i) {
-            if (seen[i].fn == fz.fn && seen[i].fmt == fmt) {
+            if (seen[i].fn == fn && seen[i].fmt == fmt && seen[i].code == fail_code) {
                 seen[i].count++;
                 longjmp(keep_going_jmp, 1);
             }
         }
         if (n_seen < 256) {
-            seen[n_seen].fn = fz.fn;
+            seen[n_seen].fn = fn;
             seen[n_seen].fmt = fmt;
+            seen[n_seen].code = fail_code;
             seen[n_seen].count = 1;
             ++n_seen;
         }
@@ -631,6 +643,10 @@ void fz_fail(const char *fmt, ...) {
     vfprintf(stderr, fmt, ap);
     va_end(ap);
     fprintf(stderr, "\n  last error message: %s\n", cagd_last_error_message());
+    if (fz.last_maker >= 0) {
+        fprintf(stderr, "  the last input handle picked was made by %s\n",
+                fz_fn_name(fz.last_maker));
+    }
     fflush(stderr);
     if (keep_going_armed) {
         longjmp(keep_going_jmp, 1);
@@ -638,20 +654,71 @@ void fz_fail(const char *fmt, ...) {
     abort();
 }
 
-static int known_status(CagdStatus st) {
-    switch ((int)st) {
-    case 0: case 1: case 2: case 3: case 4: case 5:
-    case 20: case 21: case 22: case 23: case 24: case 25: case 26: case 27:
-    case 30: case 35: case 40: case 41: case 42: case 43:
-    case 50: case 51: case 52: case 53: case 54: case 55: case 56:
-    case 60: case 61: case 62: case 63:
-        return 1;
-    default:
-        return 0;
+/* The per-function status oracle: bit `code` of doc_mask[i] is set when the doc comment
+ * of operation i's function lists status `code` (statuses.h, generated from the doc
+ * comments of include/cagd.h). doc_listed[i] is 0 for a function that returns no
+ * CagdStatus. Filled once, by name, before the first call. */
+static uint64_t doc_mask[FZ_MAX_OPS][2];
+static int doc_listed[FZ_MAX_OPS];
+static int doc_ready;
+
+static void doc_init(void) {
+    if (doc_ready) {
+        return;
+    }
+    size_t n_rows = sizeof FZ_DOC_STATUSES / sizeof FZ_DOC_STATUSES[0];
+    for (size_t i = 0; i < fz_n_ops(); ++i) {
+        const char *name = fz_fn_name((int)i);
+        for (size_t r = 0; r < n_rows; ++r) {
+            if (strcmp(FZ_DOC_STATUSES[r].fn, name) != 0) {
+                continue;
+            }
+            doc_listed[i] = 1;
+            for (size_t k = 0; k < FZ_DOC_STATUSES[r].n; ++k) {
+                int code = (int)FZ_DOC_STATUSES[r].statuses[k];
+                doc_mask[i][code >> 6] |= (uint64_t)1 << (code & 63);
+            }
+        }
+    }
+    doc_ready = 1;
+}
+
+static int doc_lists(int fn_index, CagdStatus st) {
+    int code = (int)st;
+    return code >= 0 && code < 128 && ((doc_mask[fn_index][code >> 6] >> (code & 63)) & 1);
+}
+
+/* The status checks every call gets: never CAGD_ERR_PANIC, and a status the function's
+ * doc comment lists. */
+static void check_status(int fn_index, CagdStatus st) {
+    if (st == CAGD_ERR_PANIC) {
+        fz_fail("CAGD_ERR_PANIC from %s (a caught Rust panic is a bug)", fz_fn_name(fn_index));
+    }
+    if (!doc_listed[fn_index]) {
+        /* a function that returns no CagdStatus (the operation counts it as CAGD_OK) */
+        if (st != CAGD_OK) {
+            fz_fail("%s returns no CagdStatus (statuses.h) but the harness saw %d",
+                    fz_fn_name(fn_index), (int)st);
+        }
+        return;
+    }
+    if (!doc_lists(fn_index, st)) {
+        fail_code = (int)st;
+        fail_fn = fz_fn_name(fn_index);
+        fz_fail("status %d (%s) of %s is not listed in its doc comment", (int)st,
+                cagd_status_name(st), fz_fn_name(fn_index));
     }
 }
 
+CagdStatus fz_status_of(int fn_index, CagdStatus st) {
+    check_status(fn_index, st);
+    return st;
+}
+
 void fz_begin(int fn_index) {
+    fail_code = -1;
+    fail_fn = NULL;
+    fz.last_maker = -1;
     fz.fn_index = fn_index;
     fz.fn = fz_fn_name(fn_index);
     fz.call_null = 0;
@@ -663,12 +730,7 @@ CagdStatus fz_status(CagdStatus st) {
     fz.stats[fz.fn_index].calls++;
     fz.total_calls++;
     fz.session_call++;
-    if (st == CAGD_ERR_PANIC) {
-        fz_fail("CAGD_ERR_PANIC (a caught Rust panic is a bug)");
-    }
-    if (!known_status(st)) {
-        fz_fail("undocumented status %d", (int)st);
-    }
+    check_status(fz.fn_index, st);
     if (st == CAGD_OK) {
         fz.stats[fz.fn_index].ok++;
         if (fz.call_null) {
@@ -750,6 +812,7 @@ static void print_stats(void) {
 uint64_t cagd_fuzz_run_seed(uint64_t seed, uint64_t calls, uint64_t session_calls,
                             int verbose) {
     memset(&fz, 0, sizeof fz);
+    doc_init();
     const char *kg = getenv("CAGD_FUZZ_KEEP_GOING");
     keep_going_armed = kg != NULL && kg[0] == '1';
     uint64_t sm = seed;
@@ -784,6 +847,7 @@ uint64_t cagd_fuzz_run_seed(uint64_t seed, uint64_t calls, uint64_t session_call
                     (unsigned long long)fz.total_calls, difftime(time(NULL), t0));
         }
     }
+    fz_time_flush();
     if (verbose) {
         print_stats();
     }
@@ -792,14 +856,21 @@ uint64_t cagd_fuzz_run_seed(uint64_t seed, uint64_t calls, uint64_t session_call
                 (unsigned long long)fz_violations);
     }
     for (size_t i = 0; i < n_seen; ++i) {
-        fprintf(stderr, "violation x%llu in %s: %s\n", (unsigned long long)seen[i].count,
-                seen[i].fn, seen[i].fmt);
+        if (seen[i].code >= 0) {
+            fprintf(stderr, "violation x%llu in %s: status %d (%s) not in its doc comment\n",
+                    (unsigned long long)seen[i].count, seen[i].fn, seen[i].code,
+                    cagd_status_name((CagdStatus)seen[i].code));
+        } else {
+            fprintf(stderr, "violation x%llu in %s: %s\n", (unsigned long long)seen[i].count,
+                    seen[i].fn, seen[i].fmt);
+        }
     }
     return fz.total_calls;
 }
 
 uint64_t cagd_fuzz_run_bytes(const uint8_t *data, size_t len) {
     memset(&fz, 0, sizeof fz);
+    doc_init();
     fz.data = data;
     fz.len = len;
     run_session(100000);

@@ -39,6 +39,7 @@ typedef enum FzType {
 
 typedef struct FzPool {
     void *h[FZ_POOL];
+    int maker[FZ_POOL]; /* the operation that made each handle (for violation reports) */
     size_t n;
 } FzPool;
 
@@ -64,6 +65,7 @@ typedef struct Fz {
     int call_misaligned; /* an input pointer was misaligned */
     int call_impossible; /* an input length exceeds any possible buffer */
     int skip;            /* the generated arguments do not fit the buffers: no call */
+    int last_maker;      /* the operation that made the last handle picked (-1: none) */
     size_t in_used, out_used;
     FzPool pools[FZ_N_TYPES];
     FzStats stats[FZ_MAX_OPS];
@@ -131,7 +133,10 @@ void *fz_take(FzType t); /* removes a live handle from its pool (to free it) */
 
 /* oracle */
 void fz_begin(int fn_index);
-CagdStatus fz_status(CagdStatus st);
+CagdStatus fz_status(CagdStatus st); /* the call's status, counted and checked */
+/* A side call's status (a function called to check another's result): checked against
+ * the doc comment of function `fn_index`, not counted. */
+CagdStatus fz_status_of(int fn_index, CagdStatus st);
 void fz_finite(double v, const char *what);
 void *fz_handle_out(FzType t, CagdStatus st, void *h, int out_was_null);
 #if defined(__GNUC__)
@@ -143,5 +148,6 @@ void fz_fail(const char *fmt, ...);
 size_t fz_n_ops(void);
 const char *fz_fn_name(int index);
 void fz_op_random(void);
+void fz_time_flush(void); /* books the CPU time of the calls since the last clock() read */
 
 #endif

@@ -287,6 +287,7 @@ pub unsafe extern "C" fn cagd_intervaltri_contains(
 /// - `CAGD_ERR_LP_FAILED`: the LP solver failed or panicked (caught).
 /// - `CAGD_ERR_NOT_CERTIFIED`: the containment could not be certified after repair.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+/// - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

@@ -205,6 +205,7 @@ pub unsafe extern "C" fn cagd_tripatch_degeneracy(
 /// - `CAGD_ERR_NULL_POINTER`: `a`, `b` or `out` is NULL.
 /// - `CAGD_ERR_DIMENSION_MISMATCH`: the dimensions differ.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+/// - `CAGD_ERR_NON_FINITE`: the computation overflows f64 (coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -241,6 +242,7 @@ pub unsafe extern "C" fn cagd_curve_distance(
 /// - `CAGD_ERR_NULL_POINTER`: `a`, `b` or `out` is NULL.
 /// - `CAGD_ERR_DIMENSION_MISMATCH`: the dimensions differ.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+/// - `CAGD_ERR_NON_FINITE`: the computation overflows f64 (coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -277,6 +279,7 @@ pub unsafe extern "C" fn cagd_tensorpatch_distance(
 /// - `CAGD_ERR_NULL_POINTER`: `a`, `b` or `out` is NULL.
 /// - `CAGD_ERR_DIMENSION_MISMATCH`: the dimensions differ.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+/// - `CAGD_ERR_NON_FINITE`: the computation overflows f64 (coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

@@ -110,7 +110,8 @@ cleanup:
 
 /* A rational curve whose elevated Euclidean points overflow (w P = 4 DBL_MAX):
  * cagd_bezier_elevate fails with CAGD_ERR_NON_FINITE and writes no point (was CAGD_OK
- * with inf in `out`; the handle path refuses the same points in cagd_curve_points). */
+ * with inf in `out`); cagd_curve_elevate refuses the same curve (it made a handle with
+ * inf points, which only cagd_curve_points reported). */
 int cagd_ctest_fuzz_bezier_elevate_overflow_is_non_finite(void) {
     int rc = 1;
     const double pts[2] = {DBL_MAX, DBL_MAX};
@@ -119,8 +120,15 @@ int cagd_ctest_fuzz_bezier_elevate_overflow_is_non_finite(void) {
     size_t needed = 0;
     CHECK_STATUS(cagd_bezier_elevate(pts, 2, 1, w, 1, out, 4, &needed, wout, 4),
                  CAGD_ERR_NON_FINITE);
-    CHECK_MESSAGE_HAS("overflows");
+    CHECK_MESSAGE_HAS("not finite");
     CHECK(out[0] == 9.0 && out[1] == 9.0 && out[2] == 9.0 && wout[0] == 9.0);
+    {
+        CagdCurve *c = NULL, *e = NULL;
+        CHECK_OK(cagd_curve_new_rational(pts, w, 2, 1, &c));
+        CagdStatus st = cagd_curve_elevate(c, 1, &e);
+        cagd_curve_free(c);
+        CHECK(st == CAGD_ERR_NON_FINITE && e == NULL);
+    }
     /* the same curve with moderate coordinates is fine */
     const double small[2] = {1.0, 2.0};
     CHECK_OK(cagd_bezier_elevate(small, 2, 1, w, 1, out, 4, &needed, wout, 4));
@@ -232,5 +240,40 @@ int cagd_ctest_fuzz_tensor_degeneracy_overflow_is_non_finite(void) {
     rc = 0;
 cleanup:
     cagd_tensorpatch_free(p);
+    return rc;
+}
+
+/* Subdividing or cutting a segment far outside [0, 1]: pieces whose points or weights
+ * overflow are refused (were CAGD_OK handles holding inf / non-positive weights, which
+ * only a later cagd_curve_points / cagd_curve_weights call reported, as NON_FINITE). */
+int cagd_ctest_fuzz_subdivide_extrapolation_refused(void) {
+    int rc = 1;
+    CagdCurve *c = NULL, *q = NULL, *l = NULL, *r = NULL;
+    const double pts[8] = {0.0, 0.0, 1.0, 3.0, 3.0, 4.0, 5.0, 1.0};
+    const double h = 0.70710678118654752;
+    const double qp[6] = {1.0, 0.0, 1.0, 1.0, 0.0, 1.0}, qw[3] = {1.0, h, 1.0};
+    double out[8];
+    size_t needed = 0;
+    CHECK_OK(cagd_curve_new(pts, 4, 2, &c));
+    CHECK_STATUS(cagd_curve_subdivide(c, 1e120, &l, &r), CAGD_ERR_NON_FINITE);
+    CHECK(l == NULL && r == NULL);
+    CHECK_STATUS(cagd_curve_segment(c, -1e120, 0.5, &l), CAGD_ERR_NON_FINITE);
+    CHECK(l == NULL);
+    CHECK_OK(cagd_curve_new_rational(qp, qw, 3, 2, &q));
+    {
+        CagdStatus st = cagd_curve_subdivide(q, -1e200, &l, &r);
+        CHECK(st == CAGD_ERR_NON_POSITIVE_WEIGHT || st == CAGD_ERR_NON_FINITE);
+        CHECK(l == NULL && r == NULL);
+    }
+    /* far but representable: finite pieces */
+    CHECK_OK(cagd_curve_subdivide(c, 1e50, &l, &r));
+    CHECK_OK(cagd_curve_points(l, out, 8, &needed));
+    CHECK(needed == 8 && out[0] == 0.0 && out[1] == 0.0);
+    rc = 0;
+cleanup:
+    cagd_curve_free(c);
+    cagd_curve_free(q);
+    cagd_curve_free(l);
+    cagd_curve_free(r);
     return rc;
 }

@@ -9,6 +9,7 @@
 use cagd_capi as _;
 
 mod fuzz;
+mod statuses;
 
 /// Declares each C test and the Rust test that runs it, and the list of wired names.
 macro_rules! c_tests {
@@ -52,6 +53,7 @@ c_tests![
     fuzz_curve_reduce_batch_overflow_is_non_finite,
     fuzz_nurbs_span_extrapolation_overflow_refused,
     fuzz_tensor_degeneracy_overflow_is_non_finite,
+    fuzz_subdivide_extrapolation_refused,
     // c/interval.c
     intervaltri_example_1,
     intervaltri_elevation_matrix,

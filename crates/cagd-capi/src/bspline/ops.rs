@@ -27,6 +27,8 @@ use crate::status::CagdStatus;
 ///   `out_cap > 0`.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `t` is NaN or infinite, or a pointer is misaligned.
 /// - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+/// - `CAGD_ERR_NON_FINITE`: the point overflows f64 (`t` far outside the domain, or
+///   coordinates near the limits of f64); nothing is written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -75,6 +77,8 @@ pub unsafe extern "C" fn cagd_bspline_eval(
 ///   misaligned.
 /// - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < (order + 1) * dim`; only `*out_needed` is
 ///   written.
+/// - `CAGD_ERR_NON_FINITE`: a derivative overflows f64 (`t` far outside the domain,
+///   close knots, or coordinates near the limits of f64); nothing is written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -122,6 +126,8 @@ pub unsafe extern "C" fn cagd_bspline_derivatives(
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `t` is NaN, infinite or outside the domain, or a pointer
 ///   is misaligned.
 /// - `CAGD_ERR_MULTIPLICITY`: the multiplicity of `t` would exceed `degree + 1`.
+/// - `CAGD_ERR_NON_FINITE`: a new control point overflows f64 (coordinates near the limits of f64, or their
+///   products with the weights).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

@@ -250,6 +250,8 @@ pub unsafe extern "C" fn cagd_bsplinesurface_array(
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `u` or `v` is NaN or infinite, or a pointer is
 ///   misaligned.
 /// - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+/// - `CAGD_ERR_NON_FINITE`: the point overflows f64 (`(u, v)` far outside the
+///   domain, or coordinates near the limits of f64); nothing is written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -331,6 +333,8 @@ unsafe fn outputs<'a>(
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`: a target 0 or above its degree, or both equal.
 /// - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `continuity` too large for a reduced direction.
 /// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced NURBS weight is not positive.
+/// - `CAGD_ERR_CONDITION_NOT_MET`: coordinates near the limits of f64, whose rounding
+///   level in the centred model frame overflows.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -394,6 +398,8 @@ pub unsafe extern "C" fn cagd_bsplinesurface_reduce(
 ///   its rounds, each span counted with 24 more and, above degree 7, `(p + 1)^2 / 64`
 ///   times (bounded work: about a second).
 /// - `CAGD_ERR_NO_CONVERGENCE` (segments): level 6 is not enough.
+/// - `CAGD_ERR_SINGULAR`: a least-squares system of the fit is singular (degenerate
+///   knots or data).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

@@ -36,6 +36,7 @@ pub const CAGD_TRIM_KEEP_ABOVE: i32 = 1;
 /// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
 /// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `m + n > 64`.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+/// - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -75,6 +76,7 @@ pub unsafe extern "C" fn cagd_tensorpatch_to_triangles(
 /// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `f1` or `f0` not finite, the line does not cut the open
 ///   square in two, or a pointer is misaligned.
+/// - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -112,9 +114,11 @@ pub unsafe extern "C" fn cagd_tensorpatch_split_line(
 /// - `CAGD_OK`: `*list_out` is written.
 /// - `CAGD_ERR_NULL_POINTER`: `patch`, `coeffs` or `list_out` is NULL.
 /// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
-/// - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_coeffs == 0`. `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `k > 64`.
+/// - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_coeffs == 0`.
+/// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `k > 64`.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `f` leaves `[0, 1]` or a coefficient is not finite, or a
 ///   pointer is misaligned.
+/// - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -170,6 +174,8 @@ pub unsafe extern "C" fn cagd_tensorpatch_split_curve(
 ///   interval outside `[0, 1]`, a sum of counts that overflows, or a misaligned pointer.
 /// - `CAGD_ERR_UNSUPPORTED_TRIM`: a layout outside the supported one (gap, jump, end inside
 ///   the square, degree > 3, no segment).
+/// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: a piece's degree would exceed 64 (the patch's
+///   degree composed with a trimming curve's).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

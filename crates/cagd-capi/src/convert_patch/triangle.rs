@@ -76,8 +76,10 @@ pub(crate) fn put(list_out: &mut *mut CagdPatchPieceList, pieces: Vec<PatchPiece
 /// - `CAGD_OK`: `*list_out` is written.
 /// - `CAGD_ERR_NULL_POINTER`: `patch` or `list_out` is NULL.
 /// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
-/// - `CAGD_ERR_BAD_DEGREE_PAIR`: `m < n`. `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `m > 64`.
+/// - `CAGD_ERR_BAD_DEGREE_PAIR`: `m < n`.
+/// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `m > 64`.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+/// - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -118,6 +120,8 @@ pub unsafe extern "C" fn cagd_tripatch_to_rect(
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a corner is not finite or outside the triangle, or a
 ///   pointer is misaligned.
 /// - `CAGD_ERR_DEGENERATE_SPLIT`: the map folds (Jacobian `<= 0` at a corner).
+/// - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near
+///   the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -160,6 +164,7 @@ pub unsafe extern "C" fn cagd_tripatch_to_quad(
 /// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0` or not finite.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a point outside its range, or a pointer misaligned.
 /// - `CAGD_ERR_DEGENERATE_SPLIT`: one of the three quadrilaterals folds.
+/// - `CAGD_ERR_NON_FINITE`: a control point of a piece overflows f64 (coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

@@ -26,6 +26,8 @@ use crate::status::CagdStatus;
 ///   `out_cap > 0`.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `t` is NaN or infinite, or a pointer is misaligned.
 /// - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+/// - `CAGD_ERR_NON_FINITE`: the point overflows f64 (`t` far outside `[0, 1]`, or
+///   coordinates near the limits of f64); nothing is written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -71,6 +73,8 @@ pub unsafe extern "C" fn cagd_curve_eval(
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a parameter is NaN or infinite (the message gives its
 ///   index), `n_params * dim` overflows, or a pointer is misaligned.
 /// - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < n_params * dim`; only `*out_needed` is written.
+/// - `CAGD_ERR_NON_FINITE`: a point overflows f64 (a parameter far outside `[0, 1]`,
+///   or coordinates near the limits of f64); nothing is written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -123,6 +127,8 @@ pub unsafe extern "C" fn cagd_curve_eval_many(
 /// - `CAGD_ERR_NULL_POINTER`: `curve` or `curve_out` is NULL.
 /// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n + r > 64`.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+/// - `CAGD_ERR_NON_FINITE`: a point of the result overflows f64 (a rational curve's
+///   homogeneous points `w_i P_i` beyond f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -159,6 +165,9 @@ pub unsafe extern "C" fn cagd_curve_elevate(
 /// - `CAGD_ERR_NULL_POINTER`: `curve`, `left_out` or `right_out` is NULL.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `t` is NaN or infinite, `left_out == right_out`, or a
 ///   pointer is misaligned.
+/// - `CAGD_ERR_NON_FINITE`: a piece's point overflows f64 (`t` far outside `[0, 1]`).
+/// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a rational piece's weight is not finite and `> 0`
+///   (`t` outside `[0, 1]`, beyond a pole of the curve's weight function).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -219,6 +228,8 @@ fn distinct_outputs(a: *mut *mut CagdCurve, b: *mut *mut CagdCurve) -> CResult<(
 ///   misaligned.
 /// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: rational curve whose piece outside `[0, 1]` has a
 ///   weight `<= 0`.
+/// - `CAGD_ERR_NON_FINITE`: a point of the piece overflows f64 (`[a, b]` far outside
+///   `[0, 1]`).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

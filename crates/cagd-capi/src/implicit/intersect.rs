@@ -34,6 +34,7 @@ pub const CAGD_INTERSECTION_STRIDE: usize = 5;
 /// - `CAGD_ERR_CONDITION_NOT_MET`: an implicit coefficient is beyond the double range.
 /// - `CAGD_ERR_COINCIDENT`: the curves overlap along an arc (the message gives the
 ///   overlap on `a`).
+/// - `CAGD_ERR_NON_FINITE`: an intermediate value overflows f64 (coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -88,6 +89,8 @@ pub unsafe extern "C" fn cagd_curve_intersect(
 /// - `CAGD_ERR_NULL_POINTER`: `out_needed` NULL, or `out` NULL with `out_cap > 0`.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `alpha` not finite, or a misaligned pointer.
 /// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n` is 0 or above 16.
+/// - `CAGD_ERR_NON_FINITE`: an entry overflows f64 (`|alpha|` large for `n`);
+///   nothing is written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

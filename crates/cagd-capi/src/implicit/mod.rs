@@ -184,6 +184,8 @@ pub unsafe extern "C" fn cagd_implicit_coefficients(
 /// - `CAGD_ERR_NULL_POINTER`: `implicit` or `out_needed` NULL, or `out` NULL with
 ///   `out_cap > 0`.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a misaligned pointer.
+/// - `CAGD_ERR_NON_FINITE`: a matrix entry overflows f64 (coordinates near the limits
+///   of f64); nothing is written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -221,8 +223,8 @@ pub unsafe extern "C" fn cagd_implicit_bezout(
 /// - `sign_out` (out): -1, 0 or 1 (0 only for an exact zero).
 /// - `distance_out` (out): `f / |∇f|`.
 ///
-/// Returns: (outputs are written only on `CAGD_OK`)
-/// - `CAGD_OK`: the three outputs written.
+/// Returns:
+/// - `CAGD_OK`: the three outputs written (they are written only on `CAGD_OK`).
 /// - `CAGD_ERR_NULL_POINTER`: a pointer is NULL.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `x` or `y` not finite, or a misaligned pointer.
 /// - `CAGD_ERR_NON_FINITE`: `f(x, y)` overflows f64 (a point far from the curve).

@@ -180,6 +180,8 @@ fn worst<'a>(reports: impl Iterator<Item = &'a PatchReport>) -> Option<PatchRepo
 /// - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: corner / boundary constraints with a target degree
 ///   too small, a boundary method that does not interpolate the end points, or `r + p + 1`
 ///   above a target degree.
+/// - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates
+///   near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -234,6 +236,7 @@ pub unsafe extern "C" fn cagd_tensorpatch_reduce(
 ///   `CAGD_PATCH_PERTURB`.
 /// - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: corner / boundary constraints with `target = 0`, or
 ///   a boundary method that does not interpolate the end points.
+/// - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

@@ -136,6 +136,7 @@ pub unsafe extern "C" fn cagd_curve_exact_degree(
 /// - `CAGD_ERR_INVALID_ARGUMENT`: the two outputs are the same address, or a pointer is
 ///   misaligned.
 /// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational curve is not positive.
+/// - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -180,6 +181,7 @@ pub unsafe extern "C" fn cagd_curve_reduce_exact(
 /// - `CAGD_ERR_CONDITION_NOT_MET`: an optimal scale gives `1 + l <= 0` (the tangent would
 ///   flip; eq. 14.2.12).
 /// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational curve is not positive.
+/// - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

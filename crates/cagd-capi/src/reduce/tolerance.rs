@@ -118,6 +118,7 @@ unsafe fn run(
 ///   curve far from the origin); or the subdivision needs too much work (more than `2^27`
 ///   pieces reduced times `((n + 1)^2 + 64) (dim + 1)`, bounded work).
 /// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a rational piece is not positive.
+/// - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

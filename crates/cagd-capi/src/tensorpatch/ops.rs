@@ -27,6 +27,8 @@ use crate::tensorpatch::CagdTensorPatch;
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `u` or `v` is NaN or infinite, or a pointer is
 ///   misaligned.
 /// - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+/// - `CAGD_ERR_NON_FINITE`: the point overflows f64 (`(u, v)` far outside the unit
+///   square, or coordinates near the limits of f64); nothing is written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

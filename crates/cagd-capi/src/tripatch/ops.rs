@@ -26,6 +26,8 @@ use crate::tripatch::CagdTriPatch;
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `u` or `v` is NaN or infinite, or a pointer is
 ///   misaligned.
 /// - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+/// - `CAGD_ERR_NON_FINITE`: the point overflows f64 (`(u, v)` far outside the
+///   triangle, or coordinates near the limits of f64); nothing is written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -65,6 +67,8 @@ pub unsafe extern "C" fn cagd_tripatch_eval(
 /// - `CAGD_ERR_NULL_POINTER`: `patch` or `patch_out` is NULL.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
 /// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n + r > 64`.
+/// - `CAGD_ERR_NON_FINITE`: a point of the result rounds past f64 (coordinates near the
+///   limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

@@ -192,6 +192,8 @@ pub unsafe extern "C" fn cagd_wsgb_points(
 ///   `out_cap > 0`.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `u` is NaN or infinite, or a pointer is misaligned.
 /// - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
+/// - `CAGD_ERR_NON_FINITE`: the point overflows f64 (`u` far outside `[0, 1]`, or
+///   coordinates near the limits of f64); nothing is written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -337,6 +339,8 @@ pub unsafe extern "C" fn cagd_wsgb_elevate(
 ///   is NULL with `out_cap > 0`.
 /// - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < dim`; only `*out_needed` is written.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+/// - `CAGD_ERR_NON_FINITE`: the coefficient overflows f64 (coordinates near the
+///   limits of f64, high degree); nothing is written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

@@ -9,10 +9,24 @@ impl BezierCurve {
     /// to `[0, 1]` (de Casteljau; homogeneous for rational curves, so weights split too).
     ///
     /// # Errors
-    /// [`Error::BadParameter`] when `t` is not finite.
+    /// [`Error::BadParameter`] when `t` is not finite; [`Error::NonFinite`] when a piece's
+    /// point overflows and [`Error::NonPositiveWeight`] when a piece's weight is not finite
+    /// and `> 0` (both only when `t` extrapolates far outside `[0, 1]`; the C ABI fuzz
+    /// harness found pieces with infinite coordinates and weights returned as `Ok`).
     pub fn subdivide(&self, t: f64) -> Result<(BezierCurve, BezierCurve)> {
         Self::check_param("t", t)?;
-        Ok(self.subdivide_unchecked(t))
+        let (l, r) = self.subdivide_unchecked(t);
+        Ok((l.checked_piece()?, r.checked_piece()?))
+    }
+
+    /// The piece itself when its points are finite and its weights finite and `> 0`
+    /// (pieces made by extrapolation can overflow). Goes beyond the seeds (validation).
+    fn checked_piece(self) -> Result<BezierCurve> {
+        if let Some(w) = self.weights() {
+            crate::validate::check_weights(w, w.len())?;
+        }
+        crate::validate::check_points(self.points(), self.dim())?;
+        Ok(self)
     }
 
     fn subdivide_unchecked(&self, t: f64) -> (BezierCurve, BezierCurve) {
@@ -52,7 +66,9 @@ impl BezierCurve {
     /// become non-positive; that is reported as [`Error::NonPositiveWeight`].
     ///
     /// # Errors
-    /// [`Error::BadParameter`] when `a` or `b` is not finite or `a >= b`.
+    /// [`Error::BadParameter`] when `a` or `b` is not finite or `a >= b`;
+    /// [`Error::NonPositiveWeight`] as above (also for a weight that overflows);
+    /// [`Error::NonFinite`] when a point of the piece overflows.
     pub fn segment(&self, a: f64, b: f64) -> Result<BezierCurve> {
         Self::check_param("a", a)?;
         Self::check_param("b", b)?;
@@ -72,15 +88,7 @@ impl BezierCurve {
             let (_, right) = self.subdivide_unchecked(a);
             right.subdivide_unchecked((b - a) / (1.0 - a)).0
         };
-        if let Some(w) = piece.weights() {
-            if let Some(index) = w.iter().position(|w| w.is_nan() || *w <= 0.0) {
-                return Err(Error::NonPositiveWeight {
-                    index,
-                    weight: w[index],
-                });
-            }
-        }
-        Ok(piece)
+        piece.checked_piece()
     }
 
     /// Elevates the degree by `r` at once: `Q_i = sum_j C(n,j) C(r,i-j) / C(n+r,i) P_j`
@@ -89,7 +97,10 @@ impl BezierCurve {
     /// parametrisation.
     ///
     /// # Errors
-    /// [`Error::DegreeOutOfRange`] when `n + r > MAX_DEGREE`.
+    /// [`Error::DegreeOutOfRange`] when `n + r > MAX_DEGREE`; [`Error::NonFinite`] when a
+    /// point overflows (a rational curve's homogeneous points `w_i P_i` beyond f64, or a
+    /// rounding of coordinates at `f64::MAX`), never an `Ok` curve with infinite points
+    /// (the C ABI fuzz harness found one).
     pub fn elevate(&self, r: usize) -> Result<BezierCurve> {
         let n = self.degree();
         check_degree(n.saturating_add(r))?;
@@ -97,13 +108,13 @@ impl BezierCurve {
             None => {
                 let mut out = vec![0.0; (n + r + 1) * self.dim()];
                 kernel::elevate(self.points(), self.dim(), r, &mut out);
-                Ok(Self::with_parts(self.dim(), out, None))
+                Self::with_parts(self.dim(), out, None).checked_piece()
             }
             Some(_) => {
                 let hom = self.homogeneous_points();
                 let mut out = vec![0.0; (n + r + 1) * (self.dim() + 1)];
                 kernel::elevate(&hom, self.dim() + 1, r, &mut out);
-                Ok(self.rational_from_hom(&out))
+                self.rational_from_hom(&out).checked_piece()
             }
         }
     }
@@ -238,6 +249,43 @@ mod tests {
                 max: 64
             })
         ));
+    }
+
+    /// Extrapolating pieces that overflow are refused, not returned with infinite points or
+    /// weights (issue 18: found by the C ABI fuzz harness, a curve of
+    /// `cagd_curve_subdivide` whose `cagd_curve_weights` then failed).
+    #[test]
+    fn overflowing_pieces_are_refused() {
+        let cubic =
+            BezierCurve::new(vec![0.0, 0.0, 1.0, 3.0, 3.0, 4.0, 5.0, 1.0], 2).expect("valid");
+        // t^3 * 5 overflows near t = 1e103; the right piece then runs from C(t) to C(1).
+        assert!(matches!(
+            cubic.subdivide(1e120),
+            Err(Error::NonFinite { .. })
+        ));
+        assert!(matches!(
+            cubic.segment(-1e120, 0.5),
+            Err(Error::NonFinite { .. })
+        ));
+        // Far but representable: still fine, and exact at the ends.
+        let (l, _) = cubic.subdivide(1e50).expect("finite pieces");
+        assert_eq!(l.eval(0.0), cubic.eval(0.0));
+        // A rational curve whose homogeneous points w_i P_i overflow cannot be elevated.
+        let big = BezierCurve::new_rational(vec![1e308, -1e308], vec![4.0, 1.0], 1).expect("ok");
+        assert!(matches!(big.elevate(1), Err(Error::NonFinite { .. })));
+        let c = quarter_circle();
+        // The homogeneous weights of the pieces change sign beyond the pole of w(t).
+        assert!(matches!(
+            c.subdivide(-1e200),
+            Err(Error::NonPositiveWeight { .. } | Error::NonFinite { .. })
+        ));
+        assert!(matches!(
+            c.segment(1e160, 1e200),
+            Err(Error::NonPositiveWeight { .. } | Error::NonFinite { .. })
+        ));
+        let (l, r) = c.subdivide(0.5).expect("inside");
+        assert!(l.weights().is_some_and(|w| w.iter().all(|w| *w > 0.0)));
+        assert!(r.weights().is_some_and(|w| w.iter().all(|w| *w > 0.0)));
     }
 
     #[test]

@@ -154,7 +154,8 @@ impl TriPatch {
     /// non-negative and sum to one: relative error a few ulp of the net's size.
     ///
     /// # Errors
-    /// [`crate::Error::DegreeOutOfRange`] when `n + r > MAX_DEGREE`.
+    /// [`crate::Error::DegreeOutOfRange`] when `n + r > MAX_DEGREE`;
+    /// [`crate::Error::NonFinite`] when a point of the result rounds past `f64::MAX`.
     ///
     /// ```
     /// # use cagd_core::TriPatch;
@@ -188,6 +189,9 @@ impl TriPatch {
                 }
             }
         }
+        // Sums of coordinates near f64::MAX can round past it (the C ABI fuzz harness
+        // found an Ok patch with infinite points): refused, not handed out.
+        crate::validate::check_points(&out, dim)?;
         Ok(TriPatch::from_parts(out, nr, dim))
     }
 

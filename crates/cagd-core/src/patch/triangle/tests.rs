@@ -279,3 +279,26 @@ fn index_is_i_major() {
         assert_eq!(k, tri_count(n));
     }
 }
+
+/// Elevation never hands out an infinite point: coordinates at `f64::MAX` whose convex
+/// combinations round past it are refused with `NonFinite` (issue 18: the C ABI fuzz
+/// harness found a `cagd_tripatch_elevate` handle whose `cagd_tripatch_points` failed).
+#[test]
+fn elevation_near_f64_max_is_finite_or_refused() {
+    let mut refused = 0;
+    for n in 1..=12usize {
+        for r in 1..=12usize {
+            let pts = vec![f64::MAX; (n + 1) * (n + 2) / 2];
+            let t = TriPatch::new(pts, n, 1).expect("finite points");
+            match t.elevate(r) {
+                Ok(e) => assert!(e.points().iter().all(|x| x.is_finite()), "n {n} r {r}"),
+                Err(Error::NonFinite { .. }) => refused += 1,
+                Err(e) => panic!("n {n} r {r}: unexpected {e}"),
+            }
+        }
+    }
+    assert!(
+        refused > 0,
+        "no case rounded past f64::MAX; the test no longer probes it"
+    );
+}
