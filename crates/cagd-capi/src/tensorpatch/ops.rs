@@ -71,6 +71,8 @@ pub unsafe extern "C" fn cagd_tensorpatch_eval(
 /// - `CAGD_ERR_NULL_POINTER`: `patch` or `patch_out` is NULL.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
 /// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `deg_u + r_u > 64` or `deg_v + r_v > 64`.
+/// - `CAGD_ERR_NON_FINITE`: a point of the result rounds past `DBL_MAX` (coordinates near
+///   `DBL_MAX`).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

@@ -203,24 +203,30 @@ impl TensorPatch {
     /// `a_ij = C(m,j) C(r,i-j) / C(m+r,i)`, SPEC-reduce §0). The surface is unchanged.
     ///
     /// # Errors
-    /// [`Error::DegreeOutOfRange`] when `m + r > MAX_DEGREE`.
+    /// [`Error::DegreeOutOfRange`] when `m + r > MAX_DEGREE`; [`Error::NonFinite`] when a
+    /// point of the result rounds past `f64::MAX`.
     pub fn elevate_u(&self, r: usize) -> Result<TensorPatch> {
         let new_m = self.deg_u.saturating_add(r);
         check_degree(new_m)?;
         let dim = self.dim;
         let pts = map_columns(self, new_m, |c, o| kernel::elevate(c, dim, r, o));
+        // Sums of coordinates near f64::MAX can round past it: refused, not handed out.
+        crate::validate::check_points(&pts, dim)?;
         Ok(TensorPatch::from_parts(pts, new_m, self.deg_v, dim))
     }
 
     /// Elevates the degree in `v` from `n` to `n + r` (curve elevation of every row).
     ///
     /// # Errors
-    /// [`Error::DegreeOutOfRange`] when `n + r > MAX_DEGREE`.
+    /// [`Error::DegreeOutOfRange`] when `n + r > MAX_DEGREE`; [`Error::NonFinite`] when a
+    /// point of the result rounds past `f64::MAX`.
     pub fn elevate_v(&self, r: usize) -> Result<TensorPatch> {
         let new_n = self.deg_v.saturating_add(r);
         check_degree(new_n)?;
         let dim = self.dim;
         let pts = map_rows(self, new_n, |row, o| kernel::elevate(row, dim, r, o));
+        // Sums of coordinates near f64::MAX can round past it: refused, not handed out.
+        crate::validate::check_points(&pts, dim)?;
         Ok(TensorPatch::from_parts(pts, self.deg_u, new_n, dim))
     }
 

@@ -174,3 +174,28 @@ proptest! {
         }
     }
 }
+
+/// Elevation sums of coordinates at `f64::MAX` can round past it (the C ABI fuzz run found
+/// a `cagd_tensorpatch_reduce` NaN on a patch made by `cagd_tensorpatch_elevate`): the
+/// result is finite or refused as non-finite, in both directions.
+#[test]
+fn elevation_near_f64_max_is_finite_or_refused() {
+    let mut refused = 0;
+    for m in 1..=8usize {
+        for r in 1..=8usize {
+            let p = TensorPatch::new(vec![f64::MAX; (m + 1) * 2], m, 1, 1).expect("finite");
+            let q = TensorPatch::new(vec![f64::MAX; (m + 1) * 2], 1, m, 1).expect("finite");
+            for e in [p.elevate_u(r), q.elevate_v(r)] {
+                match e {
+                    Ok(e) => assert!(e.points().iter().all(|x| x.is_finite()), "m {m} r {r}"),
+                    Err(Error::NonFinite { .. }) => refused += 1,
+                    Err(e) => panic!("m {m} r {r}: unexpected {e}"),
+                }
+            }
+        }
+    }
+    assert!(
+        refused > 0,
+        "no case rounded past f64::MAX; the test no longer probes it"
+    );
+}
