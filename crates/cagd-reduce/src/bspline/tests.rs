@@ -485,3 +485,41 @@ fn high_degrees() {
         assert!(measured <= r.report.error_bound, "{p}: {measured:e}");
     }
 }
+
+/// The case of the formerly commented-out seed of
+/// `tests/bspline_laws.proptest-regressions` (law 1): a degree-6 NURBS at the origin
+/// (every point (0, 0)) with a knot of multiplicity 6, Segments(L2) to degree 5 at C2.
+/// The joint at 1.75 is C2 in homogeneous space (its removal is exact to 8e-17) but
+/// the weight function without the knot has a control weight of -6e-4: refused by
+/// that name, not "(rounding)".
+#[test]
+fn point_curve_nurbs_at_c2() {
+    let mut knots = vec![-2.0, -1.5, -1.0, -0.5, 0.0, 0.5, 1.0];
+    knots.extend([1.5; 6]);
+    knots.extend([2.0; 4]);
+    knots.extend([2.5, 3.0, 3.5]);
+    let n = knots.len() - 7;
+    let mut w = vec![1.0; n];
+    w[6] = 45.5;
+    w[9] = 0.0367;
+    w[10] = 0.0633;
+    let c = BSplineCurve::new_rational(6, knots, vec![0.0; 2 * n], w, 2).unwrap();
+    let opts = BSplineOptions {
+        strategy: BSplineStrategy::Segments(Method::L2 { r: 0, p: 0 }),
+        measure: true,
+        ..BSplineOptions::new(5, 0.1)
+    };
+    match reduce_bspline(&c, &opts) {
+        Ok(r) => assert!(r.report.error_bound <= 0.1),
+        Err(Error::ConditionNotMet {
+            eq: "tolerance",
+            why,
+        }) => {
+            assert!(why.contains("non-positive"), "{why}");
+        }
+        Err(e) => panic!("{e}"),
+    }
+    // The global fit reduces it (a point: bound at the rounding level).
+    let fit = reduce_bspline(&c, &BSplineOptions::new(5, 0.1)).unwrap();
+    assert!(fit.report.error_bound <= 0.1);
+}
