@@ -513,7 +513,21 @@ proptest! {
     /// Laws 1 and 2 on random input.
     #[test]
     fn random_surfaces_meet_the_tolerance(c in case()) {
-        let r = reduce(&c)?;
+        // The fit's result cap (2^16 patches, bounded work, issue 18) may refuse by name
+        // an input whose weights make it far costlier than the cost model predicts; any
+        // other failure is a failure of the law.
+        let r = match reduce_bspline_surface_fit(
+            &c.surface,
+            &SurfaceFitOptions::new(c.target, c.tolerance),
+        ) {
+            Ok(r) => r,
+            Err(cagd_reduce::Error::ConditionNotMet { eq: "tolerance", why })
+                if why.contains("2^16 patches") =>
+            {
+                return Err(TestCaseError::reject("refused by the result cap"));
+            }
+            Err(e) => return Err(TestCaseError::fail(format!("reduction failed: {e}"))),
+        };
         check_bound(&c.surface, &r, c.target, c.tolerance)?;
     }
 
