@@ -4,7 +4,6 @@
 //! and [`Operator::apply`] (one curve) are defined here, on top of it, so that `operator/`
 //! does not depend on this module.
 
-use cagd_core::all_finite;
 use cagd_core::{Error, Result};
 
 use super::bound::{BoundLevel, max_row_norm, safe_range};
@@ -53,10 +52,11 @@ impl Operator {
 /// (index = point index counted over the whole batch) when an input coordinate is NaN or
 /// infinite — `output` is then unspecified.
 pub fn reduce_batch(op: &Operator, input: &[f64], dim: usize, output: &mut [f64]) -> Result<()> {
-    let n_curves = check_batch(op, input, dim, output)?;
-    let _ = n_curves;
-    op.map().apply(input, dim, output);
-    check_output(input, dim, output)
+    check_batch(op, input, dim, output)?;
+    if op.map().apply_checked(input, dim, output) {
+        return Ok(());
+    }
+    Err(non_finite(input, dim, output))
 }
 
 /// [`reduce_batch`] plus, per curve `c`, a certified upper bound `bounds[c]` of
@@ -103,12 +103,13 @@ pub fn reduce_batch_with_bounds(
     let block = map.block_curves(dim);
     let mut coefs = vec![0.0; block.min(n_curves) * per_coef];
     let mut values = vec![0.0; block.min(n_curves) * per_value];
+    let mut finite = true;
     for ((inp, out), bnd) in input
         .chunks(block * per_in)
         .zip(output.chunks_mut(block * per_out))
         .zip(bounds.chunks_mut(block))
     {
-        map.apply(inp, dim, out);
+        finite &= map.apply_checked(inp, dim, out);
         let cs = &mut coefs[..bnd.len() * per_coef];
         let vs = &mut values[..bnd.len() * per_value];
         if per_coef > 0 {
@@ -126,7 +127,11 @@ pub fn reduce_batch_with_bounds(
             *b = op.with_reduced(bm, p, q, dim, *b);
         }
     }
-    check_output(input, dim, output)
+    if finite {
+        Ok(())
+    } else {
+        Err(non_finite(input, dim, output))
+    }
 }
 
 /// Checks the lengths of a batch; returns the number of curves.
@@ -154,25 +159,24 @@ fn check_batch(op: &Operator, input: &[f64], dim: usize, output: &[f64]) -> Resu
     Ok(n_curves)
 }
 
-/// Every output is a dense sum over all inputs of its curve (zeros included), so a NaN or
-/// infinity anywhere in the input makes an output non-finite: one pass over the output
-/// detects it, and only then is the input searched for the culprit.
-fn check_output(input: &[f64], dim: usize, output: &[f64]) -> Result<()> {
-    if all_finite(output) {
-        return Ok(());
-    }
+/// The error for a batch with a non-finite output (the kernel checks each block of output
+/// while it is in cache; every output of coordinate `k` is a dense sum over all points of
+/// its curve, zeros included, so a NaN or infinity anywhere in the input shows there, and
+/// only then is the input searched for the culprit): the first non-finite input
+/// coordinate, or (finite input overflowing, only for `|x|` near `f64::MAX`) the first
+/// non-finite output coordinate.
+fn non_finite(input: &[f64], dim: usize, output: &[f64]) -> Error {
     if let Some(pos) = input.iter().position(|x| !x.is_finite()) {
-        return Err(Error::NonFinite {
+        return Error::NonFinite {
             index: pos / dim,
             coord: pos % dim,
             value: input[pos],
-        });
+        };
     }
-    // Finite input can overflow to infinity only for |x| near f64::MAX.
     let pos = output.iter().position(|x| !x.is_finite()).unwrap_or(0);
-    Err(Error::NonFinite {
+    Error::NonFinite {
         index: pos / dim,
         coord: pos % dim,
         value: output[pos],
-    })
+    }
 }
