@@ -3410,7 +3410,8 @@ CagdStatus cagd_curve_segment(const struct CagdCurve *curve,
  *   calling thread whatever the count. The result does not depend on it.
  * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
  *   `n_curves * (target + 1) * dim` doubles hold the reduced curves in `layout`. May be
- *   NULL only when `out_cap == 0`.
+ *   NULL only when `out_cap == 0`. Not written on failure, but for `CAGD_ERR_NON_FINITE`
+ *   (contents then unspecified).
  * - `out_cap` (in): capacity of `out` in doubles (0 asks the size).
  * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
  *   `n_curves * (target + 1) * dim`.
@@ -3426,9 +3427,10 @@ CagdStatus cagd_curve_segment(const struct CagdCurve *curve,
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
  * - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message names the
- *   curve, point and coordinate; nothing but `*out_needed` is written), or a reduced
- *   coordinate overflows to infinity (input near the largest double; `out` is then
- *   partly written).
+ *   curve, point and coordinate), or a reduced coordinate overflows to infinity (input
+ *   near the largest double). On this status the contents of `out` are unspecified (the
+ *   input is not scanned before the kernel writes: non-finite input is found from the
+ *   output); `*out_needed` is written.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
  *   written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
@@ -3467,7 +3469,8 @@ CagdStatus cagd_bezier_reduce_batch(const double *points,
  * - `n_threads` (in): as for `cagd_bezier_reduce_batch` (0 or 1: the calling thread).
  * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
  *   `n_curves * (n + r + 1) * dim` doubles hold the elevated curves in `layout`. May be
- *   NULL only when `out_cap == 0`.
+ *   NULL only when `out_cap == 0`. Not written on failure, but for `CAGD_ERR_NON_FINITE`
+ *   (contents then unspecified).
  * - `out_cap` (in): capacity of `out` in doubles (0 asks the size).
  * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
  *   `n_curves * (n + r + 1) * dim`.
@@ -3480,9 +3483,10 @@ CagdStatus cagd_bezier_reduce_batch(const double *points,
  *   `CagdBatchLayout`, or a pointer is misaligned.
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64` or `degree + r > 64`.
  * - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message names the
- *   curve, point and coordinate; nothing but `*out_needed` is written), or an elevated
- *   coordinate overflows to infinity (input near the largest double; `out` is then
- *   partly written).
+ *   curve, point and coordinate), or an elevated coordinate overflows to infinity (input
+ *   near the largest double). On this status the contents of `out` are unspecified (the
+ *   input is not scanned before the kernel writes: non-finite input is found from the
+ *   output); `*out_needed` is written.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
  *   written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
@@ -4994,8 +4998,8 @@ CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
  * - `opts` (in): the options. Borrowed for the call.
  * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
  *   `n_curves * (target + 1) * dim` doubles hold the reduced curves in the same layout.
- *   May be NULL only when `out_cap == 0`. Not written on failure (but for the overflow
- *   of `CAGD_ERR_NON_FINITE`).
+ *   May be NULL only when `out_cap == 0`. Not written on failure, but for
+ *   `CAGD_ERR_NON_FINITE` (contents then unspecified).
  * - `out_cap` (in): capacity of `out` in doubles.
  * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
  *   `n_curves * (target + 1) * dim`.
@@ -5004,7 +5008,7 @@ CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
  *   `max_t |P(t) - Q(t)|` (model units, Euclidean norm of the `dim` coordinates, the
  *   rounding of the reduced points included; `+inf` only if the computation overflowed)
  *   at `opts->bound_level` (`CAGD_BOUND_FAST` or `CAGD_BOUND_TIGHT`). Not written on
- *   failure (but for the overflow of `CAGD_ERR_NON_FINITE`).
+ *   failure, but for `CAGD_ERR_NON_FINITE` (contents then unspecified).
  *
  * Returns:
  * - `CAGD_OK`: the reduced curves are in `out`.
@@ -5018,9 +5022,12 @@ CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
  * - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message gives
- *   the point index counted over the whole batch; nothing but `*out_needed` is
- *   written), or a reduced coordinate overflows to infinity (input near the largest
- *   double; `out` and `bounds_out` are then partly written).
+ *   the point index counted over the whole batch), or a reduced coordinate overflows to
+ *   infinity (input near the largest double). On this status the contents of `out` and
+ *   `bounds_out` are unspecified (the input is not scanned before the kernel writes:
+ *   non-finite input is found from the output, where it always shows, every reduced
+ *   coordinate being a sum over all points of its curve with no term skipped);
+ *   `*out_needed` is written.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
  *   written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
@@ -5059,8 +5066,8 @@ CagdStatus cagd_curve_reduce_batch_bounded(const double *points,
  * - `opts` (in): the options. Borrowed for the call.
  * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
  *   `n_curves * (target + 1) * dim` doubles hold the reduced curves in the same layout.
- *   May be NULL only when `out_cap == 0`. Not written on failure (but for the overflow
- *   of `CAGD_ERR_NON_FINITE`).
+ *   May be NULL only when `out_cap == 0`. Not written on failure, but for
+ *   `CAGD_ERR_NON_FINITE` (contents then unspecified).
  * - `out_cap` (in): capacity of `out` in doubles.
  * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
  *   `n_curves * (target + 1) * dim`.
@@ -5075,9 +5082,10 @@ CagdStatus cagd_curve_reduce_batch_bounded(const double *points,
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
- * - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (nothing but
- *   `*out_needed` is written), or a reduced coordinate overflows to infinity (`out` is
- *   then partly written).
+ * - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite, or a reduced
+ *   coordinate overflows to infinity (input near the largest double). On this status the
+ *   contents of `out` are unspecified (non-finite input is found from the output, not by
+ *   a scan before the kernel writes); `*out_needed` is written.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
  *   written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.

@@ -62,7 +62,7 @@ type LastOperator = Option<(Method, usize, usize, Arc<Operator>)>;
 ///
 /// # Errors
 /// As [`operator`].
-pub(super) fn operator_for(method: Method, n: usize, m: usize) -> cagd_core::Result<Arc<Operator>> {
+pub(crate) fn operator_for(method: Method, n: usize, m: usize) -> cagd_core::Result<Arc<Operator>> {
     thread_local! {
         static LAST: RefCell<LastOperator> = const { RefCell::new(None) };
     }
@@ -124,7 +124,7 @@ pub(super) fn elevate_one(
     output: &mut [f64],
 ) -> Result<(), Overflow> {
     elevate(input, dim, r, output);
-    if output.iter().all(|x| x.is_finite()) {
+    if all_finite(output) {
         Ok(())
     } else {
         Err(Overflow { curve: 0 })
@@ -179,7 +179,7 @@ pub(super) fn elevate_curve_major(
             }
         }
     }
-    if output.iter().all(|x| x.is_finite()) {
+    if all_finite(output) {
         Ok(())
     } else {
         Err(first_bad_curve(output, terms.len() * dim))
