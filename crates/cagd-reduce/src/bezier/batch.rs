@@ -6,7 +6,10 @@
 
 use cagd_core::{Error, Result};
 
-use super::bound::{BoundLevel, max_row_norm, safe_range};
+use cagd_core::all_finite;
+
+use super::bound::{BoundLevel, safe_amax};
+use super::lanes::{self, BoundMaps, CurveNorms};
 use super::operator::Operator;
 
 impl Operator {
@@ -97,34 +100,37 @@ pub fn reduce_batch_with_bounds(
     };
     let map = op.map();
     let basis = op.error_basis();
-    let nodes = bm.samples.rows();
+    let maps = BoundMaps {
+        a: map.transposed(),
+        g: basis.coef.transposed(),
+        v: bm.samples.transposed(),
+    };
     let (per_in, per_out) = (map.cols() * dim, map.rows() * dim);
-    let (per_coef, per_value) = (basis.rank * dim, nodes * dim);
     let block = map.block_curves(dim);
-    let mut coefs = vec![0.0; block.min(n_curves) * per_coef];
-    let mut values = vec![0.0; block.min(n_curves) * per_value];
+    let mut norms = vec![CurveNorms::default(); block.min(n_curves)];
+    let mut scratch = Vec::new();
     let mut finite = true;
     for ((inp, out), bnd) in input
         .chunks(block * per_in)
         .zip(output.chunks_mut(block * per_out))
         .zip(bounds.chunks_mut(block))
     {
-        finite &= map.apply_checked(inp, dim, out);
-        let cs = &mut coefs[..bnd.len() * per_coef];
-        let vs = &mut values[..bnd.len() * per_value];
-        if per_coef > 0 {
-            basis.coef.apply(inp, dim, cs);
-            bm.samples.apply(cs, dim, vs);
-        }
-        for (i, (p, b)) in inp.chunks_exact(per_in).zip(bnd.iter_mut()).enumerate() {
-            let smax = max_row_norm(&vs[i * per_value..(i + 1) * per_value], dim);
-            *b = op.curve_bound(bm, p, dim, smax);
-            if !safe_range(p) {
+        let nrm = &mut norms[..bnd.len()];
+        lanes::apply_with_norms(&maps, dim, inp, out, nrm, &mut scratch);
+        finite &= all_finite(out);
+        for (((p, q), b), cn) in inp
+            .chunks_exact(per_in)
+            .zip(out.chunks_exact(per_out))
+            .zip(bnd.iter_mut())
+            .zip(nrm.iter())
+        {
+            *b = if safe_amax(cn.amax) {
+                op.curve_bound_norms(bm, p, dim, cn.smax, cn.pmax)
+            } else {
                 // Norms could overflow or underflow: the scaled per-curve route.
-                *b = op.one_bound(bm, p, dim);
-            }
-            let q = &out[i * per_out..(i + 1) * per_out];
-            *b = op.with_reduced(bm, p, q, dim, *b);
+                op.one_bound(bm, p, dim)
+            };
+            *b = op.with_reduced_norms(bm, (p, q), dim, *b, cn.pmax, cn.amax);
         }
     }
     if finite {

@@ -65,6 +65,12 @@ impl LinearMap {
         &self.a
     }
 
+    /// The transposed matrix (`cols x rows`, row-major) and the number of rows: the form
+    /// the lanes kernel takes.
+    pub(crate) fn transposed(&self) -> (&[f64], usize) {
+        (&self.at, self.rows)
+    }
+
     /// Curves per block for points of `dim` coordinates (at least one).
     pub(crate) fn block_curves(&self, dim: usize) -> usize {
         (BLOCK_BYTES / (8 * self.cols * dim).max(1)).max(MIN_BLOCK)
@@ -72,19 +78,11 @@ impl LinearMap {
 
     /// Applies the map to every curve of `input` (`curves * cols * dim` doubles,
     /// curve-major, row-major inside a curve) writing `curves * rows * dim` doubles to
-    /// `output` in the same layout. Lengths are the caller's invariant (checked in debug).
-    /// One allocation per call (the kernel's scratch of `(rows + cols) dim` vectors).
-    pub(crate) fn apply(&self, input: &[f64], dim: usize, output: &mut [f64]) {
-        self.apply_blocks(input, dim, output, false);
-    }
-
-    /// [`LinearMap::apply`], checking each block's output for a non-finite value while it
-    /// is in cache; returns whether every output is finite (all are written either way).
+    /// `output` in the same layout, checking each block's output for a non-finite value
+    /// while it is in cache; returns whether every output is finite (all are written
+    /// either way). Lengths are the caller's invariant (checked in debug). One allocation
+    /// per call (the kernel's scratch of `(rows + cols) dim` vectors).
     pub(crate) fn apply_checked(&self, input: &[f64], dim: usize, output: &mut [f64]) -> bool {
-        self.apply_blocks(input, dim, output, true)
-    }
-
-    fn apply_blocks(&self, input: &[f64], dim: usize, output: &mut [f64], check: bool) -> bool {
         let (per_in, per_out) = (self.cols * dim, self.rows * dim);
         if per_in == 0 || per_out == 0 {
             output.fill(0.0);
@@ -101,7 +99,7 @@ impl LinearMap {
             .zip(output.chunks_mut(block * per_out))
         {
             lanes::apply(&self.at, self.rows, dim, inp, out, &mut scratch);
-            if check && finite {
+            if finite {
                 finite = all_finite(out);
             }
         }

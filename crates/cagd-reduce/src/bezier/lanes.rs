@@ -291,6 +291,174 @@ fn one_curve<const F: bool>(at: &[f64], rows: usize, dim: usize, inp: &[f64], ou
     }
 }
 
+/// The three maps of a batch with certified bounds, each transposed (`cols x rows`,
+/// row-major) with its number of rows: the reduction `A` (`m + 1` rows), the error
+/// curve's coefficient map `G` (`r` rows) and its node map `V` (`N + 1` rows, `r`
+/// columns).
+pub(crate) struct BoundMaps<'a> {
+    /// `A^T` and `m + 1`.
+    pub(crate) a: (&'a [f64], usize),
+    /// `G^T` and `r` (`r = 0`: no error space; every node value is zero).
+    pub(crate) g: (&'a [f64], usize),
+    /// `V^T` and `N + 1`.
+    pub(crate) v: (&'a [f64], usize),
+}
+
+/// Per curve of a batch with bounds: the largest node value norm `max_j ||(V G P)_j||`,
+/// the largest point norm `max_j ||P_j||` and the largest coordinate magnitude; each NaN
+/// when a value it is the maximum of is NaN.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub(crate) struct CurveNorms {
+    /// `max_j ||s_j||` over the node values `s = V G P`.
+    pub(crate) smax: f64,
+    /// `max_j ||P_j||`.
+    pub(crate) pmax: f64,
+    /// `max |P_jk|`.
+    pub(crate) amax: f64,
+}
+
+/// [`apply`] with the reduction `maps.a` plus, per curve, the norms of [`CurveNorms`]
+/// into `norms` (one per curve): the coefficient and node maps run on the group's
+/// transposed input while it is in L1 (no second pass over the input, no buffer of node
+/// values per curve), and the norms are maxima over lanes. The curves that do not fill a
+/// group are padded with zero curves (every lane is computed alike, so a curve's results
+/// do not depend on its position).
+pub(crate) fn apply_with_norms(
+    maps: &BoundMaps<'_>,
+    dim: usize,
+    input: &[f64],
+    output: &mut [f64],
+    norms: &mut [CurveNorms],
+    scratch: &mut Vec<V>,
+) {
+    #[cfg(target_arch = "x86_64")]
+    if fused_available() {
+        #[allow(unsafe_code, reason = "the one call of a `target_feature` function")]
+        // SAFETY: as in `apply`: AVX2 and FMA were detected just above.
+        unsafe {
+            with_norms_avx2_fma(maps, dim, input, output, norms, scratch);
+        }
+        return;
+    }
+    with_norms_generic::<false>(maps, dim, input, output, norms, scratch, transpose);
+}
+
+/// [`apply_with_norms`] compiled with AVX2 and FMA.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn with_norms_avx2_fma(
+    maps: &BoundMaps<'_>,
+    dim: usize,
+    input: &[f64],
+    output: &mut [f64],
+    norms: &mut [CurveNorms],
+    scratch: &mut Vec<V>,
+) {
+    with_norms_generic::<true>(maps, dim, input, output, norms, scratch, |a, b, c, d| {
+        transpose_avx(a, b, c, d)
+    });
+}
+
+/// The body of [`apply_with_norms`] for either kind of multiply-add.
+#[inline(always)]
+pub(crate) fn with_norms_generic<const F: bool>(
+    maps: &BoundMaps<'_>,
+    dim: usize,
+    input: &[f64],
+    output: &mut [f64],
+    norms: &mut [CurveNorms],
+    scratch: &mut Vec<V>,
+    tr: impl Fn(V, V, V, V) -> [V; W],
+) {
+    let ((at, rows), (gt, rank), (vt, nodes)) = (maps.a, maps.g, maps.v);
+    if rows == 0 || dim == 0 {
+        return;
+    }
+    let cols = at.len() / rows;
+    let (lin, lout, lc, lv) = (cols * dim, rows * dim, rank * dim, nodes * dim);
+    if lin == 0 {
+        return;
+    }
+    let curves = input.len() / lin;
+    debug_assert!(output.len() == curves * lout && norms.len() == curves);
+    scratch.clear();
+    scratch.resize(lin + lout + lc + lv, [0.0; W]);
+    let (t, rest) = scratch.split_at_mut(lin);
+    let (u, rest) = rest.split_at_mut(lout);
+    let (c, vv) = rest.split_at_mut(lc);
+    // A partial last group: its curves in a zero-padded copy.
+    let mut pad_in = Vec::new();
+    let mut pad_out = Vec::new();
+    for ((inp, out), nrm) in input
+        .chunks(W * lin)
+        .zip(output.chunks_mut(W * lout))
+        .zip(norms.chunks_mut(W))
+    {
+        let whole = nrm.len() == W;
+        if whole {
+            transpose_in(inp, lin, t, &tr);
+        } else {
+            pad_in.clear();
+            pad_in.extend_from_slice(inp);
+            pad_in.resize(W * lin, 0.0);
+            transpose_in(&pad_in, lin, t, &tr);
+        }
+        tiles::<F>(at, rows, cols, dim, t, u);
+        if whole {
+            transpose_out(u, lout, out, &tr);
+        } else {
+            pad_out.resize(W * lout, 0.0);
+            transpose_out(u, lout, &mut pad_out, &tr);
+            out.copy_from_slice(&pad_out[..out.len()]);
+        }
+        let smax = if rank == 0 || nodes == 0 {
+            [0.0; W]
+        } else {
+            tiles::<F>(gt, rank, cols, dim, t, c);
+            tiles::<F>(vt, nodes, rank, dim, c, vv);
+            max_point_norm::<F>(vv, dim)
+        };
+        let pmax = max_point_norm::<F>(t, dim);
+        let amax = t.iter().fold([0.0f64; W], |m, x| {
+            std::array::from_fn(|l| {
+                if x[l].abs() > m[l] || x[l].is_nan() {
+                    x[l].abs()
+                } else {
+                    m[l]
+                }
+            })
+        });
+        for (l, n) in nrm.iter_mut().enumerate() {
+            *n = CurveNorms {
+                smax: smax[l],
+                pmax: pmax[l],
+                amax: amax[l],
+            };
+        }
+    }
+}
+
+/// Per lane, `max_j ||x_j||` over the points `x_j` (`dim` vectors each); NaN in a lane
+/// where a squared norm is NaN (never skipped).
+#[inline(always)]
+fn max_point_norm<const F: bool>(x: &[V], dim: usize) -> V {
+    let mut best = [0.0f64; W];
+    let mut bad = [false; W];
+    for p in x.chunks_exact(dim) {
+        let mut q = [0.0f64; W];
+        for v in p {
+            for l in 0..W {
+                q[l] = madd::<F>(v[l], v[l], q[l]);
+            }
+        }
+        for l in 0..W {
+            bad[l] |= q[l].is_nan();
+            best[l] = best[l].max(q[l]);
+        }
+    }
+    std::array::from_fn(|l| if bad[l] { f64::NAN } else { best[l].sqrt() })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -439,6 +607,63 @@ mod tests {
                         }
                     }
                 }
+            }
+        }
+    }
+
+    #[test]
+    fn norms_equal_their_definitions_and_the_reduction_is_apply_bit_for_bit() {
+        let (rows, cols, rank, nodes) = (5, 9, 4, 23);
+        let mk = |r: usize, c: usize, s: f64| -> Vec<f64> {
+            (0..r * c).map(|i| (i as f64 * s).sin()).collect()
+        };
+        let (a, g, v) = (
+            mk(rows, cols, 0.37),
+            mk(rank, cols, 0.53),
+            mk(nodes, rank, 0.71),
+        );
+        let (at, gt, vt) = (
+            transpose(&a, rows, cols),
+            transpose(&g, rank, cols),
+            transpose(&v, nodes, rank),
+        );
+        let maps = BoundMaps {
+            a: (&at, rows),
+            g: (&gt, rank),
+            v: (&vt, nodes),
+        };
+        let mut scratch = Vec::new();
+        for dim in [1, 2, 3, 4, 7] {
+            for curves in [1, 3, 4, 9] {
+                let input: Vec<f64> = (0..curves * cols * dim)
+                    .map(|i| (i as f64 * 1.7).cos() * 3.0)
+                    .collect();
+                let mut out = vec![0.0; curves * rows * dim];
+                let mut norms = vec![CurveNorms::default(); curves];
+                apply_with_norms(&maps, dim, &input, &mut out, &mut norms, &mut scratch);
+                let mut want = vec![0.0; out.len()];
+                apply(&at, rows, dim, &input, &mut want, &mut scratch);
+                assert_eq!(out, want, "dim {dim} curves {curves}");
+                for (cv, nrm) in input.chunks_exact(cols * dim).zip(&norms) {
+                    let coef = reference::<false>(&g, rank, cols, cv, dim);
+                    let vals = reference::<false>(&v, nodes, rank, &coef, dim);
+                    let norm = |x: &[f64]| x.iter().map(|y| y * y).sum::<f64>().sqrt();
+                    let smax = vals.chunks_exact(dim).map(norm).fold(0.0, f64::max);
+                    let pmax = cv.chunks_exact(dim).map(norm).fold(0.0, f64::max);
+                    let amax = cv.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+                    assert!(
+                        (nrm.smax - smax).abs() <= 1e-13 * smax.max(1.0),
+                        "{nrm:?} {smax}"
+                    );
+                    assert!((nrm.pmax - pmax).abs() <= 1e-14 * pmax, "{nrm:?} {pmax}");
+                    assert_eq!(nrm.amax, amax);
+                }
+                // A NaN shows in the curve's node and point norms.
+                let mut bad = input.clone();
+                bad[cols * dim * (curves - 1) + dim - 1] = f64::NAN;
+                apply_with_norms(&maps, dim, &bad, &mut out, &mut norms, &mut scratch);
+                let last = norms[curves - 1];
+                assert!(last.smax.is_nan() && last.pmax.is_nan() && last.amax.is_nan());
             }
         }
     }
