@@ -220,6 +220,25 @@ fn batch_call(
     assert_eq!(s, CagdStatus::OK);
 }
 
+/// `cagd_curve_reduce_batch` (curve-major, the operator cache) on `N_CURVES` curves.
+fn curve_batch_call(input: &[f64], n: usize, opts: &CagdReduceOptions, out: &mut [f64]) {
+    let mut needed = 0;
+    // SAFETY: valid pointers of the documented sizes.
+    let s = unsafe {
+        cagd_curve_reduce_batch(
+            input.as_ptr(),
+            N_CURVES,
+            n,
+            DIM,
+            opts,
+            out.as_mut_ptr(),
+            out.len(),
+            &mut needed,
+        )
+    };
+    assert_eq!(s, CagdStatus::OK);
+}
+
 fn batches(c: &mut Criterion) {
     let o = options(5);
     let cases: [(&str, usize, usize, Result<&CagdReduceOptions, usize>); 2] = [
@@ -332,11 +351,13 @@ fn reduce_pairs(c: &mut Criterion) {
             vec![0.0; out.len()],
             vec![0.0; out.len()],
         );
+        let mut out4 = out.clone();
         let t = interleaved(
             15,
             &mut [
                 &mut || batch_call(black_box(&pm), n, pml, Ok(&o), 1, &mut out),
                 &mut || batch_call(black_box(&input), n, cml, Ok(&o), 1, &mut out2),
+                &mut || curve_batch_call(black_box(&input), n, &o, &mut out4),
                 &mut || gemm_floor(op.matrix(), n1, m1, black_box(&pm), &mut out3),
                 &mut || {
                     copy_in.copy_from_slice(black_box(&input));
@@ -345,14 +366,17 @@ fn reduce_pairs(c: &mut Criterion) {
                 },
             ],
         );
-        let [tp, tcm, tg, tc] = [t[0], t[1], t[2], t[3]].map(|x| x / N_CURVES as f64);
+        let [tp, tcm, tcr, tg, tc] = [t[0], t[1], t[2], t[3], t[4]].map(|x| x / N_CURVES as f64);
         println!(
-            "reduce_batch ({n:2},{m:2}) 1 thread: point-major {tp:6.2} ns/curve ({:.2}x GEMM \
-             floor, {:.2}x copy), curve-major {tcm:6.2} ns/curve ({:.2}x floor); GEMM floor \
-             {tg:6.2} ns/curve ({:.2}x copy), copy {tc:.2} ns/curve",
+            "reduce_batch ({n:2},{m:2}) 1 thread: cagd_bezier_reduce_batch point-major {tp:6.2} \
+             ns/curve ({:.2}x GEMM floor, {:.2}x copy), curve-major {tcm:6.2} ns/curve ({:.2}x \
+             floor); cagd_curve_reduce_batch {tcr:6.2} ns/curve ({:.2}x floor, {:.2}x copy); \
+             GEMM floor {tg:6.2} ns/curve ({:.2}x copy), copy {tc:.2} ns/curve",
             tp / tg,
             tp / tc,
             tcm / tg,
+            tcr / tg,
+            tcr / tc,
             tg / tc
         );
     }
