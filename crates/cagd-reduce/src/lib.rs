@@ -202,8 +202,8 @@
 //! bounds the geometric one): a quarter / half / full unit circle to cubics within 1e-3
 //! takes 3 / 6 / 12 spans, within 1e-5 8 / 16 / 32 (a `C^1` cubic Hermite fit needs
 //! 3 / 6 / 12 and 9 / 18 / 36); to quadratics 5 / 10 / 20 and 19 / 38 / 76.
-// Unsafe code is denied (workspace lint) with one exception: the call of the AVX2 + FMA
-// instance of the batch kernel after run-time detection (`bezier/lanes.rs`).
+// Unsafe code is denied (workspace lint) with one exception: the calls of the AVX2 + FMA
+// and AVX-512 instances of the batch kernel after run-time detection (`bezier/lanes.rs`).
 #![deny(unsafe_code)]
 
 mod ball;

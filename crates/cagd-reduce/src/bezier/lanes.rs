@@ -1,28 +1,27 @@
 //! The curves-in-lanes kernel: one small linear map `Q_c = A P_c` applied to many curves
-//! stored curve-major, four curves at a time, each curve in one lane of a 4-wide vector.
+//! stored curve-major, `L` curves at a time (4 with AVX2, 8 with AVX-512), each curve in
+//! one lane of an `L`-wide vector.
 //! Goes beyond the seed: the data path under [`crate::reduce_batch`] (see `gemm.rs`).
 //!
-//! A group of four curves is transposed (4 x 4 blocks, in L1) so that element `l` of the
-//! four flat curves is one vector `t_l`; the output element `(i, k)` of the four curves is
+//! A group of `L` curves is transposed (4 x 4 blocks, in L1) so that element `l` of the
+//! `L` flat curves is one vector `t_l`; the output element `(i, k)` of the four curves is
 //! then `sum_j a_ij t_(j dim + k)`, accumulated in registers over tiles of up to 4 rows x 3
 //! coordinates (12 vectors) and transposed back. This does exactly the `(m+1)(n+1) dim`
 //! multiply-adds per curve of the definition (the Kronecker-expanded GEMM does `dim` times
 //! as many, most of them on zeros), needs no packing, and works for every `dim` alike.
 //!
-//! Two instances of the same code: with AVX2 and FMA (detected at run time; the sums are
-//! fused multiply-adds) and the portable one (a multiply then an add, whatever the target
+//! Three instances of the same code: with AVX-512F and FMA (8 lanes), with AVX2 and FMA
+//! (4 lanes; both detected at run time, the sums fused multiply-adds, so the two give the
+//! same bits) and the portable one (4 lanes, a multiply then an add, whatever the target
 //! vectorises it to). Both sum every output over `j = 0..=n` in increasing order, the zeros
 //! of the map included, so a NaN or infinity anywhere in coordinate `k` of a curve reaches
-//! every output of coordinate `k` of that curve. The curves that do not fill a group of
-//! four go through a one-curve loop with the same operations in the same order, so every
+//! every output of coordinate `k` of that curve. The curves that do not fill a group
+//! go through a one-curve loop with the same operations in the same order, so every
 //! curve gets the same bits wherever it sits in the batch (the result does not depend on
 //! how the caller cuts the batch into blocks or threads).
 
-/// Curves per group (the vector width in doubles).
-const W: usize = 4;
-
-/// One vector: the same element of four curves.
-type V = [f64; W];
+/// A 4 x 4 transpose of four vectors of four doubles (AVX shuffles or portable).
+type Quad = [f64; 4];
 
 /// Rows of the map per register tile.
 const TILE_ROWS: usize = 4;
@@ -30,50 +29,91 @@ const TILE_ROWS: usize = 4;
 /// Coordinates per register tile (12 accumulators with [`TILE_ROWS`]).
 const TILE_COORDS: usize = 3;
 
-/// Applies the row-major `rows x cols` map `a` (also given transposed: `at` is `cols x
-/// rows`, row-major) to every curve of `input` (`cols * dim` doubles each, curve-major)
-/// into `output` (`rows * dim` doubles each). `scratch` is resized as needed (one
-/// allocation per call at most).
+/// The instance this CPU runs (detected once).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Isa {
+    /// AVX-512F + AVX2 + FMA: 8 lanes, fused.
+    Avx512,
+    /// AVX2 + FMA: 4 lanes, fused.
+    Avx2,
+    /// Portable: 4 lanes, multiply then add.
+    Portable,
+}
+
+/// The instance this CPU runs.
+pub(crate) fn isa() -> Isa {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::is_x86_feature_detected as has;
+        if has!("avx2") && has!("fma") {
+            return if has!("avx512f") {
+                Isa::Avx512
+            } else {
+                Isa::Avx2
+            };
+        }
+    }
+    Isa::Portable
+}
+
+/// Applies the row-major `rows x cols` map `a`, given transposed (`at` is `cols x rows`,
+/// row-major), to every curve of `input` (`cols * dim` doubles each, curve-major) into
+/// `output` (`rows * dim` doubles each). `scratch` is resized as needed (one allocation
+/// per call at most).
 pub(crate) fn apply(
     at: &[f64],
     rows: usize,
     dim: usize,
     input: &[f64],
     output: &mut [f64],
-    scratch: &mut Vec<V>,
+    scratch: &mut Vec<f64>,
 ) {
     #[cfg(target_arch = "x86_64")]
-    if fused_available() {
-        #[allow(unsafe_code, reason = "the one call of a `target_feature` function")]
-        // SAFETY: the CPU supports AVX2 and FMA (detected just above), which is the only
-        // requirement of `apply_avx2_fma`; the function itself is safe code.
-        unsafe {
-            apply_avx2_fma(at, rows, dim, input, output, scratch);
+    match isa() {
+        #[allow(unsafe_code, reason = "the call of a `target_feature` function")]
+        // SAFETY: the CPU supports AVX-512F, AVX2 and FMA (detected by `isa`), the only
+        // requirement of the function, which is itself safe code.
+        Isa::Avx512 => unsafe { apply_avx512(at, rows, dim, input, output, scratch) },
+        #[allow(unsafe_code, reason = "the call of a `target_feature` function")]
+        // SAFETY: the CPU supports AVX2 and FMA (detected by `isa`), as above.
+        Isa::Avx2 => unsafe { apply_avx2(at, rows, dim, input, output, scratch) },
+        Isa::Portable => {
+            apply_generic::<false, 4>(at, rows, dim, input, output, scratch, transpose)
         }
-        return;
     }
-    apply_generic::<false>(at, rows, dim, input, output, scratch, transpose);
+    #[cfg(not(target_arch = "x86_64"))]
+    apply_generic::<false, 4>(at, rows, dim, input, output, scratch, transpose);
 }
 
-/// Whether this CPU runs the fused (AVX2 + FMA) instance.
+/// The kernel compiled with AVX-512F and FMA, 8 lanes.
 #[cfg(target_arch = "x86_64")]
-pub(crate) fn fused_available() -> bool {
-    std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")
-}
-
-/// The kernel compiled with AVX2 and FMA (fused multiply-adds).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-fn apply_avx2_fma(
+#[target_feature(enable = "avx512f,avx2,fma")]
+fn apply_avx512(
     at: &[f64],
     rows: usize,
     dim: usize,
     input: &[f64],
     output: &mut [f64],
-    scratch: &mut Vec<V>,
+    scratch: &mut Vec<f64>,
 ) {
     // The closure inherits the target features (so the AVX transpose is inlined).
-    apply_generic::<true>(at, rows, dim, input, output, scratch, |a, b, c, d| {
+    apply_generic::<true, 8>(at, rows, dim, input, output, scratch, |a, b, c, d| {
+        transpose_avx(a, b, c, d)
+    });
+}
+
+/// The kernel compiled with AVX2 and FMA, 4 lanes.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn apply_avx2(
+    at: &[f64],
+    rows: usize,
+    dim: usize,
+    input: &[f64],
+    output: &mut [f64],
+    scratch: &mut Vec<f64>,
+) {
+    apply_generic::<true, 4>(at, rows, dim, input, output, scratch, |a, b, c, d| {
         transpose_avx(a, b, c, d)
     });
 }
@@ -82,11 +122,11 @@ fn apply_avx2_fma(
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
 #[inline]
-fn transpose_avx(a: V, b: V, c: V, d: V) -> [V; W] {
+fn transpose_avx(a: Quad, b: Quad, c: Quad, d: Quad) -> [Quad; 4] {
     use std::arch::x86_64::{
         __m256d, _mm256_permute2f128_pd, _mm256_unpackhi_pd, _mm256_unpacklo_pd,
     };
-    let [a, b, c, d] = [a, b, c, d].map(bytemuck::cast::<V, __m256d>);
+    let [a, b, c, d] = [a, b, c, d].map(bytemuck::cast::<Quad, __m256d>);
     // [a0 b0 a2 b2], [a1 b1 a3 b3], [c0 d0 c2 d2], [c1 d1 c3 d3]
     let (t0, t1) = (_mm256_unpacklo_pd(a, b), _mm256_unpackhi_pd(a, b));
     let (t2, t3) = (_mm256_unpacklo_pd(c, d), _mm256_unpackhi_pd(c, d));
@@ -96,12 +136,12 @@ fn transpose_avx(a: V, b: V, c: V, d: V) -> [V; W] {
         _mm256_permute2f128_pd::<0x31>(t0, t2),
         _mm256_permute2f128_pd::<0x31>(t1, t3),
     ]
-    .map(bytemuck::cast::<__m256d, V>)
+    .map(bytemuck::cast::<__m256d, Quad>)
 }
 
 /// The 4 x 4 transpose, portable.
 #[inline(always)]
-fn transpose(a: V, b: V, c: V, d: V) -> [V; W] {
+fn transpose(a: Quad, b: Quad, c: Quad, d: Quad) -> [Quad; 4] {
     [
         [a[0], b[0], c[0], d[0]],
         [a[1], b[1], c[1], d[1]],
@@ -116,16 +156,25 @@ fn madd<const F: bool>(c: f64, x: f64, acc: f64) -> f64 {
     if F { c.mul_add(x, acc) } else { acc + c * x }
 }
 
-/// The kernel, for either kind of multiply-add (see [`apply`]).
+/// `len` vectors of `L` lanes in `scratch` (zeroed).
 #[inline(always)]
-pub(crate) fn apply_generic<const F: bool>(
+fn vectors<const L: usize>(scratch: &mut Vec<f64>, len: usize) -> &mut [[f64; L]] {
+    scratch.clear();
+    scratch.resize(len * L, 0.0);
+    bytemuck::cast_slice_mut(scratch)
+}
+
+/// The kernel, for either kind of multiply-add and `L` lanes (a multiple of 4; see
+/// [`apply`]).
+#[inline(always)]
+pub(crate) fn apply_generic<const F: bool, const L: usize>(
     at: &[f64],
     rows: usize,
     dim: usize,
     input: &[f64],
     output: &mut [f64],
-    scratch: &mut Vec<V>,
-    tr: impl Fn(V, V, V, V) -> [V; W],
+    scratch: &mut Vec<f64>,
+    tr: impl Fn(Quad, Quad, Quad, Quad) -> [Quad; 4],
 ) {
     if rows == 0 || dim == 0 {
         return;
@@ -138,18 +187,16 @@ pub(crate) fn apply_generic<const F: bool>(
     }
     let curves = input.len() / lin;
     debug_assert_eq!(output.len(), curves * lout);
-    scratch.clear();
-    scratch.resize(lin + lout, [0.0; W]);
-    let (t, u) = scratch.split_at_mut(lin);
-    let groups = curves / W;
-    let (in_g, in_rest) = input.split_at(groups * W * lin);
-    let (out_g, out_rest) = output.split_at_mut(groups * W * lout);
+    let (t, u) = vectors::<L>(scratch, lin + lout).split_at_mut(lin);
+    let groups = curves / L;
+    let (in_g, in_rest) = input.split_at(groups * L * lin);
+    let (out_g, out_rest) = output.split_at_mut(groups * L * lout);
     for (inp, out) in in_g
-        .chunks_exact(W * lin)
-        .zip(out_g.chunks_exact_mut(W * lout))
+        .chunks_exact(L * lin)
+        .zip(out_g.chunks_exact_mut(L * lout))
     {
         transpose_in(inp, lin, t, &tr);
-        tiles::<F>(at, rows, cols, dim, t, u);
+        tiles::<F, L>(at, rows, cols, dim, t, u);
         transpose_out(u, lout, out, &tr);
     }
     for (inp, out) in in_rest
@@ -160,67 +207,74 @@ pub(crate) fn apply_generic<const F: bool>(
     }
 }
 
-/// `t[l] = [c0[l], c1[l], c2[l], c3[l]]` for the four flat curves `c` of `inp` (`lin`
-/// doubles each), in 4 x 4 blocks.
+/// `t[l][c] = curve_c[l]` for the `L` flat curves of `inp` (`lin` doubles each), in
+/// 4 x 4 blocks.
 #[inline(always)]
-fn transpose_in(inp: &[f64], lin: usize, t: &mut [V], tr: impl Fn(V, V, V, V) -> [V; W]) {
-    let (c0, rest) = inp.split_at(lin);
-    let (c1, rest) = rest.split_at(lin);
-    let (c2, c3) = rest.split_at(lin);
-    let whole = lin / W * W;
-    for ((((tb, x0), x1), x2), x3) in t[..whole]
-        .chunks_exact_mut(W)
-        .zip(c0.chunks_exact(W))
-        .zip(c1.chunks_exact(W))
-        .zip(c2.chunks_exact(W))
-        .zip(c3.chunks_exact(W))
-    {
-        let [x0, x1, x2, x3] = [x0, x1, x2, x3].map(vector);
-        tb.copy_from_slice(&tr(x0, x1, x2, x3));
-    }
-    for l in whole..lin {
-        t[l] = [c0[l], c1[l], c2[l], c3[l]];
+fn transpose_in<const L: usize>(
+    inp: &[f64],
+    lin: usize,
+    t: &mut [[f64; L]],
+    tr: impl Fn(Quad, Quad, Quad, Quad) -> [Quad; 4],
+) {
+    let whole = lin / 4 * 4;
+    for h in 0..L / 4 {
+        let c = |q: usize| &inp[(4 * h + q) * lin..(4 * h + q + 1) * lin];
+        let (c0, c1, c2, c3) = (c(0), c(1), c(2), c(3));
+        for l in (0..whole).step_by(4) {
+            let [x0, x1, x2, x3] = [c0, c1, c2, c3].map(|x| quad(&x[l..l + 4]));
+            for (q, v) in tr(x0, x1, x2, x3).iter().enumerate() {
+                t[l + q][4 * h..4 * h + 4].copy_from_slice(v);
+            }
+        }
+        for l in whole..lin {
+            t[l][4 * h..4 * h + 4].copy_from_slice(&[c0[l], c1[l], c2[l], c3[l]]);
+        }
     }
 }
 
 /// Four doubles as one value (a vector load).
 #[inline(always)]
-fn vector(x: &[f64]) -> V {
-    x.try_into().unwrap_or([0.0; W])
+fn quad(x: &[f64]) -> Quad {
+    x.try_into().unwrap_or([0.0; 4])
 }
 
-/// The inverse of [`transpose_in`]: the four flat curves of `out` (`lout` doubles each)
+/// The inverse of [`transpose_in`]: the `L` flat curves of `out` (`lout` doubles each)
 /// from the vectors `u`.
 #[inline(always)]
-fn transpose_out(u: &[V], lout: usize, out: &mut [f64], tr: impl Fn(V, V, V, V) -> [V; W]) {
-    let (c0, rest) = out.split_at_mut(lout);
-    let (c1, rest) = rest.split_at_mut(lout);
-    let (c2, c3) = rest.split_at_mut(lout);
-    let whole = lout / W * W;
-    for ((((ub, y0), y1), y2), y3) in u[..whole]
-        .chunks_exact(W)
-        .zip(c0.chunks_exact_mut(W))
-        .zip(c1.chunks_exact_mut(W))
-        .zip(c2.chunks_exact_mut(W))
-        .zip(c3.chunks_exact_mut(W))
-    {
-        let [v0, v1, v2, v3] = tr(ub[0], ub[1], ub[2], ub[3]);
-        y0.copy_from_slice(&v0);
-        y1.copy_from_slice(&v1);
-        y2.copy_from_slice(&v2);
-        y3.copy_from_slice(&v3);
-    }
-    for l in whole..lout {
-        c0[l] = u[l][0];
-        c1[l] = u[l][1];
-        c2[l] = u[l][2];
-        c3[l] = u[l][3];
+fn transpose_out<const L: usize>(
+    u: &[[f64; L]],
+    lout: usize,
+    out: &mut [f64],
+    tr: impl Fn(Quad, Quad, Quad, Quad) -> [Quad; 4],
+) {
+    let whole = lout / 4 * 4;
+    for h in 0..L / 4 {
+        let part = |l: usize| quad(&u[l][4 * h..4 * h + 4]);
+        let block = &mut out[4 * h * lout..(4 * h + 4) * lout];
+        for l in (0..whole).step_by(4) {
+            let ys = tr(part(l), part(l + 1), part(l + 2), part(l + 3));
+            for (q, y) in ys.iter().enumerate() {
+                block[q * lout + l..q * lout + l + 4].copy_from_slice(y);
+            }
+        }
+        for l in whole..lout {
+            for q in 0..4 {
+                block[q * lout + l] = u[l][4 * h + q];
+            }
+        }
     }
 }
 
 /// Every output vector `u[i dim + k] = sum_j a_ij t[j dim + k]`, tile by tile.
 #[inline(always)]
-fn tiles<const F: bool>(at: &[f64], rows: usize, cols: usize, dim: usize, t: &[V], u: &mut [V]) {
+fn tiles<const F: bool, const L: usize>(
+    at: &[f64],
+    rows: usize,
+    cols: usize,
+    dim: usize,
+    t: &[[f64; L]],
+    u: &mut [[f64; L]],
+) {
     let mut i = 0;
     while i < rows {
         let r = (rows - i).min(TILE_ROWS);
@@ -229,18 +283,18 @@ fn tiles<const F: bool>(at: &[f64], rows: usize, cols: usize, dim: usize, t: &[V
             let kk = (dim - k).min(TILE_COORDS);
             let at_ = (at, rows, cols, dim, i, k);
             match (r, kk) {
-                (4, 3) => tile::<F, 4, 3>(at_, t, u),
-                (4, 2) => tile::<F, 4, 2>(at_, t, u),
-                (4, 1) => tile::<F, 4, 1>(at_, t, u),
-                (3, 3) => tile::<F, 3, 3>(at_, t, u),
-                (3, 2) => tile::<F, 3, 2>(at_, t, u),
-                (3, 1) => tile::<F, 3, 1>(at_, t, u),
-                (2, 3) => tile::<F, 2, 3>(at_, t, u),
-                (2, 2) => tile::<F, 2, 2>(at_, t, u),
-                (2, 1) => tile::<F, 2, 1>(at_, t, u),
-                (1, 3) => tile::<F, 1, 3>(at_, t, u),
-                (1, 2) => tile::<F, 1, 2>(at_, t, u),
-                _ => tile::<F, 1, 1>(at_, t, u),
+                (4, 3) => tile::<F, L, 4, 3>(at_, t, u),
+                (4, 2) => tile::<F, L, 4, 2>(at_, t, u),
+                (4, 1) => tile::<F, L, 4, 1>(at_, t, u),
+                (3, 3) => tile::<F, L, 3, 3>(at_, t, u),
+                (3, 2) => tile::<F, L, 3, 2>(at_, t, u),
+                (3, 1) => tile::<F, L, 3, 1>(at_, t, u),
+                (2, 3) => tile::<F, L, 2, 3>(at_, t, u),
+                (2, 2) => tile::<F, L, 2, 2>(at_, t, u),
+                (2, 1) => tile::<F, L, 2, 1>(at_, t, u),
+                (1, 3) => tile::<F, L, 1, 3>(at_, t, u),
+                (1, 2) => tile::<F, L, 1, 2>(at_, t, u),
+                _ => tile::<F, L, 1, 1>(at_, t, u),
             }
             k += kk;
         }
@@ -254,18 +308,18 @@ type TileAt<'a> = (&'a [f64], usize, usize, usize, usize, usize);
 /// One register tile: rows `i..i + R`, coordinates `k..k + K`, summed over `j` in
 /// increasing order.
 #[inline(always)]
-fn tile<const F: bool, const R: usize, const K: usize>(
+fn tile<const F: bool, const L: usize, const R: usize, const K: usize>(
     (at, rows, cols, dim, i, k): TileAt<'_>,
-    t: &[V],
-    u: &mut [V],
+    t: &[[f64; L]],
+    u: &mut [[f64; L]],
 ) {
-    let mut acc = [[[0.0f64; W]; K]; R];
+    let mut acc = [[[0.0f64; L]; K]; R];
     for (acol, tj) in at.chunks_exact(rows).zip(t.chunks_exact(dim)).take(cols) {
         let c: &[f64; R] = acol[i..i + R].try_into().unwrap_or(&[0.0; R]);
-        let x: &[V; K] = tj[k..k + K].try_into().unwrap_or(&[[0.0; W]; K]);
+        let x: &[[f64; L]; K] = tj[k..k + K].try_into().unwrap_or(&[[0.0; L]; K]);
         for r in 0..R {
             for q in 0..K {
-                for l in 0..W {
+                for l in 0..L {
                     acc[r][q][l] = madd::<F>(c[r], x[q][l], acc[r][q][l]);
                 }
             }
@@ -276,7 +330,6 @@ fn tile<const F: bool, const R: usize, const K: usize>(
         u[o..o + K].copy_from_slice(ar);
     }
 }
-
 /// One curve with the operations of a lane of the groups, in the same order (the same
 /// bits): `out[i dim + k] = sum_j a_ij in[j dim + k]`, `j` increasing.
 #[inline(always)]
@@ -329,46 +382,66 @@ pub(crate) fn apply_with_norms(
     input: &[f64],
     output: &mut [f64],
     norms: &mut [CurveNorms],
-    scratch: &mut Vec<V>,
+    scratch: &mut Vec<f64>,
 ) {
     #[cfg(target_arch = "x86_64")]
-    if fused_available() {
-        #[allow(unsafe_code, reason = "the one call of a `target_feature` function")]
-        // SAFETY: as in `apply`: AVX2 and FMA were detected just above.
-        unsafe {
-            with_norms_avx2_fma(maps, dim, input, output, norms, scratch);
+    match isa() {
+        #[allow(unsafe_code, reason = "the call of a `target_feature` function")]
+        // SAFETY: as in `apply`: the CPU has the function's features (detected by `isa`).
+        Isa::Avx512 => unsafe { with_norms_avx512(maps, dim, input, output, norms, scratch) },
+        #[allow(unsafe_code, reason = "the call of a `target_feature` function")]
+        // SAFETY: as above.
+        Isa::Avx2 => unsafe { with_norms_avx2(maps, dim, input, output, norms, scratch) },
+        Isa::Portable => {
+            with_norms_generic::<false, 4>(maps, dim, input, output, norms, scratch, transpose);
         }
-        return;
     }
-    with_norms_generic::<false>(maps, dim, input, output, norms, scratch, transpose);
+    #[cfg(not(target_arch = "x86_64"))]
+    with_norms_generic::<false, 4>(maps, dim, input, output, norms, scratch, transpose);
 }
 
-/// [`apply_with_norms`] compiled with AVX2 and FMA.
+/// [`apply_with_norms`] compiled with AVX-512F and FMA, 8 lanes.
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-fn with_norms_avx2_fma(
+#[target_feature(enable = "avx512f,avx2,fma")]
+fn with_norms_avx512(
     maps: &BoundMaps<'_>,
     dim: usize,
     input: &[f64],
     output: &mut [f64],
     norms: &mut [CurveNorms],
-    scratch: &mut Vec<V>,
+    scratch: &mut Vec<f64>,
 ) {
-    with_norms_generic::<true>(maps, dim, input, output, norms, scratch, |a, b, c, d| {
+    with_norms_generic::<true, 8>(maps, dim, input, output, norms, scratch, |a, b, c, d| {
+        transpose_avx(a, b, c, d)
+    });
+}
+
+/// [`apply_with_norms`] compiled with AVX2 and FMA, 4 lanes.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn with_norms_avx2(
+    maps: &BoundMaps<'_>,
+    dim: usize,
+    input: &[f64],
+    output: &mut [f64],
+    norms: &mut [CurveNorms],
+    scratch: &mut Vec<f64>,
+) {
+    with_norms_generic::<true, 4>(maps, dim, input, output, norms, scratch, |a, b, c, d| {
         transpose_avx(a, b, c, d)
     });
 }
 
 /// The body of [`apply_with_norms`] for either kind of multiply-add.
 #[inline(always)]
-pub(crate) fn with_norms_generic<const F: bool>(
+pub(crate) fn with_norms_generic<const F: bool, const L: usize>(
     maps: &BoundMaps<'_>,
     dim: usize,
     input: &[f64],
     output: &mut [f64],
     norms: &mut [CurveNorms],
-    scratch: &mut Vec<V>,
-    tr: impl Fn(V, V, V, V) -> [V; W],
+    scratch: &mut Vec<f64>,
+    tr: impl Fn(Quad, Quad, Quad, Quad) -> [Quad; 4],
 ) {
     let ((at, rows), (gt, rank), (vt, nodes)) = (maps.a, maps.g, maps.v);
     if rows == 0 || dim == 0 {
@@ -381,45 +454,43 @@ pub(crate) fn with_norms_generic<const F: bool>(
     }
     let curves = input.len() / lin;
     debug_assert!(output.len() == curves * lout && norms.len() == curves);
-    scratch.clear();
-    scratch.resize(lin + lout + lc + lv, [0.0; W]);
-    let (t, rest) = scratch.split_at_mut(lin);
+    let (t, rest) = vectors::<L>(scratch, lin + lout + lc + lv).split_at_mut(lin);
     let (u, rest) = rest.split_at_mut(lout);
     let (c, vv) = rest.split_at_mut(lc);
     // A partial last group: its curves in a zero-padded copy.
     let mut pad_in = Vec::new();
     let mut pad_out = Vec::new();
     for ((inp, out), nrm) in input
-        .chunks(W * lin)
-        .zip(output.chunks_mut(W * lout))
-        .zip(norms.chunks_mut(W))
+        .chunks(L * lin)
+        .zip(output.chunks_mut(L * lout))
+        .zip(norms.chunks_mut(L))
     {
-        let whole = nrm.len() == W;
+        let whole = nrm.len() == L;
         if whole {
             transpose_in(inp, lin, t, &tr);
         } else {
             pad_in.clear();
             pad_in.extend_from_slice(inp);
-            pad_in.resize(W * lin, 0.0);
+            pad_in.resize(L * lin, 0.0);
             transpose_in(&pad_in, lin, t, &tr);
         }
-        tiles::<F>(at, rows, cols, dim, t, u);
+        tiles::<F, L>(at, rows, cols, dim, t, u);
         if whole {
             transpose_out(u, lout, out, &tr);
         } else {
-            pad_out.resize(W * lout, 0.0);
+            pad_out.resize(L * lout, 0.0);
             transpose_out(u, lout, &mut pad_out, &tr);
             out.copy_from_slice(&pad_out[..out.len()]);
         }
         let smax = if rank == 0 || nodes == 0 {
-            [0.0; W]
+            [0.0; L]
         } else {
-            tiles::<F>(gt, rank, cols, dim, t, c);
-            tiles::<F>(vt, nodes, rank, dim, c, vv);
-            max_point_norm::<F>(vv, dim)
+            tiles::<F, L>(gt, rank, cols, dim, t, c);
+            tiles::<F, L>(vt, nodes, rank, dim, c, vv);
+            max_point_norm::<F, L>(vv, dim)
         };
-        let pmax = max_point_norm::<F>(t, dim);
-        let amax = t.iter().fold([0.0f64; W], |m, x| {
+        let pmax = max_point_norm::<F, L>(t, dim);
+        let amax = t.iter().fold([0.0f64; L], |m, x| {
             std::array::from_fn(|l| {
                 if x[l].abs() > m[l] || x[l].is_nan() {
                     x[l].abs()
@@ -441,17 +512,17 @@ pub(crate) fn with_norms_generic<const F: bool>(
 /// Per lane, `max_j ||x_j||` over the points `x_j` (`dim` vectors each); NaN in a lane
 /// where a squared norm is NaN (never skipped).
 #[inline(always)]
-fn max_point_norm<const F: bool>(x: &[V], dim: usize) -> V {
-    let mut best = [0.0f64; W];
-    let mut bad = [false; W];
+fn max_point_norm<const F: bool, const L: usize>(x: &[[f64; L]], dim: usize) -> [f64; L] {
+    let mut best = [0.0f64; L];
+    let mut bad = [false; L];
     for p in x.chunks_exact(dim) {
-        let mut q = [0.0f64; W];
+        let mut q = [0.0f64; L];
         for v in p {
-            for l in 0..W {
+            for l in 0..L {
                 q[l] = madd::<F>(v[l], v[l], q[l]);
             }
         }
-        for l in 0..W {
+        for l in 0..L {
             bad[l] |= q[l].is_nan();
             best[l] = best[l].max(q[l]);
         }
@@ -498,7 +569,7 @@ mod tests {
     }
 
     /// A kernel under test: `(at, rows, dim, input, output, scratch)`.
-    type Kernel<'a> = &'a dyn Fn(&[f64], usize, usize, &[f64], &mut [f64], &mut Vec<V>);
+    type Kernel<'a> = &'a dyn Fn(&[f64], usize, usize, &[f64], &mut [f64], &mut Vec<f64>);
 
     fn check<const F: bool>(run: Kernel<'_>) {
         let mut scratch = Vec::new();
@@ -538,20 +609,44 @@ mod tests {
     #[test]
     fn portable_instance_is_the_definition_bit_for_bit() {
         check::<false>(&|at, rows, dim, input, out, s| {
-            apply_generic::<false>(at, rows, dim, input, out, s, super::transpose)
+            apply_generic::<false, 4>(at, rows, dim, input, out, s, super::transpose)
+        });
+        check::<false>(&|at, rows, dim, input, out, s| {
+            apply_generic::<false, 8>(at, rows, dim, input, out, s, super::transpose)
         });
     }
 
     #[test]
-    fn fused_instance_is_the_fused_definition_bit_for_bit() {
-        // The fused instance as compiled without AVX2 (software FMA: slow, same bits) and,
-        // where the CPU has it, through the dispatch.
+    fn fused_instances_are_the_fused_definition_bit_for_bit() {
+        // The fused code at 4 and 8 lanes as compiled without the target features
+        // (software FMA: slow, same bits), each instance this CPU has by name, and the
+        // dispatch: all equal to the fused definition, so to one another.
         check::<true>(&|at, rows, dim, input, out, s| {
-            apply_generic::<true>(at, rows, dim, input, out, s, super::transpose)
+            apply_generic::<true, 4>(at, rows, dim, input, out, s, super::transpose)
+        });
+        check::<true>(&|at, rows, dim, input, out, s| {
+            apply_generic::<true, 8>(at, rows, dim, input, out, s, super::transpose)
         });
         #[cfg(target_arch = "x86_64")]
-        if fused_available() {
-            check::<true>(&|at, rows, dim, input, out, s| apply(at, rows, dim, input, out, s));
+        {
+            let i = isa();
+            if i != Isa::Portable {
+                #[allow(unsafe_code, reason = "a `target_feature` function under test")]
+                // SAFETY: the CPU has AVX2 and FMA (detected by `isa`).
+                check::<true>(&|at, rows, dim, input, out, s| unsafe {
+                    apply_avx2(at, rows, dim, input, out, s)
+                });
+            }
+            if i == Isa::Avx512 {
+                #[allow(unsafe_code, reason = "a `target_feature` function under test")]
+                // SAFETY: the CPU has AVX-512F, AVX2 and FMA (detected by `isa`).
+                check::<true>(&|at, rows, dim, input, out, s| unsafe {
+                    apply_avx512(at, rows, dim, input, out, s)
+                });
+            }
+            if i != Isa::Portable {
+                check::<true>(&|at, rows, dim, input, out, s| apply(at, rows, dim, input, out, s));
+            }
         }
     }
 
