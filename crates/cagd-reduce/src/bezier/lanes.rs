@@ -187,8 +187,10 @@ pub(crate) fn apply_generic<const F: bool, const L: usize>(
     }
     let curves = input.len() / lin;
     debug_assert_eq!(output.len(), curves * lout);
-    let (t, u) = vectors::<L>(scratch, lin + lout).split_at_mut(lin);
     let groups = curves / L;
+    // No scratch (no allocation) when there is no whole group, e.g. a single curve.
+    let (t, u) = vectors::<L>(scratch, if groups > 0 { lin + lout } else { 0 })
+        .split_at_mut(if groups > 0 { lin } else { 0 });
     let (in_g, in_rest) = input.split_at(groups * L * lin);
     let (out_g, out_rest) = output.split_at_mut(groups * L * lout);
     for (inp, out) in in_g
@@ -331,15 +333,50 @@ fn tile<const F: bool, const L: usize, const R: usize, const K: usize>(
     }
 }
 /// One curve with the operations of a lane of the groups, in the same order (the same
-/// bits): `out[i dim + k] = sum_j a_ij in[j dim + k]`, `j` increasing.
+/// bits): `out[i dim + k] = sum_j a_ij in[j dim + k]`, `j` increasing; four rows at a
+/// time with the point in registers for `dim <= 4`.
 #[inline(always)]
 fn one_curve<const F: bool>(at: &[f64], rows: usize, dim: usize, inp: &[f64], out: &mut [f64]) {
-    out.fill(0.0);
-    for (acol, pj) in at.chunks_exact(rows).zip(inp.chunks_exact(dim)) {
-        for (c, o) in acol.iter().zip(out.chunks_exact_mut(dim)) {
-            for (ok, xk) in o.iter_mut().zip(pj) {
-                *ok = madd::<F>(*c, *xk, *ok);
+    match dim {
+        1 => one_curve_fixed::<F, 1>(at, rows, inp, out),
+        2 => one_curve_fixed::<F, 2>(at, rows, inp, out),
+        3 => one_curve_fixed::<F, 3>(at, rows, inp, out),
+        4 => one_curve_fixed::<F, 4>(at, rows, inp, out),
+        _ => {
+            out.fill(0.0);
+            for (acol, pj) in at.chunks_exact(rows).zip(inp.chunks_exact(dim)) {
+                for (c, o) in acol.iter().zip(out.chunks_exact_mut(dim)) {
+                    for (ok, xk) in o.iter_mut().zip(pj) {
+                        *ok = madd::<F>(*c, *xk, *ok);
+                    }
+                }
             }
+        }
+    }
+}
+
+/// [`one_curve`] for `dim = D`.
+#[inline(always)]
+fn one_curve_fixed<const F: bool, const D: usize>(
+    at: &[f64],
+    rows: usize,
+    inp: &[f64],
+    out: &mut [f64],
+) {
+    for (b, ob) in out.chunks_mut(4 * D).enumerate() {
+        let i0 = 4 * b;
+        let r = ob.len() / D;
+        let mut acc = [[0.0f64; D]; 4];
+        for (acol, pj) in at.chunks_exact(rows).zip(inp.chunks_exact(D)) {
+            let c = &acol[i0..i0 + r];
+            for (ar, cr) in acc.iter_mut().zip(c) {
+                for k in 0..D {
+                    ar[k] = madd::<F>(*cr, pj[k], ar[k]);
+                }
+            }
+        }
+        for (o, ar) in ob.chunks_exact_mut(D).zip(&acc) {
+            o.copy_from_slice(ar);
         }
     }
 }
