@@ -4979,9 +4979,10 @@ CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
 /**
  * [`cagd_curve_reduce_batch`] with, optionally, a certified error bound per curve:
  * reduces `n_curves` polynomial curves of one degree `n` to degree `opts->target` with
- * one cached operator through a GEMM kernel, no per-curve allocation. With
- * `bounds_out == NULL` it is exactly `cagd_curve_reduce_batch`; a bound costs two more
- * small GEMMs (the error curve's coefficients and its values at the bound level's nodes;
+ * one cached operator through cagd-reduce's batch kernel (several curves per vector),
+ * no per-curve allocation. With `bounds_out == NULL` it is exactly
+ * `cagd_curve_reduce_batch`; a bound costs two more small matrix products in the same
+ * pass (the error curve's coefficients and its values at the bound level's nodes;
  * the error curve is seed 000 §14.4.3's, the node bound goes beyond the seed).
  * Only `opts->method`, `target`, `r`, `p`, `l1`, `l2` and (with `bounds_out`)
  * `bound_level` are used. Rational curves: pass their homogeneous points
@@ -5050,8 +5051,8 @@ CagdStatus cagd_curve_reduce_batch_bounded(const double *points,
 
 /**
  * Reduces `n_curves` polynomial curves of one degree `n` to degree `opts->target` with
- * one cached operator through a GEMM kernel, no per-curve allocation — the fast path for
- * many curves. The signature of the first C ABI, kept: per-curve certified bounds are
+ * one cached operator through cagd-reduce's batch kernel (several curves per vector), no
+ * per-curve allocation — the fast path for many curves. The signature of the first C ABI, kept: per-curve certified bounds are
  * [`cagd_curve_reduce_batch_bounded`]'s `bounds_out`. Only `opts->method`, `target`, `r`,
  * `p`, `l1` and `l2` are used. Rational curves: pass their homogeneous points
  * `(w_i P_i, w_i)` as polynomial curves of dimension `dim + 1`.

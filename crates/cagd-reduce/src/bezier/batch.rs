@@ -1,6 +1,7 @@
 //! The batch entry points: one operator applied to many curves stored contiguously through
-//! the GEMM data path of `gemm.rs` ([`reduce_batch`]), optionally with a certified bound
-//! per curve from two more small GEMMs ([`reduce_batch_with_bounds`]); [`Operator::apply_into`]
+//! the data path of `gemm.rs` and `lanes.rs` ([`reduce_batch`]), optionally with a certified
+//! bound per curve from two more small products in the same pass
+//! ([`reduce_batch_with_bounds`]); [`Operator::apply_into`]
 //! and [`Operator::apply`] (one curve) are defined here, on top of it, so that `operator/`
 //! does not depend on this module.
 
@@ -43,11 +44,12 @@ impl Operator {
 /// `output` receives `n_curves * (m + 1) * dim` doubles in the same layout. `n_curves` is
 /// `input.len() / ((n + 1) * dim)`.
 ///
-/// Data path: blocks of curves (about 64 KiB of input each) through a GEMM kernel
-/// (nalgebra's `gemm` = the `matrixmultiply` crate) over a strided point-major view of
-/// the caller's array, no transposing copy and no allocation per curve (see the crate's
-/// benchmark notes for the figures). The results are the same sums as the definition up
-/// to the order of the additions.
+/// Data path: blocks of curves (about 64 KiB of input each) through the curves-in-lanes
+/// kernel (`lanes.rs`: several curves per vector, AVX-512F / AVX2 with FMA when the CPU
+/// has them), no allocation per curve (see the crate's benchmark notes for the figures).
+/// The results are the definition's sums in its order, with fused multiply-adds where the
+/// CPU has them (so equal to the definition up to rounding), and a curve gets the same
+/// bits wherever it sits in the batch.
 ///
 /// # Errors
 /// [`Error::ZeroDimension`]; [`Error::LengthMismatch`] when `input.len()` is not a multiple
@@ -66,9 +68,10 @@ pub fn reduce_batch(op: &Operator, input: &[f64], dim: usize, output: &mut [f64]
 /// `max_t ||P_c(t) - Q_c(t)||` (Euclidean, in the space of the given points, the `f64`
 /// rounding of `Q_c` included) at `level` (see [`BoundLevel`]; the number
 /// [`Operator::certified_bound`] gives for that curve up to the order of its sums). The
-/// bound is two more small GEMMs per block of curves (the error curve's `n - m`
-/// coefficient points, then its values at the level's nodes) and one pass over the
-/// values; curves with coordinates beyond `2^±450` take the scaled per-curve route. A
+/// bound is two more small products in the same pass of the kernel (the error curve's
+/// `n - m` coefficient points, then its values at the level's nodes, their largest norm
+/// taken in registers); curves with coordinates beyond `2^±450` take the scaled per-curve
+/// route. A
 /// bound that overflows is `+inf`.
 ///
 /// # Errors
