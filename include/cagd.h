@@ -3450,7 +3450,8 @@ CagdStatus cagd_curve_segment(const struct CagdCurve *curve,
  *   calling thread whatever the count. The result does not depend on it.
  * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
  *   `n_curves * (target + 1) * dim` doubles hold the reduced curves in `layout`. May be
- *   NULL only when `out_cap == 0`.
+ *   NULL only when `out_cap == 0`. Not written on failure, but for `CAGD_ERR_NON_FINITE`
+ *   (contents then unspecified).
  * - `out_cap` (in): capacity of `out` in doubles (0 asks the size).
  * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
  *   `n_curves * (target + 1) * dim`.
@@ -3466,9 +3467,10 @@ CagdStatus cagd_curve_segment(const struct CagdCurve *curve,
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
  * - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message names the
- *   curve, point and coordinate; nothing but `*out_needed` is written), or a reduced
- *   coordinate overflows to infinity (input near the largest double; `out` is then
- *   partly written).
+ *   curve, point and coordinate), or a reduced coordinate overflows to infinity (input
+ *   near the largest double). On this status the contents of `out` are unspecified (the
+ *   input is not scanned before the kernel writes: non-finite input is found from the
+ *   output); `*out_needed` is written.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
  *   written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
@@ -3507,7 +3509,8 @@ CagdStatus cagd_bezier_reduce_batch(const double *points,
  * - `n_threads` (in): as for `cagd_bezier_reduce_batch` (0 or 1: the calling thread).
  * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
  *   `n_curves * (n + r + 1) * dim` doubles hold the elevated curves in `layout`. May be
- *   NULL only when `out_cap == 0`.
+ *   NULL only when `out_cap == 0`. Not written on failure, but for `CAGD_ERR_NON_FINITE`
+ *   (contents then unspecified).
  * - `out_cap` (in): capacity of `out` in doubles (0 asks the size).
  * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
  *   `n_curves * (n + r + 1) * dim`.
@@ -3520,9 +3523,10 @@ CagdStatus cagd_bezier_reduce_batch(const double *points,
  *   `CagdBatchLayout`, or a pointer is misaligned.
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64` or `degree + r > 64`.
  * - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message names the
- *   curve, point and coordinate; nothing but `*out_needed` is written), or an elevated
- *   coordinate overflows to infinity (input near the largest double; `out` is then
- *   partly written).
+ *   curve, point and coordinate), or an elevated coordinate overflows to infinity (input
+ *   near the largest double). On this status the contents of `out` are unspecified (the
+ *   input is not scanned before the kernel writes: non-finite input is found from the
+ *   output); `*out_needed` is written.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
  *   written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
@@ -5030,9 +5034,10 @@ CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
 /**
  * [`cagd_curve_reduce_batch`] with, optionally, a certified error bound per curve:
  * reduces `n_curves` polynomial curves of one degree `n` to degree `opts->target` with
- * one cached operator through a GEMM kernel, no per-curve allocation. With
- * `bounds_out == NULL` it is exactly `cagd_curve_reduce_batch`; a bound costs two more
- * small GEMMs (the error curve's coefficients and its values at the bound level's nodes;
+ * one cached operator through cagd-reduce's batch kernel (several curves per vector),
+ * no per-curve allocation. With `bounds_out == NULL` it is exactly
+ * `cagd_curve_reduce_batch`; a bound costs two more small matrix products in the same
+ * pass (the error curve's coefficients and its values at the bound level's nodes;
  * the error curve is seed 000 §14.4.3's, the node bound goes beyond the seed).
  * Only `opts->method`, `target`, `r`, `p`, `l1`, `l2` and (with `bounds_out`)
  * `bound_level` are used. Rational curves: pass their homogeneous points
@@ -5049,8 +5054,8 @@ CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
  * - `opts` (in): the options. Borrowed for the call.
  * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
  *   `n_curves * (target + 1) * dim` doubles hold the reduced curves in the same layout.
- *   May be NULL only when `out_cap == 0`. Not written on failure (but for the overflow
- *   of `CAGD_ERR_NON_FINITE`).
+ *   May be NULL only when `out_cap == 0`. Not written on failure, but for
+ *   `CAGD_ERR_NON_FINITE` (contents then unspecified).
  * - `out_cap` (in): capacity of `out` in doubles.
  * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
  *   `n_curves * (target + 1) * dim`.
@@ -5059,7 +5064,7 @@ CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
  *   `max_t |P(t) - Q(t)|` (model units, Euclidean norm of the `dim` coordinates, the
  *   rounding of the reduced points included; `+inf` only if the computation overflowed)
  *   at `opts->bound_level` (`CAGD_BOUND_FAST` or `CAGD_BOUND_TIGHT`). Not written on
- *   failure (but for the overflow of `CAGD_ERR_NON_FINITE`).
+ *   failure, but for `CAGD_ERR_NON_FINITE` (contents then unspecified).
  *
  * Returns:
  * - `CAGD_OK`: the reduced curves are in `out`.
@@ -5073,9 +5078,12 @@ CagdStatus cagd_curve_reduce(const struct CagdCurve *curve,
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
  * - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message gives
- *   the point index counted over the whole batch; nothing but `*out_needed` is
- *   written), or a reduced coordinate overflows to infinity (input near the largest
- *   double; `out` and `bounds_out` are then partly written).
+ *   the point index counted over the whole batch), or a reduced coordinate overflows to
+ *   infinity (input near the largest double). On this status the contents of `out` and
+ *   `bounds_out` are unspecified (the input is not scanned before the kernel writes:
+ *   non-finite input is found from the output, where it always shows, every reduced
+ *   coordinate being a sum over all points of its curve with no term skipped);
+ *   `*out_needed` is written.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
  *   written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
@@ -5098,8 +5106,8 @@ CagdStatus cagd_curve_reduce_batch_bounded(const double *points,
 
 /**
  * Reduces `n_curves` polynomial curves of one degree `n` to degree `opts->target` with
- * one cached operator through a GEMM kernel, no per-curve allocation — the fast path for
- * many curves. The signature of the first C ABI, kept: per-curve certified bounds are
+ * one cached operator through cagd-reduce's batch kernel (several curves per vector), no
+ * per-curve allocation — the fast path for many curves. The signature of the first C ABI, kept: per-curve certified bounds are
  * [`cagd_curve_reduce_batch_bounded`]'s `bounds_out`. Only `opts->method`, `target`, `r`,
  * `p`, `l1` and `l2` are used. Rational curves: pass their homogeneous points
  * `(w_i P_i, w_i)` as polynomial curves of dimension `dim + 1`.
@@ -5114,8 +5122,8 @@ CagdStatus cagd_curve_reduce_batch_bounded(const double *points,
  * - `opts` (in): the options. Borrowed for the call.
  * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
  *   `n_curves * (target + 1) * dim` doubles hold the reduced curves in the same layout.
- *   May be NULL only when `out_cap == 0`. Not written on failure (but for the overflow
- *   of `CAGD_ERR_NON_FINITE`).
+ *   May be NULL only when `out_cap == 0`. Not written on failure, but for
+ *   `CAGD_ERR_NON_FINITE` (contents then unspecified).
  * - `out_cap` (in): capacity of `out` in doubles.
  * - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
  *   `n_curves * (target + 1) * dim`.
@@ -5130,9 +5138,10 @@ CagdStatus cagd_curve_reduce_batch_bounded(const double *points,
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
- * - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (nothing but
- *   `*out_needed` is written), or a reduced coordinate overflows to infinity (`out` is
- *   then partly written).
+ * - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite, or a reduced
+ *   coordinate overflows to infinity (input near the largest double). On this status the
+ *   contents of `out` are unspecified (non-finite input is found from the output, not by
+ *   a scan before the kernel writes); `*out_needed` is written.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
  *   written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.

@@ -14,28 +14,11 @@
 //!   `cagd_bezier_reduce_batch` 10 -> 5 and `cagd_bezier_elevate_batch` 5 -> 8.
 
 //!
-//! Figures of one run (2 cores shared with five other builds, load average 11-13, so
-//! absolute times are inflated and the thread speed-up is bounded by the load, not by the
-//! code; median of interleaved rounds):
-//!
-//! ```text
-//! single ( 5,  4): handle 7012.8 ns/call | flat+report 6559.9 ns/call (0.94x handle)
-//!                  | flat points only 134.9 ns/call (0.019x handle, 22.1x copy) | copy 6.1 ns
-//! single (10,  5): handle 11175.6 ns/call | flat+report 12610.5 ns/call (1.13x handle)
-//!                  | flat points only 166.8 ns/call (0.015x handle, 16.9x copy) | copy 9.8 ns
-//! batch reduce_10_5 curve-major: 1 thread 598.8 ns/curve (3.34x copy), 2 threads 425.4
-//!                  ns/curve (2.37x copy), speed-up 1.41
-//! batch reduce_10_5 point-major: 1 thread 541.9 ns/curve (3.78x copy), 2 threads 537.4
-//!                  ns/curve (3.75x copy), speed-up 1.01
-//! batch elevate_5_8 curve-major: 1 thread 439.3 ns/curve (3.56x copy), 2 threads 351.2
-//!                  ns/curve (2.84x copy), speed-up 1.25
-//! batch elevate_5_8 point-major: 1 thread 367.2 ns/curve (4.38x copy), 2 threads 350.0
-//!                  ns/curve (4.17x copy), speed-up 1.05
-//! ```
-//!
+//! Figures of the last run (the six degree pairs against the GEMM floor and a copy, and
+//! the lines above): `crates/cagd-reduce/benches/README.md`, section "The flat C batch".
 //! The handle and the flat call with a report cost the same: both are the certified bound
-//! (95-99 % of the time; its cost is cagd-reduce's, issue 17's per-curve work). Without a
-//! report the flat call is the reduction alone, 50-80x faster than the handle route.
+//! (its cost is cagd-reduce's, issue 17's per-curve work). Without a report the flat call
+//! is the reduction alone, several times faster than the handle route.
 
 #![allow(unsafe_code, reason = "the benchmark calls the C ABI")]
 
@@ -220,6 +203,25 @@ fn batch_call(
     assert_eq!(s, CagdStatus::OK);
 }
 
+/// `cagd_curve_reduce_batch` (curve-major, the operator cache) on `N_CURVES` curves.
+fn curve_batch_call(input: &[f64], n: usize, opts: &CagdReduceOptions, out: &mut [f64]) {
+    let mut needed = 0;
+    // SAFETY: valid pointers of the documented sizes.
+    let s = unsafe {
+        cagd_curve_reduce_batch(
+            input.as_ptr(),
+            N_CURVES,
+            n,
+            DIM,
+            opts,
+            out.as_mut_ptr(),
+            out.len(),
+            &mut needed,
+        )
+    };
+    assert_eq!(s, CagdStatus::OK);
+}
+
 fn batches(c: &mut Criterion) {
     let o = options(5);
     let cases: [(&str, usize, usize, Result<&CagdReduceOptions, usize>); 2] = [
@@ -332,11 +334,13 @@ fn reduce_pairs(c: &mut Criterion) {
             vec![0.0; out.len()],
             vec![0.0; out.len()],
         );
+        let mut out4 = out.clone();
         let t = interleaved(
             15,
             &mut [
                 &mut || batch_call(black_box(&pm), n, pml, Ok(&o), 1, &mut out),
                 &mut || batch_call(black_box(&input), n, cml, Ok(&o), 1, &mut out2),
+                &mut || curve_batch_call(black_box(&input), n, &o, &mut out4),
                 &mut || gemm_floor(op.matrix(), n1, m1, black_box(&pm), &mut out3),
                 &mut || {
                     copy_in.copy_from_slice(black_box(&input));
@@ -345,14 +349,17 @@ fn reduce_pairs(c: &mut Criterion) {
                 },
             ],
         );
-        let [tp, tcm, tg, tc] = [t[0], t[1], t[2], t[3]].map(|x| x / N_CURVES as f64);
+        let [tp, tcm, tcr, tg, tc] = [t[0], t[1], t[2], t[3], t[4]].map(|x| x / N_CURVES as f64);
         println!(
-            "reduce_batch ({n:2},{m:2}) 1 thread: point-major {tp:6.2} ns/curve ({:.2}x GEMM \
-             floor, {:.2}x copy), curve-major {tcm:6.2} ns/curve ({:.2}x floor); GEMM floor \
-             {tg:6.2} ns/curve ({:.2}x copy), copy {tc:.2} ns/curve",
+            "reduce_batch ({n:2},{m:2}) 1 thread: cagd_bezier_reduce_batch point-major {tp:6.2} \
+             ns/curve ({:.2}x GEMM floor, {:.2}x copy), curve-major {tcm:6.2} ns/curve ({:.2}x \
+             floor); cagd_curve_reduce_batch {tcr:6.2} ns/curve ({:.2}x floor, {:.2}x copy); \
+             GEMM floor {tg:6.2} ns/curve ({:.2}x copy), copy {tc:.2} ns/curve",
             tp / tg,
             tp / tc,
             tcm / tg,
+            tcr / tg,
+            tcr / tc,
             tg / tc
         );
     }

@@ -118,17 +118,18 @@
 //! `(pi/4) ||c_{m+1}||` of the best uniform error (random curves, `n <= 12`, `n - m <= 3`),
 //! and equal to Eck's best uniform approximation for one degree.
 //!
-//! ## Batch reduction and bounds that cost two small GEMMs
+//! ## Batch reduction and bounds that cost two small matrix products
 //!
-//! [`reduce_batch`] applies one operator to many curves through a GEMM kernel (nalgebra's
-//! `gemm`, which runs the `matrixmultiply` crate for every side above 5) over a strided
-//! point-major view of the caller's curve-major array, in blocks of about 64 KiB of input,
-//! with no transposing copy and no allocation per curve; 4- and 5-row operators (`(4,3)`,
-//! `(5,4)`) go through one GEMM with the Kronecker-expanded operator instead.
+//! [`reduce_batch`] applies one operator to many curves of the caller's curve-major array
+//! through a kernel of this crate with the curves in the lanes of the vectors (8 per
+//! vector with AVX-512F, 4 with AVX2, both with FMA and detected at run time, or portable):
+//! exactly the multiply-adds of the definition, in blocks of about 64 KiB of input, no
+//! allocation per curve, and the same bits for a curve wherever it sits in the batch.
 //! [`reduce_batch_with_bounds`] adds a certified bound per curve: the error curve
 //! `P - E Q = (I - E A) P` lies in an `(n - m)`-dimensional space, so it is `n - m`
-//! coefficient points `c = G P` (one small GEMM) in a precomputed orthonormal basis; its
-//! values at `N + 1` Chebyshev–Lobatto nodes are one more small GEMM `V c`, and the
+//! coefficient points `c = G P` (one small product) in a precomputed orthonormal basis; its
+//! values at `N + 1` Chebyshev–Lobatto nodes are one more small product `V c` (both in the
+//! same pass of the kernel as the reduction), and the
 //! largest value times the Ehlich–Zeller factor `sec(n pi / (2N))` bounds the error over
 //! the whole curve (rounding included). The factor is the bound's promise: at most 1.25×
 //! the true error at [`BoundLevel::Fast`] (`N ≈ 2.4 n`), 1.075× at [`BoundLevel::Tight`]
@@ -202,7 +203,9 @@
 //! bounds the geometric one): a quarter / half / full unit circle to cubics within 1e-3
 //! takes 3 / 6 / 12 spans, within 1e-5 8 / 16 / 32 (a `C^1` cubic Hermite fit needs
 //! 3 / 6 / 12 and 9 / 18 / 36); to quadratics 5 / 10 / 20 and 19 / 38 / 76.
-#![forbid(unsafe_code)]
+// Unsafe code is denied (workspace lint) with one exception: the calls of the AVX2 + FMA
+// and AVX-512 instances of the batch kernel after run-time detection (`bezier/lanes.rs`).
+#![deny(unsafe_code)]
 
 mod ball;
 mod bezier;

@@ -179,3 +179,69 @@ fn batch_bound_errors_are_named() {
         Err(cagd_core::Error::NonFinite { index, coord: 2, .. }) if index == 321 * 21 + 4
     ));
 }
+
+#[test]
+fn fused_batch_bounds_hold_on_adversarial_families_and_ragged_ends() {
+    // The batch computes the node values and the norms in its lanes kernel (four curves per
+    // vector, a partial last group padded with zero curves). Every family here goes through
+    // a different branch of the per-curve finish: nearly of degree m (the hull bound from
+    // the reduced points), tiny and huge scales (the scaled per-curve route), exact degree
+    // m (a zero error curve), plus ragged counts 1..=7. Each bound must be at least the
+    // measured error and at most the per-curve node bound (`certified_bound`) up to the
+    // rounding of the node values, relative to the largest control point (the batch may be
+    // smaller: it also takes the hull bound of the computed reduced points for
+    // nearly-degree-m curves).
+    for (n, m) in [(5usize, 4usize), (10, 5), (30, 15)] {
+        for method in [Method::L2 { r: 0, p: 0 }, Method::GeneralizedInverse] {
+            let op = operator(method, n, m).unwrap();
+            let per_in = (n + 1) * DIM;
+            let low = BezierCurve::new(random_input((m + 1) * DIM, 5), DIM).unwrap();
+            let exact = low.elevate(n - m).unwrap().points().to_vec();
+            // (name, curve, its scale: a power of two, so that the measurement can run on
+            // the exactly unscaled curves, where its squares do not overflow)
+            let mut families: Vec<(&str, Vec<f64>, f64)> = Vec::new();
+            for (name, eps) in [("exact", 0.0), ("near 1e-9", 1e-9), ("near 1e-14", 1e-14)] {
+                let noise = random_input(per_in, 6);
+                let curve = exact.iter().zip(&noise).map(|(x, e)| x + eps * e).collect();
+                families.push((name, curve, 1.0));
+            }
+            for (name, s) in [("2^-900", -900), ("2^700", 700), ("2^-500", -500)] {
+                let s = 2f64.powi(s);
+                let curve = random_input(per_in, 7).iter().map(|x| x * s).collect();
+                families.push((name, curve, s));
+            }
+            for (name, curve, scale) in &families {
+                for count in 1..=7 {
+                    // The family's curve at every position of a ragged batch of random ones.
+                    let mut input = random_input(count * per_in, count as u64);
+                    let at = (count - 1) / 2;
+                    input[at * per_in..(at + 1) * per_in].copy_from_slice(curve);
+                    let mut out = vec![0.0; count * (m + 1) * DIM];
+                    for level in [BoundLevel::Fast, BoundLevel::Tight] {
+                        let mut bounds = vec![0.0; count];
+                        reduce_batch_with_bounds(&op, &input, DIM, &mut out, &mut bounds, level)
+                            .unwrap();
+                        for c in 0..count {
+                            let pts = &input[c * per_in..(c + 1) * per_in];
+                            let s = if c == at { *scale } else { 1.0 };
+                            let unscaled = |x: &[f64]| x.iter().map(|v| v / s).collect();
+                            let p = BezierCurve::new(unscaled(pts), DIM).unwrap();
+                            let qp = &out[c * (m + 1) * DIM..(c + 1) * (m + 1) * DIM];
+                            let q = BezierCurve::new(unscaled(qp), DIM).unwrap();
+                            let measured = max_deviation(&p, &q).unwrap() * s;
+                            let what = format!("{method:?} ({n},{m}) {name} {level:?} {c}/{count}");
+                            assert!(bounds[c] >= measured, "{what}: {} < {measured}", bounds[c]);
+                            let one = op.certified_bound(pts, DIM, level).unwrap().unwrap();
+                            let pmax = pts.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+                            assert!(
+                                bounds[c] <= one * (1.0 + 1e-9) + 1e-12 * pmax + 1e-300,
+                                "{what}: batch {} vs per-curve {one}",
+                                bounds[c]
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+}

@@ -48,3 +48,27 @@ pub fn memcpy_ns(input: &[f64], output: &[f64]) -> f64 {
         black_box(&copy_out);
     })
 }
+
+/// Median wall times (ns) of each of `fs`, measured in `rounds` interleaved rounds (one run
+/// of each per round, after one warm-up run each), so that a change of machine load during
+/// the measurement affects every variant alike: the ratios between them stay meaningful on
+/// a shared machine.
+pub fn interleaved_ns(rounds: usize, fs: &mut [&mut dyn FnMut()]) -> Vec<f64> {
+    for f in fs.iter_mut() {
+        f();
+    }
+    let mut t = vec![Vec::with_capacity(rounds); fs.len()];
+    for _ in 0..rounds.max(1) {
+        for (f, ti) in fs.iter_mut().zip(&mut t) {
+            let s = Instant::now();
+            f();
+            ti.push(s.elapsed().as_secs_f64() * 1e9);
+        }
+    }
+    t.into_iter()
+        .map(|mut v| {
+            v.sort_by(f64::total_cmp);
+            v[v.len() / 2]
+        })
+        .collect()
+}

@@ -141,7 +141,7 @@ int cagd_ctest_reduce_batch_bad_input(void) {
     CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 2, &o, out, 16, &needed),
                  CAGD_ERR_NON_FINITE);
     CHECK_MESSAGE_HAS("points[10][1]");
-    CHECK(out[0] == -1.0 && out[15] == -1.0); /* nothing written */
+    CHECK(needed == 16); /* out: contents unspecified on CAGD_ERR_NON_FINITE */
     o.target = 7;
     in[16 + 5] = 1.0;
     CHECK_STATUS(cagd_curve_reduce_batch(in, 2, 7, 2, &o, out, 16, &needed),

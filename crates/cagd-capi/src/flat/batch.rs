@@ -4,13 +4,11 @@
 //! checks the arguments and cuts the batch into blocks.
 
 use cagd_core::check_degree;
-use cagd_reduce::{Operator, operator};
-
-use cagd_core::all_finite;
+use cagd_reduce::Operator;
 
 use super::kernel::{
     Overflow, PointMajorBlock, elevate_curve_major, elevate_point_major, elevation_terms,
-    reduce_curve_major, reduce_point_major,
+    operator_for, reduce_curve_major, reduce_point_major,
 };
 use super::layout::CagdBatchLayout;
 use super::threads::{block_count, block_range, run_blocks};
@@ -23,9 +21,6 @@ use crate::status::CagdStatus;
 /// The fewest curves worth a block of their own on another thread (below that, the cost of
 /// handing the block over is a sizeable part of the work).
 const MIN_CURVES_PER_BLOCK: usize = 512;
-
-/// The fewest doubles worth a block of the finiteness scan.
-const MIN_DOUBLES_PER_SCAN: usize = 1 << 14;
 
 /// What a batch does to every curve.
 #[derive(Clone, Copy)]
@@ -47,38 +42,27 @@ struct Batch<'a> {
     n_threads: usize,
 }
 
-/// Rejects a non-finite input coordinate (`CAGD_ERR_NON_FINITE`, naming curve, point and
-/// coordinate), scanning in blocks on the batch's threads.
-fn check_finite(b: &Batch<'_>) -> CResult<()> {
-    let len = b.input.len();
-    let blocks = block_count(b.n_threads, len, MIN_DOUBLES_PER_SCAN);
-    let found = run_blocks(b.n_threads, (0..blocks).collect(), |k| {
-        let (s, e) = block_range(k, blocks, len);
-        let part = &b.input[s..e];
-        if all_finite(part) {
-            return None;
-        }
-        part.iter().position(|x| !x.is_finite()).map(|p| s + p)
-    });
-    match found.into_iter().flatten().next() {
-        None => Ok(()),
-        Some(pos) => {
-            let (curve, point) = b.layout.curve_and_point(pos / b.dim, b.n_curves, b.n1);
-            Err(Failure::new(
-                CagdStatus::ERR_NON_FINITE,
-                format!(
-                    "points: curve {curve}, point {point}, coordinate {} = {} is not finite",
-                    pos % b.dim,
-                    b.input[pos]
-                ),
-            ))
-        }
-    }
+/// The failure for a non-finite input coordinate (naming curve, point and coordinate), if
+/// the input has one. Called only after a kernel found a non-finite output: every output
+/// of coordinate `k` of a curve is a sum over all its points with no term skipped (the
+/// reduction is dense; elevation sums each point into at least its own index), so a NaN
+/// or infinity in the input always shows in the output, and the input needs no scan of
+/// its own on the way to success.
+fn non_finite_input(b: &Batch<'_>) -> Option<Failure> {
+    let pos = b.input.iter().position(|x| !x.is_finite())?;
+    let (curve, point) = b.layout.curve_and_point(pos / b.dim, b.n_curves, b.n1);
+    Some(Failure::new(
+        CagdStatus::ERR_NON_FINITE,
+        format!(
+            "points: curve {curve}, point {point}, coordinate {} = {} is not finite",
+            pos % b.dim,
+            b.input[pos]
+        ),
+    ))
 }
 
 /// Runs the batch into `out` (`n_curves * m1 * dim` doubles, the input's layout).
 fn run(b: &Batch<'_>, op: BatchOp<'_>, out: &mut [f64]) -> CResult<()> {
-    check_finite(b)?;
     let blocks = block_count(b.n_threads, b.n_curves, MIN_CURVES_PER_BLOCK);
     let first = |k: usize| block_range(k, blocks, b.n_curves).0;
     let results = match b.layout {
@@ -116,7 +100,7 @@ fn run(b: &Batch<'_>, op: BatchOp<'_>, out: &mut [f64]) -> CResult<()> {
     };
     for (k, res) in results.into_iter().enumerate() {
         if let Err(Overflow { curve }) = res {
-            return Err(Overflow::failure(first(k) + curve));
+            return Err(non_finite_input(b).unwrap_or_else(|| Overflow::failure(first(k) + curve)));
         }
     }
     Ok(())
@@ -174,7 +158,8 @@ unsafe fn batch_in<'a>(
 ///   calling thread whatever the count. The result does not depend on it.
 /// - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
 ///   `n_curves * (target + 1) * dim` doubles hold the reduced curves in `layout`. May be
-///   NULL only when `out_cap == 0`.
+///   NULL only when `out_cap == 0`. Not written on failure, but for `CAGD_ERR_NON_FINITE`
+///   (contents then unspecified).
 /// - `out_cap` (in): capacity of `out` in doubles (0 asks the size).
 /// - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
 ///   `n_curves * (target + 1) * dim`.
@@ -190,9 +175,10 @@ unsafe fn batch_in<'a>(
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
 /// - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
 /// - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message names the
-///   curve, point and coordinate; nothing but `*out_needed` is written), or a reduced
-///   coordinate overflows to infinity (input near the largest double; `out` is then
-///   partly written).
+///   curve, point and coordinate), or a reduced coordinate overflows to infinity (input
+///   near the largest double). On this status the contents of `out` are unspecified (the
+///   input is not scanned before the kernel writes: non-finite input is found from the
+///   output); `*out_needed` is written.
 /// - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
 ///   written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
@@ -222,7 +208,7 @@ pub unsafe extern "C" fn cagd_bezier_reduce_batch(
         let dst = unsafe { slice_out(out, out_cap, out_needed, &OUT) }?;
         // SAFETY: as above.
         let mut b = unsafe { batch_in(points, n_curves, degree, dim, layout, n_threads) }?;
-        let op = operator(o.method()?, degree, o.target)?;
+        let op = operator_for(o.method()?, degree, o.target)?;
         b.m1 = o.target + 1;
         let per_out = checked_len(b.m1, dim, "(target + 1) * dim")?;
         let needed = checked_len(n_curves, per_out, "n_curves * (target + 1) * dim")?;
@@ -247,7 +233,8 @@ pub unsafe extern "C" fn cagd_bezier_reduce_batch(
 /// - `n_threads` (in): as for `cagd_bezier_reduce_batch` (0 or 1: the calling thread).
 /// - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
 ///   `n_curves * (n + r + 1) * dim` doubles hold the elevated curves in `layout`. May be
-///   NULL only when `out_cap == 0`.
+///   NULL only when `out_cap == 0`. Not written on failure, but for `CAGD_ERR_NON_FINITE`
+///   (contents then unspecified).
 /// - `out_cap` (in): capacity of `out` in doubles (0 asks the size).
 /// - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
 ///   `n_curves * (n + r + 1) * dim`.
@@ -260,9 +247,10 @@ pub unsafe extern "C" fn cagd_bezier_reduce_batch(
 ///   `CagdBatchLayout`, or a pointer is misaligned.
 /// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64` or `degree + r > 64`.
 /// - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message names the
-///   curve, point and coordinate; nothing but `*out_needed` is written), or an elevated
-///   coordinate overflows to infinity (input near the largest double; `out` is then
-///   partly written).
+///   curve, point and coordinate), or an elevated coordinate overflows to infinity (input
+///   near the largest double). On this status the contents of `out` are unspecified (the
+///   input is not scanned before the kernel writes: non-finite input is found from the
+///   output); `*out_needed` is written.
 /// - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
 ///   written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.

@@ -2,8 +2,7 @@
 //! single-curve apply of `cagd_bezier_reduce`, and the blocks of the batch calls in both
 //! layouts. Everything the batch internals of cagd-reduce offer is used here and nowhere
 //! else in the C layer (`reduce_batch` for curve-major reduction, `Operator::matrix` for
-//! point-major, through the `matrixmultiply` GEMM kernel that cagd-reduce's curve-major
-//! batch uses; cagd-core's `kernel::elevate` and `elevation_coefficient` for elevation),
+//! point-major, through the `matrixmultiply` GEMM kernel; cagd-core's `kernel::elevate` and `elevation_coefficient` for elevation),
 //! so that a faster cagd-reduce kernel is adopted by changing this file only.
 //!
 //! No kernel here computes anything the library does not: the point-major elevation loops
@@ -62,7 +61,7 @@ type LastOperator = Option<(Method, usize, usize, Arc<Operator>)>;
 ///
 /// # Errors
 /// As [`operator`].
-pub(super) fn operator_for(method: Method, n: usize, m: usize) -> cagd_core::Result<Arc<Operator>> {
+pub(crate) fn operator_for(method: Method, n: usize, m: usize) -> cagd_core::Result<Arc<Operator>> {
     thread_local! {
         static LAST: RefCell<LastOperator> = const { RefCell::new(None) };
     }
@@ -124,7 +123,7 @@ pub(super) fn elevate_one(
     output: &mut [f64],
 ) -> Result<(), Overflow> {
     elevate(input, dim, r, output);
-    if output.iter().all(|x| x.is_finite()) {
+    if all_finite(output) {
         Ok(())
     } else {
         Err(Overflow { curve: 0 })
@@ -179,7 +178,7 @@ pub(super) fn elevate_curve_major(
             }
         }
     }
-    if output.iter().all(|x| x.is_finite()) {
+    if all_finite(output) {
         Ok(())
     } else {
         Err(first_bad_curve(output, terms.len() * dim))
@@ -312,7 +311,7 @@ fn stride(x: usize) -> isize {
 /// GEMM `Q = A P` of the `(m + 1) x (n + 1)` operator and the block's `(n + 1) x width`
 /// columns of the caller's rows (row stride `row_len`, no copy), written straight into
 /// the caller's output rows, through the `matrixmultiply` kernel (the one under
-/// cagd-reduce's curve-major GEMM; called directly because nalgebra has no kernel route
+/// nalgebra's `gemm`; called directly because nalgebra has no kernel route
 /// for a side below 6). Sums in the kernel's order: equal to the curve-major result up to
 /// rounding. The kernel multiplies every entry (no zero skipping), so an overflow shows in
 /// the output.

@@ -30,6 +30,7 @@ mod threads;
 
 pub use batch::{cagd_bezier_elevate_batch, cagd_bezier_reduce_batch};
 pub use elevate::cagd_bezier_elevate;
+pub(crate) use kernel::operator_for;
 pub use layout::CagdBatchLayout;
 pub use reduce::cagd_bezier_reduce;
 pub use report::CagdBezierReport;

@@ -467,3 +467,77 @@ fn overflow_is_non_finite_with_the_curve() {
         );
     }
 }
+
+#[test]
+fn non_finite_input_is_found_from_the_output() {
+    // No scan precedes the kernels: a NaN or infinity anywhere (first, middle and last
+    // curve; a zero-weight corner of the operator's support included) must still come
+    // back as CAGD_ERR_NON_FINITE naming curve, point and coordinate, in both layouts,
+    // on 1 and 2 threads, for the reduction and the elevation, in dimensions 1 and 3.
+    let (k, n) = (2500usize, 5usize);
+    let o = CagdReduceOptions {
+        target: 3,
+        r: 0,
+        p: 0,
+        ..CagdReduceOptions::default()
+    };
+    for dim in [1usize, 3] {
+        for (curve, point, coord) in [(0, 0, 0), (1234, 3, dim - 1), (k - 1, n, 0)] {
+            for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+                let mut cm = random(k * (n + 1) * dim, 11);
+                cm[(curve * (n + 1) + point) * dim + coord] = bad;
+                let pm = transpose(&cm, k, n + 1, dim, false);
+                for (layout, input) in [(0, &cm), (1, &pm)] {
+                    for threads in [1usize, 2] {
+                        for reduce in [true, false] {
+                            let mut out = vec![0.0; k * (n + 2) * dim];
+                            let mut needed = 0;
+                            // SAFETY: buffers of the documented sizes.
+                            let s = unsafe {
+                                if reduce {
+                                    cagd_bezier_reduce_batch(
+                                        input.as_ptr(),
+                                        k,
+                                        n,
+                                        dim,
+                                        layout,
+                                        &o,
+                                        threads,
+                                        out.as_mut_ptr(),
+                                        out.len(),
+                                        &mut needed,
+                                    )
+                                } else {
+                                    cagd_bezier_elevate_batch(
+                                        input.as_ptr(),
+                                        k,
+                                        n,
+                                        dim,
+                                        layout,
+                                        1,
+                                        threads,
+                                        out.as_mut_ptr(),
+                                        out.len(),
+                                        &mut needed,
+                                    )
+                                }
+                            };
+                            let what = format!(
+                                "dim {dim} {bad} at ({curve},{point},{coord}) layout {layout} \
+                                 threads {threads} reduce {reduce}"
+                            );
+                            assert_eq!(s, CagdStatus::ERR_NON_FINITE, "{what}");
+                            let msg = crate::last_error_string();
+                            assert!(
+                                msg.contains(&format!(
+                                    "curve {curve}, point {point}, coordinate {coord}"
+                                )),
+                                "{what}: {msg}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+}

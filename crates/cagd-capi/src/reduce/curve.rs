@@ -2,14 +2,15 @@
 //! of one degree through one cached operator (`cagd_curve_reduce_batch`, and
 //! `cagd_curve_reduce_batch_bounded` with per-curve certified bounds).
 
-use cagd_core::{Error, check_points};
-use cagd_reduce::{BoundLevel, operator, reduce_batch, reduce_batch_with_bounds, reduce_with};
+use cagd_core::{Error, all_finite};
+use cagd_reduce::{BoundLevel, reduce_batch, reduce_batch_with_bounds, reduce_with};
 
 use crate::boundary::{
     CResult, Failure, OUT, boundary, checked_len, disjoint, handle_ref, into_handle, nonnull,
     out_ref, points_in, slice_out,
 };
 use crate::curve::CagdCurve;
+use crate::flat::operator_for;
 use crate::options::{CagdReduceOptions, read_options};
 use crate::report::{CagdReport, ReportKind};
 use crate::status::CagdStatus;
@@ -90,9 +91,10 @@ pub unsafe extern "C" fn cagd_curve_reduce(
 
 /// [`cagd_curve_reduce_batch`] with, optionally, a certified error bound per curve:
 /// reduces `n_curves` polynomial curves of one degree `n` to degree `opts->target` with
-/// one cached operator through a GEMM kernel, no per-curve allocation. With
-/// `bounds_out == NULL` it is exactly `cagd_curve_reduce_batch`; a bound costs two more
-/// small GEMMs (the error curve's coefficients and its values at the bound level's nodes;
+/// one cached operator through cagd-reduce's batch kernel (several curves per vector),
+/// no per-curve allocation. With `bounds_out == NULL` it is exactly
+/// `cagd_curve_reduce_batch`; a bound costs two more small matrix products in the same
+/// pass (the error curve's coefficients and its values at the bound level's nodes;
 /// the error curve is seed 000 §14.4.3's, the node bound goes beyond the seed).
 /// Only `opts->method`, `target`, `r`, `p`, `l1`, `l2` and (with `bounds_out`)
 /// `bound_level` are used. Rational curves: pass their homogeneous points
@@ -109,8 +111,8 @@ pub unsafe extern "C" fn cagd_curve_reduce(
 /// - `opts` (in): the options. Borrowed for the call.
 /// - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
 ///   `n_curves * (target + 1) * dim` doubles hold the reduced curves in the same layout.
-///   May be NULL only when `out_cap == 0`. Not written on failure (but for the overflow
-///   of `CAGD_ERR_NON_FINITE`).
+///   May be NULL only when `out_cap == 0`. Not written on failure, but for
+///   `CAGD_ERR_NON_FINITE` (contents then unspecified).
 /// - `out_cap` (in): capacity of `out` in doubles.
 /// - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
 ///   `n_curves * (target + 1) * dim`.
@@ -119,7 +121,7 @@ pub unsafe extern "C" fn cagd_curve_reduce(
 ///   `max_t |P(t) - Q(t)|` (model units, Euclidean norm of the `dim` coordinates, the
 ///   rounding of the reduced points included; `+inf` only if the computation overflowed)
 ///   at `opts->bound_level` (`CAGD_BOUND_FAST` or `CAGD_BOUND_TIGHT`). Not written on
-///   failure (but for the overflow of `CAGD_ERR_NON_FINITE`).
+///   failure, but for `CAGD_ERR_NON_FINITE` (contents then unspecified).
 ///
 /// Returns:
 /// - `CAGD_OK`: the reduced curves are in `out`.
@@ -133,9 +135,12 @@ pub unsafe extern "C" fn cagd_curve_reduce(
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
 /// - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
 /// - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message gives
-///   the point index counted over the whole batch; nothing but `*out_needed` is
-///   written), or a reduced coordinate overflows to infinity (input near the largest
-///   double; `out` and `bounds_out` are then partly written).
+///   the point index counted over the whole batch), or a reduced coordinate overflows to
+///   infinity (input near the largest double). On this status the contents of `out` and
+///   `bounds_out` are unspecified (the input is not scanned before the kernel writes:
+///   non-finite input is found from the output, where it always shows, every reduced
+///   coordinate being a sum over all points of its curve with no term skipped);
+///   `*out_needed` is written.
 /// - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
 ///   written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
@@ -167,13 +172,9 @@ pub unsafe extern "C" fn cagd_curve_reduce_batch_bounded(
         let n_points = checked_len(n_curves, degree + 1, "n_curves * (degree + 1)")?;
         // SAFETY: as above.
         let input = unsafe { points_in(points, n_points, dim, "points") }?;
-        let op = operator(o.method()?, degree, o.target)?;
+        let op = operator_for(o.method()?, degree, o.target)?;
         let per_out = checked_len(o.target + 1, dim, "(target + 1) * dim")?;
         let needed = checked_len(n_curves, per_out, "n_curves * (target + 1) * dim")?;
-        // Validate before writing: the caller's buffer receives output only on success.
-        if n_curves > 0 {
-            check_points(input, dim)?;
-        }
         let level = if bounds_out.is_null() {
             None
         } else {
@@ -197,9 +198,11 @@ pub unsafe extern "C" fn cagd_curve_reduce_batch_bounded(
             }
         };
         result.map_err(|e| match e {
-            // The input was checked finite above: a reduced coordinate overflowed (input
-            // near the largest double; found by the C ABI fuzz harness, where this was
-            // reported as CAGD_ERR_PANIC).
+            // Non-finite input is found from the output (no scan before the kernel writes);
+            // with finite input, a reduced coordinate overflowed (input near the largest
+            // double; found by the C ABI fuzz harness, where this was reported as
+            // CAGD_ERR_PANIC).
+            Error::NonFinite { .. } if !all_finite(input) => e.into(),
             Error::NonFinite { .. } => Failure::new(
                 CagdStatus::ERR_NON_FINITE,
                 format!(
@@ -218,8 +221,8 @@ pub unsafe extern "C" fn cagd_curve_reduce_batch_bounded(
 }
 
 /// Reduces `n_curves` polynomial curves of one degree `n` to degree `opts->target` with
-/// one cached operator through a GEMM kernel, no per-curve allocation — the fast path for
-/// many curves. The signature of the first C ABI, kept: per-curve certified bounds are
+/// one cached operator through cagd-reduce's batch kernel (several curves per vector), no
+/// per-curve allocation — the fast path for many curves. The signature of the first C ABI, kept: per-curve certified bounds are
 /// [`cagd_curve_reduce_batch_bounded`]'s `bounds_out`. Only `opts->method`, `target`, `r`,
 /// `p`, `l1` and `l2` are used. Rational curves: pass their homogeneous points
 /// `(w_i P_i, w_i)` as polynomial curves of dimension `dim + 1`.
@@ -234,8 +237,8 @@ pub unsafe extern "C" fn cagd_curve_reduce_batch_bounded(
 /// - `opts` (in): the options. Borrowed for the call.
 /// - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
 ///   `n_curves * (target + 1) * dim` doubles hold the reduced curves in the same layout.
-///   May be NULL only when `out_cap == 0`. Not written on failure (but for the overflow
-///   of `CAGD_ERR_NON_FINITE`).
+///   May be NULL only when `out_cap == 0`. Not written on failure, but for
+///   `CAGD_ERR_NON_FINITE` (contents then unspecified).
 /// - `out_cap` (in): capacity of `out` in doubles.
 /// - `out_needed` (out): on `CAGD_OK` and on `CAGD_ERR_BUFFER_TOO_SMALL`,
 ///   `n_curves * (target + 1) * dim`.
@@ -250,9 +253,10 @@ pub unsafe extern "C" fn cagd_curve_reduce_batch_bounded(
 /// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= degree` or below the method's minimum.
 /// - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target` or `r`, `p` below -1.
-/// - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (nothing but
-///   `*out_needed` is written), or a reduced coordinate overflows to infinity (`out` is
-///   then partly written).
+/// - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite, or a reduced
+///   coordinate overflows to infinity (input near the largest double). On this status the
+///   contents of `out` are unspecified (non-finite input is found from the output, not by
+///   a scan before the kernel writes); `*out_needed` is written.
 /// - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap` is below the formula; only `*out_needed` is
 ///   written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
@@ -304,4 +308,83 @@ unsafe fn bounds_slice<'a>(ptr: *mut f64, n: usize, out: &[f64]) -> CResult<&'a 
     }
     // SAFETY: the caller's contract; non-NULL, aligned, not overlapping `out`.
     Ok(unsafe { std::slice::from_raw_parts_mut(ptr, n) })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn non_finite_input_is_found_from_the_output() {
+        // No scan precedes the kernel: NaN / infinity anywhere comes back as
+        // CAGD_ERR_NON_FINITE naming the batch point, with and without bounds; finite input
+        // near the largest double that overflows is named as an overflow.
+        let (k, n, dim) = (700usize, 7usize, 3usize);
+        let o = CagdReduceOptions {
+            target: 4,
+            ..CagdReduceOptions::default()
+        };
+        let base: Vec<f64> = (0..k * (n + 1) * dim)
+            .map(|i| ((i * 7919 % 1001) as f64 - 500.0) / 97.0)
+            .collect();
+        for (curve, point, coord) in [(0usize, 0usize, 0usize), (333, 5, 2), (k - 1, n, 1)] {
+            for bad in [f64::NAN, f64::INFINITY] {
+                let mut input = base.clone();
+                let idx = curve * (n + 1) + point;
+                input[idx * dim + coord] = bad;
+                for with_bounds in [false, true] {
+                    let mut out = vec![0.0; k * (o.target + 1) * dim];
+                    let mut bounds = vec![0.0; k];
+                    let mut needed = 0;
+                    let bp = if with_bounds {
+                        bounds.as_mut_ptr()
+                    } else {
+                        std::ptr::null_mut()
+                    };
+                    // SAFETY: buffers of the documented sizes.
+                    let s = unsafe {
+                        cagd_curve_reduce_batch_bounded(
+                            input.as_ptr(),
+                            k,
+                            n,
+                            dim,
+                            &o,
+                            out.as_mut_ptr(),
+                            out.len(),
+                            &mut needed,
+                            bp,
+                        )
+                    };
+                    assert_eq!(s, CagdStatus::ERR_NON_FINITE);
+                    assert_eq!(needed, out.len());
+                    let msg = crate::last_error_string();
+                    assert!(msg.contains(&format!("[{idx}][{coord}]")), "{msg}");
+                }
+            }
+        }
+        let mut input = base;
+        for (j, x) in input[(n + 1) * dim..2 * (n + 1) * dim]
+            .iter_mut()
+            .enumerate()
+        {
+            *x = if j % 2 == 0 { f64::MAX } else { -f64::MAX };
+        }
+        let mut out = vec![0.0; k * (o.target + 1) * dim];
+        let mut needed = 0;
+        // SAFETY: as above.
+        let s = unsafe {
+            cagd_curve_reduce_batch(
+                input.as_ptr(),
+                k,
+                n,
+                dim,
+                &o,
+                out.as_mut_ptr(),
+                out.len(),
+                &mut needed,
+            )
+        };
+        assert_eq!(s, CagdStatus::ERR_NON_FINITE);
+        assert!(crate::last_error_string().contains("overflows"));
+    }
 }

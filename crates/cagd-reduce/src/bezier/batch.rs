@@ -1,13 +1,16 @@
 //! The batch entry points: one operator applied to many curves stored contiguously through
-//! the GEMM data path of `gemm.rs` ([`reduce_batch`]), optionally with a certified bound
-//! per curve from two more small GEMMs ([`reduce_batch_with_bounds`]); [`Operator::apply_into`]
+//! the data path of `gemm.rs` and `lanes.rs` ([`reduce_batch`]), optionally with a certified
+//! bound per curve from two more small products in the same pass
+//! ([`reduce_batch_with_bounds`]); [`Operator::apply_into`]
 //! and [`Operator::apply`] (one curve) are defined here, on top of it, so that `operator/`
 //! does not depend on this module.
 
-use cagd_core::all_finite;
 use cagd_core::{Error, Result};
 
-use super::bound::{BoundLevel, max_row_norm, safe_range};
+use cagd_core::all_finite;
+
+use super::bound::{BoundLevel, safe_amax};
+use super::lanes::{self, BoundMaps, CurveNorms};
 use super::operator::Operator;
 
 impl Operator {
@@ -41,11 +44,12 @@ impl Operator {
 /// `output` receives `n_curves * (m + 1) * dim` doubles in the same layout. `n_curves` is
 /// `input.len() / ((n + 1) * dim)`.
 ///
-/// Data path: blocks of curves (about 64 KiB of input each) through a GEMM kernel
-/// (nalgebra's `gemm` = the `matrixmultiply` crate) over a strided point-major view of
-/// the caller's array, no transposing copy and no allocation per curve (see the crate's
-/// benchmark notes for the figures). The results are the same sums as the definition up
-/// to the order of the additions.
+/// Data path: blocks of curves (about 64 KiB of input each) through the curves-in-lanes
+/// kernel (`lanes.rs`: several curves per vector, AVX-512F / AVX2 with FMA when the CPU
+/// has them), no allocation per curve (see the crate's benchmark notes for the figures).
+/// The results are the definition's sums in its order, with fused multiply-adds where the
+/// CPU has them (so equal to the definition up to rounding), and a curve gets the same
+/// bits wherever it sits in the batch.
 ///
 /// # Errors
 /// [`Error::ZeroDimension`]; [`Error::LengthMismatch`] when `input.len()` is not a multiple
@@ -53,19 +57,21 @@ impl Operator {
 /// (index = point index counted over the whole batch) when an input coordinate is NaN or
 /// infinite — `output` is then unspecified.
 pub fn reduce_batch(op: &Operator, input: &[f64], dim: usize, output: &mut [f64]) -> Result<()> {
-    let n_curves = check_batch(op, input, dim, output)?;
-    let _ = n_curves;
-    op.map().apply(input, dim, output);
-    check_output(input, dim, output)
+    check_batch(op, input, dim, output)?;
+    if op.map().apply_checked(input, dim, output) {
+        return Ok(());
+    }
+    Err(non_finite(input, dim, output))
 }
 
 /// [`reduce_batch`] plus, per curve `c`, a certified upper bound `bounds[c]` of
 /// `max_t ||P_c(t) - Q_c(t)||` (Euclidean, in the space of the given points, the `f64`
 /// rounding of `Q_c` included) at `level` (see [`BoundLevel`]; the number
 /// [`Operator::certified_bound`] gives for that curve up to the order of its sums). The
-/// bound is two more small GEMMs per block of curves (the error curve's `n - m`
-/// coefficient points, then its values at the level's nodes) and one pass over the
-/// values; curves with coordinates beyond `2^±450` take the scaled per-curve route. A
+/// bound is two more small products in the same pass of the kernel (the error curve's
+/// `n - m` coefficient points, then its values at the level's nodes, their largest norm
+/// taken in registers); curves with coordinates beyond `2^±450` take the scaled per-curve
+/// route. A
 /// bound that overflows is `+inf`.
 ///
 /// # Errors
@@ -97,36 +103,44 @@ pub fn reduce_batch_with_bounds(
     };
     let map = op.map();
     let basis = op.error_basis();
-    let nodes = bm.samples.rows();
+    let maps = BoundMaps {
+        a: map.transposed(),
+        g: basis.coef.transposed(),
+        v: bm.samples.transposed(),
+    };
     let (per_in, per_out) = (map.cols() * dim, map.rows() * dim);
-    let (per_coef, per_value) = (basis.rank * dim, nodes * dim);
     let block = map.block_curves(dim);
-    let mut coefs = vec![0.0; block.min(n_curves) * per_coef];
-    let mut values = vec![0.0; block.min(n_curves) * per_value];
+    let mut norms = vec![CurveNorms::default(); block.min(n_curves)];
+    let mut scratch = Vec::new();
+    let mut finite = true;
     for ((inp, out), bnd) in input
         .chunks(block * per_in)
         .zip(output.chunks_mut(block * per_out))
         .zip(bounds.chunks_mut(block))
     {
-        map.apply(inp, dim, out);
-        let cs = &mut coefs[..bnd.len() * per_coef];
-        let vs = &mut values[..bnd.len() * per_value];
-        if per_coef > 0 {
-            basis.coef.apply(inp, dim, cs);
-            bm.samples.apply(cs, dim, vs);
-        }
-        for (i, (p, b)) in inp.chunks_exact(per_in).zip(bnd.iter_mut()).enumerate() {
-            let smax = max_row_norm(&vs[i * per_value..(i + 1) * per_value], dim);
-            *b = op.curve_bound(bm, p, dim, smax);
-            if !safe_range(p) {
+        let nrm = &mut norms[..bnd.len()];
+        lanes::apply_with_norms(&maps, dim, inp, out, nrm, &mut scratch);
+        finite &= all_finite(out);
+        for (((p, q), b), cn) in inp
+            .chunks_exact(per_in)
+            .zip(out.chunks_exact(per_out))
+            .zip(bnd.iter_mut())
+            .zip(nrm.iter())
+        {
+            *b = if safe_amax(cn.amax) {
+                op.curve_bound_norms(bm, p, dim, cn.smax, cn.pmax)
+            } else {
                 // Norms could overflow or underflow: the scaled per-curve route.
-                *b = op.one_bound(bm, p, dim);
-            }
-            let q = &out[i * per_out..(i + 1) * per_out];
-            *b = op.with_reduced(bm, p, q, dim, *b);
+                op.one_bound(bm, p, dim)
+            };
+            *b = op.with_reduced_norms(bm, (p, q), dim, *b, cn.pmax, cn.amax);
         }
     }
-    check_output(input, dim, output)
+    if finite {
+        Ok(())
+    } else {
+        Err(non_finite(input, dim, output))
+    }
 }
 
 /// Checks the lengths of a batch; returns the number of curves.
@@ -154,25 +168,24 @@ fn check_batch(op: &Operator, input: &[f64], dim: usize, output: &[f64]) -> Resu
     Ok(n_curves)
 }
 
-/// Every output is a dense sum over all inputs of its curve (zeros included), so a NaN or
-/// infinity anywhere in the input makes an output non-finite: one pass over the output
-/// detects it, and only then is the input searched for the culprit.
-fn check_output(input: &[f64], dim: usize, output: &[f64]) -> Result<()> {
-    if all_finite(output) {
-        return Ok(());
-    }
+/// The error for a batch with a non-finite output (the kernel checks each block of output
+/// while it is in cache; every output of coordinate `k` is a dense sum over all points of
+/// its curve, zeros included, so a NaN or infinity anywhere in the input shows there, and
+/// only then is the input searched for the culprit): the first non-finite input
+/// coordinate, or (finite input overflowing, only for `|x|` near `f64::MAX`) the first
+/// non-finite output coordinate.
+fn non_finite(input: &[f64], dim: usize, output: &[f64]) -> Error {
     if let Some(pos) = input.iter().position(|x| !x.is_finite()) {
-        return Err(Error::NonFinite {
+        return Error::NonFinite {
             index: pos / dim,
             coord: pos % dim,
             value: input[pos],
-        });
+        };
     }
-    // Finite input can overflow to infinity only for |x| near f64::MAX.
     let pos = output.iter().position(|x| !x.is_finite()).unwrap_or(0);
-    Err(Error::NonFinite {
+    Error::NonFinite {
         index: pos / dim,
         coord: pos % dim,
         value: output[pos],
-    })
+    }
 }

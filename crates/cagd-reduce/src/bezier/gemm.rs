@@ -1,40 +1,30 @@
-//! One linear map of control points applied to many curves stored curve-major, through a
-//! real GEMM kernel (nalgebra's `gemm`, which hands dynamic products with every side above
-//! 5 to the `matrixmultiply` crate, packing and register-blocking included). Goes beyond
-//! the seed: this is the data path under [`crate::reduce_batch`] and the batch bounds.
+//! One linear map of control points applied to many curves stored curve-major. Goes
+//! beyond the seed: this is the data path under [`crate::reduce_batch`] and the batch
+//! bounds.
 //!
-//! The caller's array is viewed, never transposed: coordinate `k` of a block of curves is
-//! the `(n+1) x curves` matrix with row stride `dim` and column stride `(n+1) dim` inside
-//! the caller's buffer (the point-major view), so `Q_k = A P_k` is one strided GEMM per
-//! coordinate and block, written straight into the output. When the map is too small for
-//! the kernel in that form (fewer than 6 rows or columns: `(4,3)`, `(5,4)`), the block is
-//! instead one GEMM `X K` of the curves-by-`(n+1) dim` matrix `X` (contiguous rows) with the
-//! Kronecker expansion `K = (A ⊗ I_dim)^T`; below that (a single small curve, or a map that
-//! is small even expanded) a plain unrolled loop is faster than any kernel call.
+//! The caller's array is cut into blocks of curves (about 64 KiB of input each, so that a
+//! block's input and output stay in L2 while the block is checked for non-finite values),
+//! and each block goes through the curves-in-lanes kernel of `lanes.rs`: exactly the
+//! `(m+1)(n+1) dim` multiply-adds of the definition per curve, four curves per vector,
+//! AVX2 + FMA when the CPU has them. It replaced nalgebra's `gemm` (the `matrixmultiply`
+//! kernel) over a strided point-major view per coordinate and, for maps with a side below
+//! 6, over the Kronecker expansion `(A ⊗ I_dim)^T` (`dim` times the flops): 1.05–3.25× a
+//! point-major GEMM of the same operator, against 1.0–1.9× now (`benches/README.md`).
 //!
-//! Every output is a dense sum over all inputs with the zeros of the map included (neither
-//! route skips zeros), so a NaN or infinity anywhere in a curve reaches its outputs; the
-//! callers detect non-finite input from the output alone.
+//! Every output of coordinate `k` is a dense sum over all points of its curve with the
+//! zeros of the map included, so a NaN or infinity anywhere in a curve reaches its outputs;
+//! the callers detect non-finite input from the output alone.
 
-use std::sync::OnceLock;
+use cagd_core::all_finite;
 
-use nalgebra::{DMatrixView, DMatrixViewMut};
+use super::lanes;
 
-/// Smallest side (rows, columns, curves in a block) for which nalgebra calls its GEMM
-/// kernel rather than a column-by-column `gemv` (nalgebra 0.35 `SMALL_DIM` = 5, exclusive).
-/// Every `gemm` call below keeps all four sides at or above it, and must: nalgebra 0.35's
-/// `gemv` fallback (`axcpy_uninit`) iterates over the *slice* length of a strided vector
-/// with the stride applied again, reading and writing out of bounds on views whose row
-/// stride is not 1 (it crashed the benchmark's point-major floor for a 4-row operator).
-/// If nalgebra is upgraded, re-check its threshold.
-const KERNEL_MIN: usize = 6;
+/// Fewest curves per block (one group of the lanes kernel).
+const MIN_BLOCK: usize = 4;
 
 /// Target size in bytes of the input of one block of curves: the block's input and output
-/// (and the packed panels of the kernel) stay in L2 while the coordinates are swept.
+/// stay in L2 between the kernel and the finiteness check.
 const BLOCK_BYTES: usize = 64 * 1024;
-
-/// Largest `dim` whose Kronecker expansion is cached in the map.
-const KRON_DIMS: usize = 4;
 
 /// A row-major `rows x cols` matrix applied to curves of `cols` points, giving curves of
 /// `rows` points: `out_i = sum_j a_ij in_j` per coordinate.
@@ -43,20 +33,21 @@ pub(crate) struct LinearMap {
     rows: usize,
     cols: usize,
     a: Vec<f64>,
-    /// `K = (A ⊗ I_dim)^T`, row-major `(cols dim) x (rows dim)`, built on first use per dim.
-    kron: [OnceLock<Vec<f64>>; KRON_DIMS],
+    /// `A^T`, row-major `cols x rows` (the coefficients of one input point, contiguous).
+    at: Vec<f64>,
 }
 
 impl LinearMap {
     /// The map with row-major matrix `a` of `rows x cols`.
     pub(crate) fn new(rows: usize, cols: usize, a: Vec<f64>) -> Self {
         debug_assert_eq!(a.len(), rows * cols);
-        Self {
-            rows,
-            cols,
-            a,
-            kron: Default::default(),
+        let mut at = vec![0.0; rows * cols];
+        for (i, row) in a.chunks_exact(cols.max(1)).enumerate() {
+            for (j, x) in row.iter().enumerate() {
+                at[j * rows + i] = *x;
+            }
         }
+        Self { rows, cols, a, at }
     }
 
     /// Number of output points per curve.
@@ -74,87 +65,48 @@ impl LinearMap {
         &self.a
     }
 
+    /// The transposed matrix (`cols x rows`, row-major) and the number of rows: the form
+    /// the lanes kernel takes.
+    pub(crate) fn transposed(&self) -> (&[f64], usize) {
+        (&self.at, self.rows)
+    }
+
     /// Curves per block for points of `dim` coordinates (at least one).
     pub(crate) fn block_curves(&self, dim: usize) -> usize {
-        (BLOCK_BYTES / (8 * self.cols * dim)).max(KERNEL_MIN)
+        (BLOCK_BYTES / (8 * self.cols * dim).max(1)).max(MIN_BLOCK)
     }
 
     /// Applies the map to every curve of `input` (`curves * cols * dim` doubles,
     /// curve-major, row-major inside a curve) writing `curves * rows * dim` doubles to
-    /// `output` in the same layout. Lengths are the caller's invariant (checked in debug).
-    /// No allocation except the kernel's packing buffers and, once per map and `dim <= 4`,
-    /// the Kronecker expansion.
-    pub(crate) fn apply(&self, input: &[f64], dim: usize, output: &mut [f64]) {
+    /// `output` in the same layout, checking each block's output for a non-finite value
+    /// while it is in cache; returns whether every output is finite (all are written
+    /// either way). Lengths are the caller's invariant (checked in debug). One allocation
+    /// per call (the kernel's scratch of `(rows + cols) dim` vectors).
+    pub(crate) fn apply_checked(&self, input: &[f64], dim: usize, output: &mut [f64]) -> bool {
         let (per_in, per_out) = (self.cols * dim, self.rows * dim);
+        if per_in == 0 || per_out == 0 {
+            output.fill(0.0);
+            return true;
+        }
         debug_assert_eq!(input.len() % per_in, 0);
         let curves = input.len() / per_in;
         debug_assert_eq!(output.len(), curves * per_out);
         let block = self.block_curves(dim);
+        let mut scratch = Vec::new();
+        let mut finite = true;
         for (inp, out) in input
             .chunks(block * per_in)
             .zip(output.chunks_mut(block * per_out))
         {
-            self.apply_block(inp, dim, out);
-        }
-    }
-
-    /// One block (no further splitting): chooses the route described in the module docs.
-    fn apply_block(&self, input: &[f64], dim: usize, output: &mut [f64]) {
-        let curves = input.len() / (self.cols * dim);
-        if curves < KERNEL_MIN {
-            return self.apply_loop(input, dim, output);
-        }
-        if self.rows >= KERNEL_MIN && self.cols >= KERNEL_MIN {
-            return self.apply_strided(input, dim, curves, output);
-        }
-        if dim <= KRON_DIMS && self.rows * dim >= KERNEL_MIN && self.cols * dim >= KERNEL_MIN {
-            return self.apply_kron(input, dim, curves, output);
-        }
-        self.apply_loop(input, dim, output)
-    }
-
-    /// One strided GEMM per coordinate over the point-major view of the block.
-    fn apply_strided(&self, input: &[f64], dim: usize, curves: usize, output: &mut [f64]) {
-        let (r, c) = (self.rows, self.cols);
-        let a = DMatrixView::from_slice_with_strides(&self.a, r, c, c, 1);
-        for k in 0..dim {
-            let p = DMatrixView::from_slice_with_strides(&input[k..], c, curves, dim, c * dim);
-            let mut q = DMatrixViewMut::from_slice_with_strides_mut(
-                &mut output[k..],
-                r,
-                curves,
-                dim,
-                r * dim,
-            );
-            q.gemm(1.0, &a, &p, 0.0);
-        }
-    }
-
-    /// One GEMM `X K` with the Kronecker expansion of the map.
-    fn apply_kron(&self, input: &[f64], dim: usize, curves: usize, output: &mut [f64]) {
-        let (ci, ro) = (self.cols * dim, self.rows * dim);
-        let kron = self.kron[dim - 1].get_or_init(|| self.kronecker(dim));
-        let k = DMatrixView::from_slice_with_strides(kron, ci, ro, ro, 1);
-        let x = DMatrixView::from_slice_with_strides(input, curves, ci, ci, 1);
-        let mut y = DMatrixViewMut::from_slice_with_strides_mut(output, curves, ro, ro, 1);
-        y.gemm(1.0, &x, &k, 0.0);
-    }
-
-    /// `K[(j dim + k), (i dim + k)] = a_ij`, row-major `(cols dim) x (rows dim)`.
-    fn kronecker(&self, dim: usize) -> Vec<f64> {
-        let ro = self.rows * dim;
-        let mut kron = vec![0.0; self.cols * dim * ro];
-        for i in 0..self.rows {
-            for j in 0..self.cols {
-                for k in 0..dim {
-                    kron[(j * dim + k) * ro + i * dim + k] = self.a[i * self.cols + j];
-                }
+            lanes::apply(&self.at, self.rows, dim, inp, out, &mut scratch);
+            if finite {
+                finite = all_finite(out);
             }
         }
-        kron
+        finite
     }
 
-    /// The plain loop (small blocks): unrolled for `dim <= 4`.
+    /// The plain loop for one curve (the bound of a single curve): unrolled for `dim <= 4`.
     pub(crate) fn apply_loop(&self, input: &[f64], dim: usize, output: &mut [f64]) {
         match dim {
             1 => loop_fixed::<1>(&self.a, self.cols, input, output),
@@ -229,7 +181,6 @@ fn loop_dyn(a: &[f64], cols: usize, rows: usize, dim: usize, input: &[f64], outp
 #[cfg(test)]
 mod tests {
     use super::*;
-    use cagd_core::all_finite;
 
     /// The reference: the definition, curve by curve, coordinate by coordinate.
     fn reference(a: &[f64], rows: usize, cols: usize, input: &[f64], dim: usize) -> Vec<f64> {
@@ -248,10 +199,9 @@ mod tests {
     }
 
     #[test]
-    fn every_route_equals_the_definition() {
-        // Shapes hitting the strided route (rows, cols >= 6), the Kronecker route (small
-        // map, dim >= 2), and the loop (dim 1 small map; dim 5; fewer than 6 curves); curve
-        // counts that do and do not fill whole blocks.
+    fn apply_and_the_loop_equal_the_definition() {
+        // Small and large maps, dimensions 1-5, curve counts that do and do not fill whole
+        // groups of four and whole blocks; the one-curve loop on the first curve.
         for (rows, cols) in [(4, 5), (5, 6), (6, 11), (11, 16), (16, 31), (2, 3)] {
             let a: Vec<f64> = (0..rows * cols)
                 .map(|i| ((i * 37 % 23) as f64 - 11.0) / 7.0)
@@ -263,8 +213,13 @@ mod tests {
                         .map(|i| ((i * 7919 % 1001) as f64 - 500.0) / 97.0)
                         .collect();
                     let mut out = vec![f64::NAN; curves * rows * dim];
-                    map.apply(&input, dim, &mut out);
+                    assert!(map.apply_checked(&input, dim, &mut out));
                     let want = reference(&a, rows, cols, &input, dim);
+                    let mut one = vec![f64::NAN; rows * dim];
+                    map.apply_loop(&input[..cols * dim], dim, &mut one);
+                    for (g, w) in one.iter().zip(&want) {
+                        assert!((g - w).abs() <= 1e-13 * (1.0 + w.abs()) * cols as f64);
+                    }
                     for (g, w) in out.iter().zip(&want) {
                         // Same sums in another order: a few ulps of the sum of |terms|.
                         assert!(
@@ -287,15 +242,23 @@ mod tests {
         }
         let map = LinearMap::new(rows, cols, a);
         for dim in [1, 3] {
-            let curves = 50;
-            let mut input = vec![0.5; curves * cols * dim];
-            input[(17 * cols + 3) * dim] = f64::NAN;
+            // In the first and in a later block (the check stops at neither).
+            let curves = map.block_curves(dim) * 3 + 1;
+            for bad in [17, curves - 1] {
+                let mut input = vec![0.5; curves * cols * dim];
+                input[(bad * cols + 3) * dim] = f64::NAN;
+                let mut out = vec![0.0; curves * rows * dim];
+                assert!(!map.apply_checked(&input, dim, &mut out), "dim {dim}");
+                assert!(!all_finite(&out), "dim {dim}");
+                input[(bad * cols + 3) * dim] = 0.5;
+                assert!(map.apply_checked(&input, dim, &mut out));
+                assert!(all_finite(&out));
+            }
+            // Finite input overflowing to infinity is caught the same way.
+            let mut input = vec![f64::MAX; curves * cols * dim];
+            input[0] = 0.5;
             let mut out = vec![0.0; curves * rows * dim];
-            map.apply(&input, dim, &mut out);
-            assert!(!all_finite(&out), "dim {dim}");
-            input[(17 * cols + 3) * dim] = 0.5;
-            map.apply(&input, dim, &mut out);
-            assert!(all_finite(&out));
+            assert!(!map.apply_checked(&input, dim, &mut out));
         }
     }
 }

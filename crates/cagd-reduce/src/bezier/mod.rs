@@ -11,6 +11,7 @@ mod bound;
 mod exact_degree;
 mod g1;
 mod gemm;
+mod lanes;
 mod measure;
 mod method;
 mod operator;

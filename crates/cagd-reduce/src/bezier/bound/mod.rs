@@ -9,7 +9,7 @@ mod nodes;
 
 use cagd_core::Result;
 
-pub(crate) use nodes::{max_row_norm, max_value_norm};
+pub(crate) use nodes::max_value_norm;
 
 use super::operator::{BoundMap, Operator, check_len, hull_bound, max_norm};
 
@@ -130,8 +130,30 @@ impl Operator {
         dim: usize,
         bound: f64,
     ) -> f64 {
-        let allowance = (bm.sec * bm.inner + bm.outer) * max_norm(points, dim);
-        if bound > 64.0 * allowance || !bound.is_finite() || !safe_range(points) {
+        let amax = points.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+        self.with_reduced_norms(
+            bm,
+            (points, reduced),
+            dim,
+            bound,
+            max_norm(points, dim),
+            amax,
+        )
+    }
+
+    /// [`Operator::with_reduced`] with `pmax = max_j ||P_j||` and `amax = max |P_jk|`
+    /// already computed (by the batch kernel).
+    pub(crate) fn with_reduced_norms(
+        &self,
+        bm: &BoundMap,
+        (points, reduced): (&[f64], &[f64]),
+        dim: usize,
+        bound: f64,
+        pmax: f64,
+        amax: f64,
+    ) -> f64 {
+        let allowance = (bm.sec * bm.inner + bm.outer) * pmax;
+        if bound > 64.0 * allowance || !bound.is_finite() || !safe_amax(amax) {
             return bound;
         }
         bound.min(hull_bound(points, reduced, dim))
@@ -140,7 +162,19 @@ impl Operator {
     /// The bound of one curve from the largest computed node value `smax` of its error
     /// curve (see [`Operator::certified_bound`]).
     pub(crate) fn curve_bound(&self, bm: &BoundMap, points: &[f64], dim: usize, smax: f64) -> f64 {
-        let node = bm.finish(smax, max_norm(points, dim), dim);
+        self.curve_bound_norms(bm, points, dim, smax, max_norm(points, dim))
+    }
+
+    /// [`Operator::curve_bound`] with `pmax = max_j ||P_j||` already computed.
+    pub(crate) fn curve_bound_norms(
+        &self,
+        bm: &BoundMap,
+        points: &[f64],
+        dim: usize,
+        smax: f64,
+        pmax: f64,
+    ) -> f64 {
+        let node = bm.finish(smax, pmax, dim);
         match self.own_bound(points, dim) {
             Some(own) if !own.is_nan() => own.min(node),
             _ => node,
@@ -152,6 +186,10 @@ impl Operator {
 /// bound needs no scaling (see [`Operator::one_bound`]); non-finite input counts as safe
 /// (its bound is `+inf`, or the caller reports it).
 pub(crate) fn safe_range(points: &[f64]) -> bool {
-    let amax = points.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+    safe_amax(points.iter().fold(0.0f64, |a, x| a.max(x.abs())))
+}
+
+/// [`safe_range`] from the largest coordinate magnitude `amax`.
+pub(crate) fn safe_amax(amax: f64) -> bool {
     amax == 0.0 || (SAFE_LOW..=SAFE_HIGH).contains(&amax) || !amax.is_finite()
 }

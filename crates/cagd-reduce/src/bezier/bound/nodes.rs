@@ -1,6 +1,6 @@
 //! The largest norm of the error curve's node values `V c` (goes beyond the seed; see
 //! `operator/error_map.rs`): fused for one curve (no buffer), or over a computed block of
-//! values. A NaN value makes the result NaN (never silently skipped), which the bound
+//! values (the batch: `lanes.rs`). A NaN value makes the result NaN (never silently skipped), which the bound
 //! turns into `+inf`.
 
 /// `max_j ||sum_k v_jk c_k||` for `v` row-major with `r` columns and `c` = `r` points of
@@ -47,8 +47,10 @@ fn fused<const D: usize>(v: &[f64], r: usize, c: &[f64]) -> f64 {
     if bad { f64::NAN } else { best.sqrt() }
 }
 
-/// `max_j ||s_j||` over the points of `s` (`dim` coordinates each); NaN if any is NaN.
-pub(crate) fn max_row_norm(s: &[f64], dim: usize) -> f64 {
+/// `max_j ||s_j||` over the points of `s` (`dim` coordinates each); NaN if any is NaN (the
+/// test oracle of [`max_value_norm`]; the batch takes the maxima in the lanes kernel).
+#[cfg(test)]
+fn max_row_norm(s: &[f64], dim: usize) -> f64 {
     let (mut best, mut bad) = (0.0f64, false);
     for p in s.chunks_exact(dim) {
         let q: f64 = p.iter().map(|a| a * a).sum();
