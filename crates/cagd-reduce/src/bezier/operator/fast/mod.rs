@@ -81,17 +81,13 @@ fn finish<B: Base>(
     route: OperatorRoute,
     tol: f64,
 ) -> Option<Built> {
-    let mut matrix = Vec::with_capacity(rows.len() * rows.first().map_or(0, Vec::len));
+    let mut matrix = Vec::with_capacity(rows.len() * rows.first().map_or(0, |r| r.v.len()));
     let (mut error, mut norm) = (0.0f64, 0.0f64);
     for row in rows {
-        let (mut e, mut s) = (0.0, 0.0);
-        for x in row {
-            matrix.push(x.val());
-            e += x.err();
-            s += x.val().abs();
-        }
+        let (v, e) = row.rounded();
+        norm = norm.max(v.iter().map(|x| x.abs()).sum());
         error = error.max(e);
-        norm = norm.max(s);
+        matrix.extend(v);
     }
     let ok = |e: f64, s: f64| e.is_finite() && e <= tol * s;
     if !ok(error, norm) || !matrix.iter().all(|x| x.is_finite()) {
@@ -100,11 +96,11 @@ fn finish<B: Base>(
     let mut out = Vec::with_capacity(terms.len());
     let (mut te, mut ts) = (0.0, 0.0);
     for (coef, g) in terms {
-        let e: f64 = g.iter().map(|x| x.err()).sum();
-        let s: f64 = g.iter().map(|x| x.val().abs()).sum();
+        let (v, e) = g.rounded();
+        let s: f64 = v.iter().map(|x| x.abs()).sum();
         te += coef * e;
         ts += coef * s;
-        out.push((*coef, g.iter().map(|x| x.val()).collect(), e * (1.0 + 1e-9)));
+        out.push((*coef, v, e * (1.0 + 1e-9)));
     }
     if !ok(te, ts.max(1.0)) {
         return None;

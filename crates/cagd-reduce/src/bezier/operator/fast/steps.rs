@@ -33,7 +33,7 @@ fn sign_binom<B: Base>(k: usize, i: usize) -> Tracked<B> {
 /// `sum_i (-1)^(k-i) C(k,i) s_i` = `Delta^k` of the rows.
 fn delta_k<B: Base>(s: &[Row<B>]) -> Row<B> {
     let k = s.len() - 1;
-    let mut f = vec![zero(); s[0].len()];
+    let mut f = Row::zeros(s[0].v.len());
     for (i, row) in s.iter().enumerate() {
         super::rows::axpy(&mut f, sign_binom(k, i), row);
     }
@@ -60,8 +60,8 @@ fn backward<B: Base>(s: &[Row<B>], first: usize) -> Vec<Row<B>> {
     let k = s.len() - 1;
     let mut out: Vec<Row<B>> = vec![s[k].clone()];
     for i in ((first + 1)..k).rev() {
-        let prev = out.last().cloned().unwrap_or_default();
-        out.push(lin2_exact(f(k), &s[i], -f(k - i), &prev, f(i)));
+        let next = lin2_exact(f(k), &s[i], -f(k - i), &out[out.len() - 1], f(i));
+        out.push(next);
     }
     out.reverse();
     out
@@ -84,7 +84,6 @@ fn inverse_elevation<B: Base>(pbar: &[Row<B>]) -> Vec<Row<B>> {
 pub(crate) fn step<B: Base>(method: Method, s: &[Row<B>]) -> Step<B> {
     let k = s.len() - 1;
     let n = k - 1;
-    let half = |x: Tracked<B>| x.mul(Tracked::of(0.5));
     match method {
         Method::Forrest => {
             let fwd = forward(s, n / 2);
@@ -94,11 +93,7 @@ pub(crate) fn step<B: Base>(method: Method, s: &[Row<B>]) -> Step<B> {
             let rows = (0..=n)
                 .map(|i| {
                     if n % 2 == 0 && i == n / 2 {
-                        fwd[i]
-                            .iter()
-                            .zip(&bwd[i - b0])
-                            .map(|(x, y)| half(x.add(*y)))
-                            .collect()
+                        lin2_exact(1.0, &fwd[i], 1.0, &bwd[i - b0], 2.0)
                     } else if 2 * i < n {
                         fwd[i].clone()
                     } else {
@@ -253,9 +248,15 @@ pub(crate) fn residual_coef<B: Base>(method: Method, k: usize) -> Option<f64> {
     }
     // The step on the single column e_0.
     let e0: Vec<Row<B>> = (0..=k)
-        .map(|i| vec![Tracked::of(if i == 0 { 1.0 } else { 0.0 })])
+        .map(|i| {
+            if i == 0 {
+                Row::unit(1, 0)
+            } else {
+                Row::zeros(1)
+            }
+        })
         .collect();
-    let q: Vec<Tracked<B>> = step(method, &e0).rows.iter().map(|r| r[0]).collect();
+    let q: Vec<Tracked<B>> = step(method, &e0).rows.iter().map(|r| r.at(0)).collect();
     // Residual column 0: e_0 - E q; r_i = res_i / c_0, c_0 = (-1)^k.
     let kk = Tracked::small(to_i(k));
     let mut coef = 0.0f64;

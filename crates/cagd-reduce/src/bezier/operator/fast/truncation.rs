@@ -28,7 +28,9 @@
 //! - Back to degree `M`: the coefficient of `B_s^M` in `p_k` is
 //!   `sum_l c_l C(M-k, s-l) / C(M, s)` (degree elevation).
 
-use super::rows::{Row, Rows, auxiliary, axpy, end_points, identity, idx, scale, to_i, zero};
+use super::rows::{
+    Row, Rows, axpy, axpy_window, b, dot, end_points, identity, idx, scale, scale_cols, to_i, zero,
+};
 use super::tracked::{Base, Tracked};
 
 /// The orthogonal family of a truncation.
@@ -95,7 +97,9 @@ fn elevated_exact<B: Base>(c: &[i128], d: i64, s: i64) -> Option<Tracked<B>> {
 }
 
 /// `(last+1) x (N+1)`: row `k` is the functional giving the `k`-th expansion coefficient of
-/// a degree-`N` polynomial from its Bernstein coefficients, `k = 0..=last`.
+/// a degree-`N` polynomial from its Bernstein coefficients, `k = 0..=last`: the correlation
+/// `sum_l c_l d_(j+l)` as `k + 1` row updates, then the column factors `C(N,j)` and the
+/// row's common factor.
 fn functionals<B: Base>(family: Family, nn: i64, last: i64) -> Vec<Row<B>> {
     // w_i = C(2i,i)/4^i for i <= 2N (Chebyshev only).
     let mut w: Vec<Tracked<B>> = vec![Tracked::of(1.0)];
@@ -108,6 +112,7 @@ fn functionals<B: Base>(family: Family, nn: i64, last: i64) -> Vec<Row<B>> {
             );
         }
     }
+    let width = idx(nn) + 1;
     (0..=last)
         .map(|k| {
             let kk = nn + k;
@@ -132,15 +137,15 @@ fn functionals<B: Base>(family: Family, nn: i64, last: i64) -> Vec<Row<B>> {
                     )
                 }
             };
-            (0..=nn)
-                .map(|j| {
-                    let mut acc = zero::<B>();
-                    for (l, cl) in c.iter().enumerate() {
-                        acc = acc.fma(*cl, d[idx(j) + l]);
-                    }
-                    acc.mul(factor.mul(Tracked::binom(nn, j)))
-                })
-                .collect()
+            let d = Row::from_tracked(&d);
+            let mut acc = Row::zeros(width);
+            for (l, cl) in c.iter().enumerate() {
+                axpy_window(&mut acc, *cl, &d, l);
+            }
+            let cols: Vec<Tracked<B>> = (0..=nn)
+                .map(|j| factor.mul(Tracked::binom(nn, j)))
+                .collect();
+            scale_cols(&acc, &cols)
         })
         .collect()
 }
@@ -149,8 +154,8 @@ fn functionals<B: Base>(family: Family, nn: i64, last: i64) -> Vec<Row<B>> {
 /// kept coefficient functionals `f_0..f_M`.
 /// Only rows `s <= last` are computed (the others are left zero).
 fn back_to_bernstein<B: Base>(family: Family, mm: i64, last: i64, f: &[Row<B>]) -> Vec<Row<B>> {
-    let len = f.first().map_or(0, Vec::len);
-    let mut out: Vec<Row<B>> = vec![vec![zero(); len]; idx(mm) + 1];
+    let len = f.first().map_or(0, |r| r.v.len());
+    let mut out: Vec<Row<B>> = vec![Row::zeros(len); idx(mm) + 1];
     for k in 0..=mm {
         let c = coefficients::<B>(family, k);
         let ci = integer_coefficients(family, k);
@@ -170,6 +175,57 @@ fn back_to_bernstein<B: Base>(family: Family, mm: i64, last: i64, f: &[Row<B>]) 
         }
     }
     out
+}
+
+/// The coefficient functionals on `P`, `f_k = sum_i phi_ki P^II_i`, with
+/// `P^II_i = C(n, r+1+i) / C(N, i) A_(r+1+i)` and the auxiliary points
+/// `A_j = P_j - sum_l b_lj Q_l` over the fixed end points (see `rows::auxiliary`): expanded as
+/// `w_k = phi_k C(n, r+1+i) / C(N, i)` on `P_(r+1+i)` minus one scalar `w_k . b_l` per end
+/// point, `O(N (r + p + 2))` per functional instead of a dense product.
+fn on_points<B: Base>(
+    phi: Vec<Row<B>>,
+    n: usize,
+    m: usize,
+    r: i32,
+    p: i32,
+    left: &[Row<B>],
+    right: &[Row<B>],
+) -> Vec<Row<B>> {
+    let (ni, mi, ri, pi) = (to_i(n), to_i(m), i64::from(r), i64::from(p));
+    if ri == -1 && pi == -1 {
+        return phi;
+    }
+    let nn = ni - (ri + pi + 2);
+    let sc: Vec<Tracked<B>> = (0..=nn)
+        .map(|i| Tracked::binom(ni, ri + 1 + i).div(Tracked::binom(nn, i)))
+        .collect();
+    let ends: Vec<(i64, &Row<B>)> = left
+        .iter()
+        .enumerate()
+        .map(|(l, q)| (to_i(l), q))
+        .chain(
+            right
+                .iter()
+                .enumerate()
+                .map(|(l, q)| (mi - pi + to_i(l), q)),
+        )
+        .collect();
+    let betas: Vec<Vec<Tracked<B>>> = ends
+        .iter()
+        .map(|(l, _)| (0..=nn).map(|i| b::<B>(mi, ni, *l, ri + 1 + i)).collect())
+        .collect();
+    phi.iter()
+        .map(|ph| {
+            let w = scale_cols(ph, &sc);
+            let mut row = Row::zeros(n + 1);
+            row.v[idx(ri + 1)..=idx(ni - pi - 1)].copy_from_slice(&w.v);
+            row.e[idx(ri + 1)..=idx(ni - pi - 1)].copy_from_slice(&w.e);
+            for ((_, q), beta) in ends.iter().zip(&betas) {
+                axpy(&mut row, dot(&w, beta).neg(), q);
+            }
+            row
+        })
+        .collect()
 }
 
 /// The operator `n -> m` with `(r, p)` ends and the interior by truncation in `family`;
@@ -193,28 +249,7 @@ pub(crate) fn truncated<B: Base>(
         let last = if factor.is_some() { nn } else { mm };
         let phi = functionals::<B>(family, nn, last);
         // Coefficient functionals on P: f_k = sum_i phi_ki P^II_i (P^II = P when r = p = -1).
-        let f: Vec<Row<B>> = if ri == -1 && pi == -1 {
-            phi
-        } else {
-            let aux = auxiliary(n, m, r, p, &left, &right, &input);
-            let p2: Vec<Row<B>> = aux
-                .iter()
-                .enumerate()
-                .map(|(i, a)| {
-                    let i = to_i(i);
-                    scale(a, Tracked::binom(ni, ri + 1 + i).div(Tracked::binom(nn, i)))
-                })
-                .collect();
-            phi.iter()
-                .map(|ph| {
-                    let mut row = vec![zero(); n + 1];
-                    for (c, q) in ph.iter().zip(&p2) {
-                        axpy(&mut row, *c, q);
-                    }
-                    row
-                })
-                .collect()
-        };
+        let f = on_points(phi, n, m, r, p, &left, &right);
         // A symmetric problem (`r = p`, a symmetric weight) has a centro-symmetric operator,
         // `a_(m-i, n-j) = a_ij`: the second half of the interior rows mirrors the first
         // (the mirrored error bounds hold for the mirrored exact entries).
@@ -228,9 +263,7 @@ pub(crate) fn truncated<B: Base>(
         // Q_i = U_{i-r-1} C(M, i-r-1) / C(m, i)   (14.5.16)
         for i in (ri + 1)..=(mi - pi - 1) {
             if i > last_i {
-                let mut row = rows[idx(mi - i)].clone();
-                row.reverse();
-                rows.push(row);
+                rows.push(rows[idx(mi - i)].reversed());
                 continue;
             }
             let s = i - ri - 1;
