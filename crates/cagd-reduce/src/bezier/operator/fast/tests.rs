@@ -18,6 +18,7 @@ pub(super) fn methods() -> Vec<Method> {
         Method::WatkinsWorsey,
         Method::BogackiWeinsteinXu,
         Method::GeneralizedInverse,
+        Method::GeneralizedInverseEnds,
         Method::ConstrainedChebyshev { r: 0, p: 0 },
         Method::ConstrainedChebyshev { r: 1, p: 2 },
         Method::L2 { r: 0, p: 0 },
@@ -135,12 +136,13 @@ fn fast_routes_match_the_exact_oracle_to_degree_64() {
 }
 
 #[test]
-fn methods_without_a_fast_route_use_the_exact_one() {
-    assert!(build(Method::GeneralizedInverseEnds, 9, 4).is_none());
-    let op = crate::build_operator(Method::GeneralizedInverseEnds, 9, 4, false).unwrap();
+fn every_method_has_a_fast_route_and_the_exact_one_on_request() {
+    for method in methods() {
+        let op = crate::build_operator(method, 9, 4, false).unwrap();
+        assert_ne!(op.route(), OperatorRoute::Exact, "{method:?}");
+        assert!(op.construction_error() <= TOLERANCE * op.norm_inf());
+    }
+    let op = crate::build_operator(Method::GeneralizedInverseEnds, 9, 4, true).unwrap();
     assert_eq!(op.route(), OperatorRoute::Exact);
     assert_eq!(op.construction_error(), 0.0);
-    let op = crate::build_operator(Method::L2 { r: 0, p: 0 }, 9, 4, false).unwrap();
-    assert_ne!(op.route(), OperatorRoute::Exact);
-    assert!(op.construction_error() <= TOLERANCE * op.norm_inf());
 }
