@@ -274,6 +274,26 @@ pub(crate) fn residual_coef<B: Base>(method: Method, k: usize) -> Option<f64> {
     Some(coef * (1.0 + 4.0 * f64::EPSILON))
 }
 
+/// [`residual_coef`] in double-word, remembered per `(method, k)` for the process: a
+/// constant of the step (like the `W_n` table of `wn_table.rs`), whose `O(k)` evaluation on
+/// one-column rows is allocation-bound (about 40 % of a Forrest build at `(30,15)`).
+fn residual_coef_cached(method: Method, k: usize) -> Option<f64> {
+    use std::collections::HashMap;
+    use std::sync::{OnceLock, RwLock};
+    type Memo = RwLock<HashMap<((u8, u64, u64), usize), Option<f64>>>;
+    static MEMO: OnceLock<Memo> = OnceLock::new();
+    let memo = MEMO.get_or_init(|| RwLock::new(HashMap::new()));
+    let key = (method.key(), k);
+    if let Some(c) = memo.read().ok().and_then(|m| m.get(&key).copied()) {
+        return c;
+    }
+    let c = residual_coef::<super::dd::Dd>(method, k);
+    if let Ok(mut m) = memo.write() {
+        m.insert(key, c);
+    }
+    c
+}
+
 /// The stepwise operator `n -> m`: rows (`m + 1`) and the summed own-bound terms (dropped,
 /// like the exact route, if one step has none).
 pub(crate) fn stepwise<B: Base>(method: Method, n: usize, m: usize) -> Rows<B> {
@@ -286,7 +306,7 @@ pub(crate) fn stepwise<B: Base>(method: Method, n: usize, m: usize) -> Rows<B> {
             if st.terms.is_empty() {
                 // O(k) work: always in double-word, so the coefficient is tight even when
                 // it is tiny beside the step's entries.
-                match residual_coef::<super::dd::Dd>(method, k) {
+                match residual_coef_cached(method, k) {
                     Some(c) => terms.push((c, delta_k(&s))),
                     None => valid = false,
                 }
