@@ -17,7 +17,7 @@ mod steps;
 mod tracked;
 mod truncation;
 
-use rows::{Row, Rows};
+use rows::{Row, Rows, to_i};
 use tracked::Base;
 use truncation::{Family, truncated};
 
@@ -75,6 +75,30 @@ fn rows_of<B: Base>(method: Method, n: usize, m: usize) -> Option<Rows<B>> {
             };
             truncated(family, n, m, r, p, None)
         }
+        _ => return None,
+    })
+}
+
+/// The truncation behind a multi-degree method (and Eck's): family, end orders, and whether
+/// it carries bound terms (every coefficient functional then).
+fn truncation_of(method: Method) -> Option<(Family, i32, i32, bool)> {
+    Some(match method {
+        Method::Eck | Method::WatkinsWorsey | Method::BogackiWeinsteinXu => {
+            (Family::Chebyshev, -1, -1, true)
+        }
+        Method::ConstrainedChebyshev { r, p } => (Family::Chebyshev, r, p, true),
+        Method::GeneralizedInverse | Method::GeneralizedInverseEnds => {
+            (Family::Jacobi { a: 0, b: 0 }, -1, -1, false)
+        }
+        Method::L2 { r, p } => (
+            Family::Jacobi {
+                a: 2 * i64::from(r) + 2,
+                b: 2 * i64::from(p) + 2,
+            },
+            r,
+            p,
+            false,
+        ),
         _ => return None,
     })
 }
@@ -158,15 +182,20 @@ fn finish<B: Base>(
 /// makes, so that adding the construction error leaves the reported bounds as tight as the
 /// exact route's; otherwise the double-word route, whose errors are at the rounding level.
 pub(crate) fn build(method: Method, n: usize, m: usize) -> Option<Built> {
-    let (rows, terms) = rows_of::<f64>(method, n, m)?;
     #[allow(clippy::cast_precision_loss, reason = "n <= 64")]
-    let tol = if terms.is_empty() {
-        TOLERANCE
-    } else {
-        2.0 * (n as f64 + 3.0) * f64::EPSILON
-    };
-    if let Some(b) = finish(&rows, &terms, OperatorRoute::F64, tol) {
-        return Some(b);
+    let strict = 2.0 * (n as f64 + 3.0) * f64::EPSILON;
+    let skip_f64 = truncation_of(method).is_some_and(|(family, r, p, terms)| {
+        let (r, p) = (i64::from(r), i64::from(p));
+        let (nn, mm) = (to_i(n) - (r + p + 2), to_i(m) - (r + p + 2));
+        let tol = if terms { strict } else { TOLERANCE };
+        mm >= 0 && truncation::f64_hopeless(family, nn, if terms { nn } else { mm }, tol)
+    });
+    if !skip_f64 {
+        let (rows, terms) = rows_of::<f64>(method, n, m)?;
+        let tol = if terms.is_empty() { TOLERANCE } else { strict };
+        if let Some(b) = finish(&rows, &terms, OperatorRoute::F64, tol) {
+            return Some(b);
+        }
     }
     let (rows, terms) = rows_of::<dd::Dd>(method, n, m)?;
     finish(&rows, &terms, OperatorRoute::DoubleWord, TOLERANCE)

@@ -96,11 +96,11 @@ fn elevated_exact<B: Base>(c: &[i128], d: i64, s: i64) -> Option<Tracked<B>> {
     Some(if acc < 0 { t.neg() } else { t })
 }
 
-/// `(last+1) x (N+1)`: row `k` is the functional giving the `k`-th expansion coefficient of
-/// a degree-`N` polynomial from its Bernstein coefficients, `k = 0..=last`: the correlation
+/// `(last-first+1) x (N+1)`: row `k - first` is the functional giving the `k`-th expansion
+/// coefficient of a degree-`N` polynomial from its Bernstein coefficients, `k = first..=last`: the correlation
 /// `sum_l c_l d_(j+l)` as `k + 1` row updates, then the column factors `C(N,j)` and the
 /// row's common factor.
-fn functionals<B: Base>(family: Family, nn: i64, last: i64) -> Vec<Row<B>> {
+fn functionals<B: Base>(family: Family, nn: i64, first: i64, last: i64) -> Vec<Row<B>> {
     // w_i = C(2i,i)/4^i for i <= 2N (Chebyshev only).
     let mut w: Vec<Tracked<B>> = vec![Tracked::of(1.0)];
     if let Family::Chebyshev = family {
@@ -113,7 +113,7 @@ fn functionals<B: Base>(family: Family, nn: i64, last: i64) -> Vec<Row<B>> {
         }
     }
     let width = idx(nn) + 1;
-    (0..=last)
+    (first..=last)
         .map(|k| {
             let kk = nn + k;
             let c = coefficients::<B>(family, k);
@@ -228,6 +228,25 @@ fn on_points<B: Base>(
         .collect()
 }
 
+/// Whether the `f64` route of a truncation is sure to be refused, judged by one row: the
+/// proven relative error of the `f64` coefficient functional of degree `k` (the highest the
+/// operator or its bound terms need) on degree-`N` polynomials exceeds `4 tol` (it tracks the
+/// operator's own proven error within a factor of about 2 at the pairs of the
+/// `operator_build` bench: 7e-10 against 5e-10 at L2-C0 `(30,15)`). Saves the
+/// `f64` attempt where cancellation makes it hopeless (a performance choice only: the
+/// double-word route is proven on its own).
+pub(crate) fn f64_hopeless(family: Family, nn: i64, k: i64, tol: f64) -> bool {
+    if nn < 0 || k < 0 {
+        return false;
+    }
+    let row = functionals::<f64>(family, nn, k, k).pop();
+    row.is_some_and(|r| {
+        let (v, e) = r.rounded();
+        let s: f64 = v.iter().map(|x| x.abs()).sum();
+        !(e <= 4.0 * tol * s)
+    })
+}
+
 /// The operator `n -> m` with `(r, p)` ends and the interior by truncation in `family`;
 /// the bound terms (Chebyshev: `factor * ||f_k . P||`, `k > M`) when `factor` is given.
 pub(crate) fn truncated<B: Base>(
@@ -247,7 +266,7 @@ pub(crate) fn truncated<B: Base>(
         let (nn, mm) = (ni - (ri + pi + 2), mi - (ri + pi + 2));
         // The bound terms need every coefficient, the operator only the kept ones.
         let last = if factor.is_some() { nn } else { mm };
-        let phi = functionals::<B>(family, nn, last);
+        let phi = functionals::<B>(family, nn, 0, last);
         // Coefficient functionals on P: f_k = sum_i phi_ki P^II_i (P^II = P when r = p = -1).
         let f = on_points(phi, n, m, r, p, &left, &right);
         // A symmetric problem (`r = p`, a symmetric weight) has a centro-symmetric operator,
