@@ -86,21 +86,21 @@ pub(crate) fn step<B: Base>(method: Method, s: &[Row<B>]) -> Step<B> {
     let n = k - 1;
     match method {
         Method::Forrest => {
-            let fwd = forward(s, n / 2);
-            let first = n.div_ceil(2);
-            let bwd = backward(s, first.min(n / 2));
-            let b0 = first.min(n / 2);
-            let rows = (0..=n)
-                .map(|i| {
-                    if n % 2 == 0 && i == n / 2 {
-                        lin2_exact(1.0, &fwd[i], 1.0, &bwd[i - b0], 2.0)
-                    } else if 2 * i < n {
-                        fwd[i].clone()
-                    } else {
-                        bwd[i - b0].clone()
-                    }
-                })
-                .collect();
+            // Forward on the first half, backward on the second (both recursions stop at
+            // `n / 2`); the middle point of an even `n` is their average.
+            let half = n / 2;
+            let mut fwd = forward(s, half);
+            let mut bwd = backward(s, half).into_iter();
+            let (mid_f, mid_b) = (fwd.pop(), bwd.next());
+            let mut rows = fwd;
+            if let (Some(f), Some(b)) = (mid_f, mid_b) {
+                rows.push(if n % 2 == 0 {
+                    lin2_exact(1.0, &f, 1.0, &b, 2.0)
+                } else {
+                    f
+                });
+            }
+            rows.extend(bwd);
             Step {
                 rows,
                 terms: Vec::new(),
