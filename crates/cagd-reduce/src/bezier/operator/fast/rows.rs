@@ -203,8 +203,8 @@ pub(crate) fn scale_cols<B: Base>(x: &Row<B>, a: &[Tracked<B>]) -> Row<B> {
 /// `sum_c x_c a_c` (`a` tracked scalars, one per column) as a tracked number.
 pub(crate) fn dot<B: Base>(x: &Row<B>, a: &[Tracked<B>]) -> Tracked<B> {
     let mut s = Tracked::of(0.0);
-    for c in 0..x.v.len().min(a.len()) {
-        s = s.fma(x.at(c), a[c]);
+    for (c, ac) in a.iter().enumerate().take(x.v.len()) {
+        s = s.fma(x.at(c), *ac);
     }
     s
 }

@@ -243,7 +243,8 @@ pub(crate) fn f64_hopeless(family: Family, nn: i64, k: i64, tol: f64) -> bool {
     row.is_some_and(|r| {
         let (v, e) = r.rounded();
         let s: f64 = v.iter().map(|x| x.abs()).sum();
-        !(e <= 4.0 * tol * s)
+        // A NaN or infinite bound counts as hopeless too.
+        e.is_nan() || e > 4.0 * tol * s
     })
 }
 
