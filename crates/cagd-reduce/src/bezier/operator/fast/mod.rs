@@ -188,7 +188,10 @@ pub(crate) fn build(method: Method, n: usize, m: usize) -> Option<Built> {
         let (r, p) = (i64::from(r), i64::from(p));
         let (nn, mm) = (to_i(n) - (r + p + 2), to_i(m) - (r + p + 2));
         let tol = if terms { strict } else { TOLERANCE };
-        mm >= 0 && truncation::f64_hopeless(family, nn, if terms { nn } else { mm }, tol)
+        // A one-degree truncation goes from the top (no alternating sums): always try f64.
+        mm >= 0
+            && n - m > 1
+            && truncation::f64_hopeless(family, nn, if terms { nn } else { mm }, tol)
     });
     if !skip_f64 {
         let (rows, terms) = rows_of::<f64>(method, n, m)?;

@@ -25,7 +25,7 @@ fn f(i: usize) -> f64 {
 }
 
 /// `(-1)^(k-i) C(k,i)`.
-fn sign_binom<B: Base>(k: usize, i: usize) -> Tracked<B> {
+pub(crate) fn sign_binom<B: Base>(k: usize, i: usize) -> Tracked<B> {
     let c = Tracked::binom(to_i(k), to_i(i));
     if (k - i) % 2 == 0 { c } else { c.neg() }
 }
@@ -70,7 +70,7 @@ fn backward<B: Base>(s: &[Row<B>], first: usize) -> Vec<Row<B>> {
 /// Inverse elevation of a degenerate polygon (eq. 14.2.3): exactly of degree `k-1`, so the
 /// forward and the backward recursion give the same points in exact arithmetic; each is
 /// used on the half where it does not amplify rounding (Forrest's split).
-fn inverse_elevation<B: Base>(pbar: &[Row<B>]) -> Vec<Row<B>> {
+pub(crate) fn inverse_elevation<B: Base>(pbar: &[Row<B>]) -> Vec<Row<B>> {
     let n = pbar.len() - 2;
     let b0 = n / 2 + 1;
     let mut out = forward(pbar, n / 2);

@@ -29,8 +29,10 @@
 //!   `sum_l c_l C(M-k, s-l) / C(M, s)` (degree elevation).
 
 use super::rows::{
-    Row, Rows, axpy, axpy_window, b, dot, end_points, identity, idx, scale, scale_cols, to_i, zero,
+    Row, Rows, auxiliary, axpy, axpy_window, b, div, dot, end_points, identity, idx, scale,
+    scale_cols, to_i, zero,
 };
+use super::steps::{inverse_elevation, sign_binom};
 use super::tracked::{Base, Tracked};
 
 /// The orthogonal family of a truncation.
@@ -228,6 +230,63 @@ fn on_points<B: Base>(
         .collect()
 }
 
+/// A truncation by one degree (`N = M + 1`) from the top (beyond the seed): the highest
+/// coefficient is the ratio of leading power coefficients, `f_N(S) = Delta^N S / lead(p_N)`
+/// with `lead(p_N) = sum_l |c_l|` (`C(2N+a+b, N)` for Jacobi, `2^(2N-1)` for Chebyshev), a
+/// single signed binomial per entry; `S - f_N p_N` is then exactly of degree `M`, and its
+/// degree-`M` coefficients come from the inverse elevation of `../steps.rs` (Forrest's
+/// split). This avoids the alternating sums of the low-order functionals, whose
+/// cancellation grows like `4^k` and defeats even double-word at degree 64. Returns the
+/// rows of `U` (degree `M`) and `f_N` on the points.
+#[allow(clippy::too_many_arguments, reason = "the truncation's own parameters")]
+fn top_complement<B: Base>(
+    family: Family,
+    n: usize,
+    m: usize,
+    r: i32,
+    p: i32,
+    left: &[Row<B>],
+    right: &[Row<B>],
+    input: &[Row<B>],
+) -> (Vec<Row<B>>, Row<B>) {
+    let (ni, ri, pi) = (to_i(n), i64::from(r), i64::from(p));
+    let nn = ni - (ri + pi + 2);
+    // S's Bernstein coefficients (degree N) as functionals of P: P^II (eq. 14.5.14).
+    let s: Vec<Row<B>> = if ri == -1 && pi == -1 {
+        input.to_vec()
+    } else {
+        auxiliary(n, m, r, p, left, right, input)
+            .iter()
+            .enumerate()
+            .map(|(i, a)| {
+                let i = to_i(i);
+                scale(a, Tracked::binom(ni, ri + 1 + i).div(Tracked::binom(nn, i)))
+            })
+            .collect()
+    };
+    let mut d = Row::zeros(n + 1);
+    for (j, row) in s.iter().enumerate() {
+        axpy(&mut d, sign_binom(idx(nn), j), row);
+    }
+    let c = coefficients::<B>(family, nn);
+    let lead = match family {
+        Family::Chebyshev => Tracked::of(2f64.powi(i32::try_from(2 * nn - 1).unwrap_or(i32::MAX))),
+        Family::Jacobi { a, b } => Tracked::binom(2 * nn + a + b, nn),
+    };
+    let top = div(&d, lead);
+    let g: Vec<Row<B>> = s
+        .iter()
+        .zip(&c)
+        .enumerate()
+        .map(|(i, (si, ci))| {
+            let mut gi = si.clone();
+            axpy(&mut gi, ci.div(Tracked::binom(nn, to_i(i))).neg(), &top);
+            gi
+        })
+        .collect();
+    (inverse_elevation(&g), top)
+}
+
 /// Whether the `f64` route of a truncation is sure to be refused, judged by one row: the
 /// proven relative error of the `f64` coefficient functional of degree `k` (the highest the
 /// operator or its bound terms need) on degree-`N` polynomials exceeds `4 tol` (it tracks the
@@ -265,11 +324,6 @@ pub(crate) fn truncated<B: Base>(
     let mut terms = Vec::new();
     if ri + pi + 1 < mi {
         let (nn, mm) = (ni - (ri + pi + 2), mi - (ri + pi + 2));
-        // The bound terms need every coefficient, the operator only the kept ones.
-        let last = if factor.is_some() { nn } else { mm };
-        let phi = functionals::<B>(family, nn, 0, last);
-        // Coefficient functionals on P: f_k = sum_i phi_ki P^II_i (P^II = P when r = p = -1).
-        let f = on_points(phi, n, m, r, p, &left, &right);
         // A symmetric problem (`r = p`, a symmetric weight) has a centro-symmetric operator,
         // `a_(m-i, n-j) = a_ij`: the second half of the interior rows mirrors the first
         // (the mirrored error bounds hold for the mirrored exact entries).
@@ -279,7 +333,19 @@ pub(crate) fn truncated<B: Base>(
                 Family::Jacobi { a, b } => a == b,
             };
         let last_i = if symmetric { mi / 2 } else { mi - pi - 1 };
-        let u = back_to_bernstein(family, mm, last_i - ri - 1, &f[..=idx(mm)]);
+        let (u, high) = if nn == mm + 1 {
+            let (u, top) = top_complement(family, n, m, r, p, &left, &right, &input);
+            (u, vec![top])
+        } else {
+            // The bound terms need every coefficient, the operator only the kept ones.
+            let last = if factor.is_some() { nn } else { mm };
+            let phi = functionals::<B>(family, nn, 0, last);
+            // Coefficient functionals on P: f_k = sum_i phi_ki P^II_i (P^II = P when
+            // r = p = -1).
+            let mut f = on_points(phi, n, m, r, p, &left, &right);
+            let u = back_to_bernstein(family, mm, last_i - ri - 1, &f[..=idx(mm)]);
+            (u, f.split_off(idx(mm) + 1))
+        };
         // Q_i = U_{i-r-1} C(M, i-r-1) / C(m, i)   (14.5.16)
         for i in (ri + 1)..=(mi - pi - 1) {
             if i > last_i {
@@ -293,7 +359,7 @@ pub(crate) fn truncated<B: Base>(
             ));
         }
         if let Some(coef) = factor {
-            terms.extend(f.into_iter().skip(idx(mm) + 1).map(|g| (coef, g)));
+            terms.extend(high.into_iter().map(|g| (coef, g)));
         }
     }
     rows.extend(right);
