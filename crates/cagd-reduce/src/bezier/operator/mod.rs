@@ -1,9 +1,9 @@
 //! Reduction operators: the `(m+1) x (n+1)` matrix of a linear method in `f64`, with the
 //! data for a cheap certified error bound, built once per `(method, n, m)` and cached
 //! process-wide. Built by the fast routes of [`fast`] (closed forms and the seed's
-//! recursions in `f64` or double-word arithmetic with a proven error of at most `1e-13` of
+//! recursions in `f64` or double-word arithmetic with a proven error of at most `1e-12` of
 //! the operator's inf-norm), falling back to the exact rational route ([`exact_operator`],
-//! rounded once), which is also the test oracle.
+//! the test oracle, rounded once; Eck falls back to its equal closed form `eck_exact`).
 
 use std::collections::HashMap;
 use std::sync::{Arc, OnceLock, RwLock};
@@ -45,7 +45,7 @@ struct BoundTerm {
 /// A linear degree-reduction operator from degree `n` to degree `m`: `Q_i = sum_j a_ij P_j`,
 /// applied coordinate-wise to points of any dimension (also to homogeneous points).
 ///
-/// Every entry is within `1e-13 * ||A||_inf` of the exact rational value (a proven bound,
+/// Every entry is within `1e-12 * ||A||_inf` of the exact rational value (a proven bound,
 /// [`Operator::construction_error`]; on the [`OperatorRoute::Exact`] route each entry is the
 /// exact value rounded once).
 #[derive(Debug, Clone)]
@@ -275,7 +275,7 @@ impl Operator {
     }
 
     /// A proven bound of `max_i sum_j |a_ij - exact_ij|` for the fast routes (at most
-    /// `1e-13` times [`Operator::norm_inf`]); `0` for the exact route, whose entries are the
+    /// `1e-12` times [`Operator::norm_inf`]); `0` for the exact route, whose entries are the
     /// exact values rounded once.
     pub fn construction_error(&self) -> f64 {
         self.construction_error
