@@ -98,18 +98,22 @@
 //! every pair `n <= 16` in the debug suite; the ignored sweep over `n` in 20, 30, 40, 50, 64
 //! with eight `m` each, run in release): the largest entrywise error relative to
 //! `||A||_inf` is 1.1e-14 (L2 with ends, `f64` route at `n <= 16`), 4.9e-15 (generalized
-//! inverse) and below 2e-16 for every other method, and every proven bound held. Where no fast route proves 1e-12 the
-//! exact route is used: in the sweep, 2 to 13 of its 38 pairs per method, all at `n >= 40`
-//! with `m` near `n` (Chebyshev and L2 families) or far below it (one-degree steps).
+//! inverse, with and without ends) and below 2e-16 for every other method, and every proven
+//! bound held. Where no fast route proves 1e-12 the exact route is used: in the sweep, 0 to
+//! 12 of its 38 pairs per method, all at `n >= 40` with `m` near `n` (Chebyshev and L2
+//! families) or far below it (one-degree steps).
 //!
 //! Building an operator is a one-time cost per `(method, n, m)` (then cached). Bench
-//! `operator_build` (release, 2-core machine shared with other jobs, medians of 9): L2 with
-//! C0 ends 1.9 / 3.8 / 6.6 / 65 / 83 / 207 µs at `(4,3) (5,4) (10,5) (15,10) (20,10)
-//! (30,15)` (exact route 81 µs / 87 µs / 0.2 / 1.2 / 1.8 / 14 ms), 1.7 ms at `64 -> 32`;
-//! Forrest 2.8–165 µs (exact 0.16–109 ms); the one-degree methods whose steps need
-//! double-word and the Chebyshev family 10–1200 µs. Pairs left to the exact route cost what
-//! they did: up to seconds at degree 64 (e.g. L2 `64 -> 63` 2 s, perturbation `64 -> 32`
-//! 10 s), 17 s debug for the generalized inverse with ends at `64 -> 32`.
+//! `operator_build` (release, 2-core machine shared with other jobs, medians of 9; see
+//! `benches/README.md` for every method): L2 with C0 ends 4.7 / 4.7 / 10 / 38 / 41 / 91 µs
+//! at `(4,3) (5,4) (10,5) (15,10) (20,10) (30,15)` (exact route 0.1 / 0.1 / 0.2 / 1.3 / 2.0 /
+//! 22 ms), 0.6 ms at `64 -> 32`; Forrest 1.3–113 µs; the generalized inverse with fixed
+//! ends (a rank-two correction of the free one) 3.7–95 µs; Eck (its closed form, the
+//! truncated Chebyshev series) and the Chebyshev family 7–330 µs; the stepwise double-word
+//! methods (Piegl–Tiller, Farin, perturbation) up to 0.5–1.2 ms at `(30,15)`; every method
+//! 46–100 µs at `64 -> 63` (a one-degree truncation goes from the top). Pairs left to the
+//! exact route cost up to seconds at degree 64 (perturbation `64 -> 32` 5–9 s, the
+//! Chebyshev family at `64 -> 10` 20–40 ms).
 //!
 //! Certified bounds: `measured <= bound` is a property test for every method (and for
 //! rational curves in Euclidean space). Eck's and the perturbation bounds are the exact

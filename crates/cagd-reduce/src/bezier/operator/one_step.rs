@@ -18,6 +18,11 @@ pub(crate) struct Step {
     pub(crate) terms: Vec<(f64, Row)>,
 }
 
+/// `2k - 1` as the exponent of Eck's step `k` bound coefficient `2^-(2k-1)`.
+pub(crate) fn to_exp(k: usize) -> i64 {
+    2 * to_i(k) - 1
+}
+
 /// `f64` upper bound of a non-negative exact rational (rounded, then nudged up).
 pub(crate) fn up(x: &Q) -> f64 {
     q_to_f64(x) * (1.0 + 4.0 * f64::EPSILON)

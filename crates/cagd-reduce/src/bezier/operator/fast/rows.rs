@@ -1,5 +1,6 @@
-//! Rows of tracked numbers (linear functionals of the input control points) and the end
-//! interpolation of seed 000 Theorem 14.5.1 on them: the generic twins of `../ends.rs`.
+//! Rows (linear functionals of the input control points, each coefficient with a bound of
+//! its error) and the end interpolation of seed 000 Theorem 14.5.1 on them: the generic
+//! twins of `../ends.rs`.
 //!
 //! Every builder of this module runs its algorithm on *rows*: a row is the linear functional
 //! `sum_j row[j] P_j` of the input points; the input points themselves are the unit rows (or,
@@ -7,11 +8,83 @@
 
 use super::tracked::{Base, Tracked};
 
-/// A linear functional of the input points.
-pub(crate) type Row<B> = Vec<Tracked<B>>;
+/// A linear functional of the input points: its coefficients computed in the base
+/// arithmetic and, beside each, a bound of its distance from the exact coefficient (a
+/// running error analysis as [`Tracked`]'s, kept as two plain arrays so that the row
+/// operations below are straight loops without per-number bookkeeping).
+#[derive(Debug, Clone)]
+pub(crate) struct Row<B> {
+    /// The computed coefficients.
+    pub(crate) v: Vec<B>,
+    /// `e[c] >= |v[c] - exact_c|` (raw: the final rounding to `f64` and the rounding of
+    /// the error computation itself are added by [`Row::rounded`]).
+    pub(crate) e: Vec<f64>,
+}
 
 /// The rows of an operator and its own-bound terms `(coef, functional)`.
 pub(crate) type Rows<B> = (Vec<Row<B>>, Vec<(f64, Row<B>)>);
+
+/// The allowance per rounding relative to the magnitudes involved: `U / (1 - U)` rounded up.
+fn ru<B: Base>() -> f64 {
+    B::U * (1.0 + 1e-6)
+}
+
+/// `|x|` of a base number (as `f64`, within a relative `2^-52`, which the final doubling of
+/// [`Row::rounded`] covers).
+fn mag<B: Base>(x: B) -> f64 {
+    x.to_f64().abs()
+}
+
+impl<B: Base> Row<B> {
+    /// `len` exact zeros.
+    pub(crate) fn zeros(len: usize) -> Self {
+        Self {
+            v: vec![B::of(0.0); len],
+            e: vec![0.0; len],
+        }
+    }
+
+    /// The unit row `e_i` of length `len`.
+    pub(crate) fn unit(len: usize, i: usize) -> Self {
+        let mut r = Self::zeros(len);
+        r.v[i] = B::of(1.0);
+        r
+    }
+
+    /// A row of tracked entries.
+    pub(crate) fn from_tracked(x: &[Tracked<B>]) -> Self {
+        Self {
+            v: x.iter().map(|t| t.value()).collect(),
+            e: x.iter().map(|t| t.bound()).collect(),
+        }
+    }
+
+    /// Entry `c` as a tracked number.
+    pub(crate) fn at(&self, c: usize) -> Tracked<B> {
+        Tracked::from_parts(self.v[c], self.e[c])
+    }
+
+    /// The row with its entries in reverse order.
+    pub(crate) fn reversed(&self) -> Self {
+        let mut r = self.clone();
+        r.v.reverse();
+        r.e.reverse();
+        r
+    }
+
+    /// The entries rounded to `f64` and a rigorous bound of `sum_c |val_c - exact_c|` (the
+    /// final rounding and the rounding of the error computation included, as
+    /// [`Tracked::err`]).
+    pub(crate) fn rounded(&self) -> (Vec<f64>, f64) {
+        let v: Vec<f64> = self.v.iter().map(|x| x.to_f64()).collect();
+        let err: f64 = v
+            .iter()
+            .zip(&self.e)
+            .map(|(x, e)| 2.0 * (e + f64::EPSILON * x.abs()))
+            .sum();
+        (v, err)
+    }
+}
 
 /// `0` as a tracked number.
 pub(crate) fn zero<B: Base>() -> Tracked<B> {
@@ -20,62 +93,120 @@ pub(crate) fn zero<B: Base>() -> Tracked<B> {
 
 /// The `len` unit rows `e_0..e_{len-1}`.
 pub(crate) fn identity<B: Base>(len: usize) -> Vec<Row<B>> {
-    (0..len)
-        .map(|i| {
-            (0..len)
-                .map(|j| Tracked::of(if i == j { 1.0 } else { 0.0 }))
-                .collect()
-        })
-        .collect()
+    (0..len).map(|i| Row::unit(len, i)).collect()
 }
 
-/// `y += a x` (exact zeros of `x` skipped: they change nothing, error included).
-pub(crate) fn axpy<B: Base>(y: &mut [Tracked<B>], a: Tracked<B>, x: &[Tracked<B>]) {
-    for (u, v) in y.iter_mut().zip(x) {
-        if !v.is_exact_zero() {
-            *u = u.fma(a, *v);
-        }
+/// `y[..] += a x[off..off + len(y)]` on raw arrays (see [`axpy`]).
+pub(crate) fn axpy_window<B: Base>(y: &mut Row<B>, a: Tracked<B>, x: &Row<B>, off: usize) {
+    let (av, ae) = (a.value(), a.bound());
+    let am = mag(av);
+    if am == 0.0 && ae == 0.0 {
+        return;
+    }
+    let u = ru::<B>();
+    let len = y.v.len();
+    let (xv, xe) = (&x.v[off..off + len], &x.e[off..off + len]);
+    for (((yv, ye), xv), xe) in y.v.iter_mut().zip(y.e.iter_mut()).zip(xv).zip(xe) {
+        let t = av.mul(*xv);
+        *yv = yv.add(t);
+        *ye += am * xe + ae * (mag(*xv) + xe) + u * (mag(t) + mag(*yv));
     }
 }
 
+/// `y += a x`. Per entry: `|a| e_x + e_a (|x| + e_x)` propagated, plus the roundings of the
+/// product and the sum (`U (|a x| + |y|)`).
+pub(crate) fn axpy<B: Base>(y: &mut Row<B>, a: Tracked<B>, x: &Row<B>) {
+    axpy_window(y, a, x, 0);
+}
+
 /// `a x + b y`.
-pub(crate) fn lin2<B: Base>(
-    a: Tracked<B>,
-    x: &[Tracked<B>],
-    b: Tracked<B>,
-    y: &[Tracked<B>],
-) -> Row<B> {
-    x.iter().zip(y).map(|(u, v)| a.mul(*u).fma(b, *v)).collect()
+pub(crate) fn lin2<B: Base>(a: Tracked<B>, x: &Row<B>, b: Tracked<B>, y: &Row<B>) -> Row<B> {
+    let mut out = y.clone();
+    let (bv, be) = (b.value(), b.bound());
+    let (bm, u) = (mag(bv), ru::<B>());
+    for ((ov, oe), yv) in out.v.iter_mut().zip(out.e.iter_mut()).zip(&y.v) {
+        let t = bv.mul(*yv);
+        *oe = bm * *oe + be * (mag(*yv) + *oe) + u * mag(t);
+        *ov = t;
+    }
+    axpy(&mut out, a, x);
+    out
 }
 
-/// `a x + b y` for exact constants `a`, `b`, divided by the exact constant `d`.
-pub(crate) fn lin2_exact<B: Base>(
-    a: f64,
-    x: &[Tracked<B>],
-    b: f64,
-    y: &[Tracked<B>],
-    d: f64,
-) -> Row<B> {
-    x.iter()
-        .zip(y)
-        .map(|(u, v)| {
-            if u.is_exact_zero() && v.is_exact_zero() {
-                *u
-            } else {
-                u.scale_by(a).add(v.scale_by(b)).div_by(d)
-            }
-        })
-        .collect()
+/// `(a x + b y) / d` for exact constants `a`, `b` and `d != 0`.
+pub(crate) fn lin2_exact<B: Base>(a: f64, x: &Row<B>, b: f64, y: &Row<B>, d: f64) -> Row<B> {
+    let (ab, bb, db) = (B::of(a), B::of(b), B::of(d));
+    let (aa, ba, di, u) = (a.abs(), b.abs(), 1.0 / d.abs(), ru::<B>());
+    let len = x.v.len();
+    let mut out = Row {
+        v: Vec::with_capacity(len),
+        e: Vec::with_capacity(len),
+    };
+    for (((xv, xe), yv), ye) in x.v.iter().zip(&x.e).zip(&y.v).zip(&y.e) {
+        let (s, t) = (ab.mul(*xv), bb.mul(*yv));
+        let q = s.add(t);
+        let z = q.div(db);
+        out.v.push(z);
+        out.e.push(
+            ((aa * xe + ba * ye + u * (mag(s) + mag(t) + mag(q))) * di + u * mag(z))
+                * (1.0 + 1e-12),
+        );
+    }
+    out
 }
 
-/// `x / d`.
-pub(crate) fn div<B: Base>(x: &[Tracked<B>], d: Tracked<B>) -> Row<B> {
-    x.iter().map(|u| u.div(d)).collect()
+/// `x / d` (an infinite error bound if `d` is not bounded away from zero).
+pub(crate) fn div<B: Base>(x: &Row<B>, d: Tracked<B>) -> Row<B> {
+    let (dv, de) = (d.value(), d.bound());
+    let room = mag(dv) * (1.0 - 1e-12) - de;
+    let u = ru::<B>();
+    let mut out = x.clone();
+    for (v, e) in out.v.iter_mut().zip(out.e.iter_mut()) {
+        let z = v.div(dv);
+        let zm = mag(z) * (1.0 + 1e-12);
+        *e = if room > 0.0 {
+            (*e + zm * de) / room + u * zm
+        } else {
+            f64::INFINITY
+        };
+        *v = z;
+    }
+    out
 }
 
 /// `x * a`.
-pub(crate) fn scale<B: Base>(x: &[Tracked<B>], a: Tracked<B>) -> Row<B> {
-    x.iter().map(|u| u.mul(a)).collect()
+pub(crate) fn scale<B: Base>(x: &Row<B>, a: Tracked<B>) -> Row<B> {
+    let (av, ae) = (a.value(), a.bound());
+    let (am, u) = (mag(av), ru::<B>());
+    let mut out = x.clone();
+    for (v, e) in out.v.iter_mut().zip(out.e.iter_mut()) {
+        let t = av.mul(*v);
+        *e = am * *e + ae * (mag(*v) + *e) + u * mag(t);
+        *v = t;
+    }
+    out
+}
+
+/// `x_c * a_c` column by column (`a` tracked scalars, one per column).
+pub(crate) fn scale_cols<B: Base>(x: &Row<B>, a: &[Tracked<B>]) -> Row<B> {
+    let u = ru::<B>();
+    let mut out = x.clone();
+    for ((v, e), c) in out.v.iter_mut().zip(out.e.iter_mut()).zip(a) {
+        let (av, ae) = (c.value(), c.bound());
+        let t = av.mul(*v);
+        *e = mag(av) * *e + ae * (mag(*v) + *e) + u * mag(t);
+        *v = t;
+    }
+    out
+}
+
+/// `sum_c x_c a_c` (`a` tracked scalars, one per column) as a tracked number.
+pub(crate) fn dot<B: Base>(x: &Row<B>, a: &[Tracked<B>]) -> Tracked<B> {
+    let mut s = Tracked::of(0.0);
+    for (c, ac) in a.iter().enumerate().take(x.v.len()) {
+        s = s.fma(x.at(c), *ac);
+    }
+    s
 }
 
 /// `i64` of an index (indices here are at most 130).
@@ -96,7 +227,7 @@ pub(crate) fn idx(x: i64) -> usize {
 }
 
 /// `b_ij = C(m,i) C(n-m,j-i) / C(n,j)` (Lemma 14.5.1; `0` off the band).
-fn b<B: Base>(m: i64, n: i64, i: i64, j: i64) -> Tracked<B> {
+pub(crate) fn b<B: Base>(m: i64, n: i64, i: i64, j: i64) -> Tracked<B> {
     Tracked::binom(m, i)
         .mul(Tracked::binom(n - m, j - i))
         .div(Tracked::binom(n, j))

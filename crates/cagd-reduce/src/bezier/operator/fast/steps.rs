@@ -25,7 +25,7 @@ fn f(i: usize) -> f64 {
 }
 
 /// `(-1)^(k-i) C(k,i)`.
-fn sign_binom<B: Base>(k: usize, i: usize) -> Tracked<B> {
+pub(crate) fn sign_binom<B: Base>(k: usize, i: usize) -> Tracked<B> {
     let c = Tracked::binom(to_i(k), to_i(i));
     if (k - i) % 2 == 0 { c } else { c.neg() }
 }
@@ -33,7 +33,7 @@ fn sign_binom<B: Base>(k: usize, i: usize) -> Tracked<B> {
 /// `sum_i (-1)^(k-i) C(k,i) s_i` = `Delta^k` of the rows.
 fn delta_k<B: Base>(s: &[Row<B>]) -> Row<B> {
     let k = s.len() - 1;
-    let mut f = vec![zero(); s[0].len()];
+    let mut f = Row::zeros(s[0].v.len());
     for (i, row) in s.iter().enumerate() {
         super::rows::axpy(&mut f, sign_binom(k, i), row);
     }
@@ -60,8 +60,8 @@ fn backward<B: Base>(s: &[Row<B>], first: usize) -> Vec<Row<B>> {
     let k = s.len() - 1;
     let mut out: Vec<Row<B>> = vec![s[k].clone()];
     for i in ((first + 1)..k).rev() {
-        let prev = out.last().cloned().unwrap_or_default();
-        out.push(lin2_exact(f(k), &s[i], -f(k - i), &prev, f(i)));
+        let next = lin2_exact(f(k), &s[i], -f(k - i), &out[out.len() - 1], f(i));
+        out.push(next);
     }
     out.reverse();
     out
@@ -70,7 +70,7 @@ fn backward<B: Base>(s: &[Row<B>], first: usize) -> Vec<Row<B>> {
 /// Inverse elevation of a degenerate polygon (eq. 14.2.3): exactly of degree `k-1`, so the
 /// forward and the backward recursion give the same points in exact arithmetic; each is
 /// used on the half where it does not amplify rounding (Forrest's split).
-fn inverse_elevation<B: Base>(pbar: &[Row<B>]) -> Vec<Row<B>> {
+pub(crate) fn inverse_elevation<B: Base>(pbar: &[Row<B>]) -> Vec<Row<B>> {
     let n = pbar.len() - 2;
     let b0 = n / 2 + 1;
     let mut out = forward(pbar, n / 2);
@@ -84,28 +84,23 @@ fn inverse_elevation<B: Base>(pbar: &[Row<B>]) -> Vec<Row<B>> {
 pub(crate) fn step<B: Base>(method: Method, s: &[Row<B>]) -> Step<B> {
     let k = s.len() - 1;
     let n = k - 1;
-    let half = |x: Tracked<B>| x.mul(Tracked::of(0.5));
     match method {
         Method::Forrest => {
-            let fwd = forward(s, n / 2);
-            let first = n.div_ceil(2);
-            let bwd = backward(s, first.min(n / 2));
-            let b0 = first.min(n / 2);
-            let rows = (0..=n)
-                .map(|i| {
-                    if n % 2 == 0 && i == n / 2 {
-                        fwd[i]
-                            .iter()
-                            .zip(&bwd[i - b0])
-                            .map(|(x, y)| half(x.add(*y)))
-                            .collect()
-                    } else if 2 * i < n {
-                        fwd[i].clone()
-                    } else {
-                        bwd[i - b0].clone()
-                    }
-                })
-                .collect();
+            // Forward on the first half, backward on the second (both recursions stop at
+            // `n / 2`); the middle point of an even `n` is their average.
+            let half = n / 2;
+            let mut fwd = forward(s, half);
+            let mut bwd = backward(s, half).into_iter();
+            let (mid_f, mid_b) = (fwd.pop(), bwd.next());
+            let mut rows = fwd;
+            if let (Some(f), Some(b)) = (mid_f, mid_b) {
+                rows.push(if n % 2 == 0 {
+                    lin2_exact(1.0, &f, 1.0, &b, 2.0)
+                } else {
+                    f
+                });
+            }
+            rows.extend(bwd);
             Step {
                 rows,
                 terms: Vec::new(),
@@ -253,9 +248,15 @@ pub(crate) fn residual_coef<B: Base>(method: Method, k: usize) -> Option<f64> {
     }
     // The step on the single column e_0.
     let e0: Vec<Row<B>> = (0..=k)
-        .map(|i| vec![Tracked::of(if i == 0 { 1.0 } else { 0.0 })])
+        .map(|i| {
+            if i == 0 {
+                Row::unit(1, 0)
+            } else {
+                Row::zeros(1)
+            }
+        })
         .collect();
-    let q: Vec<Tracked<B>> = step(method, &e0).rows.iter().map(|r| r[0]).collect();
+    let q: Vec<Tracked<B>> = step(method, &e0).rows.iter().map(|r| r.at(0)).collect();
     // Residual column 0: e_0 - E q; r_i = res_i / c_0, c_0 = (-1)^k.
     let kk = Tracked::small(to_i(k));
     let mut coef = 0.0f64;
@@ -273,6 +274,26 @@ pub(crate) fn residual_coef<B: Base>(method: Method, k: usize) -> Option<f64> {
     Some(coef * (1.0 + 4.0 * f64::EPSILON))
 }
 
+/// [`residual_coef`] in double-word, remembered per `(method, k)` for the process: a
+/// constant of the step (like the `W_n` table of `wn_table.rs`), whose `O(k)` evaluation on
+/// one-column rows is allocation-bound (about 40 % of a Forrest build at `(30,15)`).
+fn residual_coef_cached(method: Method, k: usize) -> Option<f64> {
+    use std::collections::HashMap;
+    use std::sync::{OnceLock, RwLock};
+    type Memo = RwLock<HashMap<((u8, u64, u64), usize), Option<f64>>>;
+    static MEMO: OnceLock<Memo> = OnceLock::new();
+    let memo = MEMO.get_or_init(|| RwLock::new(HashMap::new()));
+    let key = (method.key(), k);
+    if let Some(c) = memo.read().ok().and_then(|m| m.get(&key).copied()) {
+        return c;
+    }
+    let c = residual_coef::<super::dd::Dd>(method, k);
+    if let Ok(mut m) = memo.write() {
+        m.insert(key, c);
+    }
+    c
+}
+
 /// The stepwise operator `n -> m`: rows (`m + 1`) and the summed own-bound terms (dropped,
 /// like the exact route, if one step has none).
 pub(crate) fn stepwise<B: Base>(method: Method, n: usize, m: usize) -> Rows<B> {
@@ -285,7 +306,7 @@ pub(crate) fn stepwise<B: Base>(method: Method, n: usize, m: usize) -> Rows<B> {
             if st.terms.is_empty() {
                 // O(k) work: always in double-word, so the coefficient is tight even when
                 // it is tiny beside the step's entries.
-                match residual_coef::<super::dd::Dd>(method, k) {
+                match residual_coef_cached(method, k) {
                     Some(c) => terms.push((c, delta_k(&s))),
                     None => valid = false,
                 }

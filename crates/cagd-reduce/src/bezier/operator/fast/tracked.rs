@@ -16,6 +16,9 @@ pub(crate) trait Base: Copy {
     fn of(x: f64) -> Self;
     /// A `u128` rounded, with its absolute rounding error bound.
     fn of_u128(x: u128) -> (Self, f64);
+    /// `hi + lo` (`hi` the nearest `f64` of an integer, `lo` the rest rounded to `f64`,
+    /// see [`binom_parts`]) with its absolute error bound.
+    fn of_parts(hi: f64, lo: f64) -> (Self, f64);
     /// The operations.
     fn add(self, y: Self) -> Self;
     /// `self - y`.
@@ -38,6 +41,14 @@ impl Base for f64 {
         let v = x as f64;
         let e = if x < (1u128 << 53) { 0.0 } else { v * Self::U };
         (v, e)
+    }
+    fn of_parts(hi: f64, lo: f64) -> (Self, f64) {
+        // The rest `C - hi` is `lo` up to one rounding of it (`u |lo|`, and `2^-100 hi`
+        // covers the case of a renormalised pair).
+        (
+            hi,
+            lo.abs() * (1.0 + 2.0 * f64::EPSILON) + hi * 2f64.powi(-100),
+        )
     }
     fn add(self, y: Self) -> Self {
         self + y
@@ -71,6 +82,15 @@ impl Base for Dd {
         };
         (Dd::from_u128(x), e)
     }
+    fn of_parts(hi: f64, lo: f64) -> (Self, f64) {
+        // Exact below 2^106 (lo is then the exact rest); above, relative error <= u^2.
+        let e = if hi < 2f64.powi(106) {
+            0.0
+        } else {
+            hi * Self::U
+        };
+        (Dd { hi, lo }, e)
+    }
     fn add(self, y: Self) -> Self {
         Dd::add(self, y)
     }
@@ -86,6 +106,30 @@ impl Base for Dd {
     fn to_f64(self) -> f64 {
         self.hi + self.lo
     }
+}
+
+/// `C(n, k)` as `(hi, lo)`: `hi` the nearest `f64`, `lo` the rest `C(n,k) - hi` rounded to
+/// `f64` (exact below `2^106`), from a process-wide table (the `u128 -> f64` conversions are
+/// libcalls, and the builders ask for thousands of binomials).
+pub(crate) fn binom_parts(n: usize, k: usize) -> (f64, f64) {
+    use std::sync::OnceLock;
+    static TABLE: OnceLock<Vec<Vec<(f64, f64)>>> = OnceLock::new();
+    let t = TABLE.get_or_init(|| {
+        (0..=cagd_core::MAX_BINOMIAL_N)
+            .map(|n| {
+                (0..=n)
+                    .map(|k| {
+                        let d = Dd::from_u128(cagd_core::binomial(n, k));
+                        (d.hi, d.lo)
+                    })
+                    .collect()
+            })
+            .collect()
+    });
+    t.get(n)
+        .and_then(|r| r.get(k))
+        .copied()
+        .unwrap_or((0.0, 0.0))
 }
 
 /// A computed value and a bound of its distance from the exact value.
@@ -126,11 +170,28 @@ impl<B: Base> Tracked<B> {
             clippy::cast_sign_loss,
             reason = "0 <= k <= n <= 130"
         )]
-        Self::int(cagd_core::binomial(n as usize, k as usize))
+        let (hi, lo) = binom_parts(n as usize, k as usize);
+        let (v, e) = B::of_parts(hi, lo);
+        Self { v, e }
     }
 
     fn mag(self) -> f64 {
         self.v.to_f64().abs()
+    }
+
+    /// A computed value `v` and a bound `e` of its distance from the exact value.
+    pub(crate) fn from_parts(v: B, e: f64) -> Self {
+        Self { v, e }
+    }
+
+    /// The computed value in the base arithmetic.
+    pub(crate) fn value(self) -> B {
+        self.v
+    }
+
+    /// The raw propagated error bound (before [`Tracked::err`]'s final allowances).
+    pub(crate) fn bound(self) -> f64 {
+        self.e
     }
 
     /// The value rounded to `f64`.
@@ -180,21 +241,6 @@ impl<B: Base> Tracked<B> {
             f64::INFINITY
         };
         Self::with(q, e)
-    }
-
-    /// `self * c` for an exact `f64` constant `c`.
-    pub(crate) fn scale_by(self, c: f64) -> Self {
-        Self::with(self.v.mul(B::of(c)), self.e * c.abs())
-    }
-
-    /// `self / c` for an exact non-zero `f64` constant `c`.
-    pub(crate) fn div_by(self, c: f64) -> Self {
-        Self::with(self.v.div(B::of(c)), self.e / c.abs())
-    }
-
-    /// Whether this is an exact zero (no value, no error).
-    pub(crate) fn is_exact_zero(self) -> bool {
-        self.e == 0.0 && self.v.to_f64() == 0.0
     }
 
     /// `-self`.

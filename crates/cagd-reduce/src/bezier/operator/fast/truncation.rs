@@ -28,7 +28,11 @@
 //! - Back to degree `M`: the coefficient of `B_s^M` in `p_k` is
 //!   `sum_l c_l C(M-k, s-l) / C(M, s)` (degree elevation).
 
-use super::rows::{Row, Rows, auxiliary, axpy, end_points, identity, idx, scale, to_i, zero};
+use super::rows::{
+    Row, Rows, auxiliary, axpy, axpy_window, b, div, dot, end_points, identity, idx, scale,
+    scale_cols, to_i, zero,
+};
+use super::steps::{inverse_elevation, sign_binom};
 use super::tracked::{Base, Tracked};
 
 /// The orthogonal family of a truncation.
@@ -94,9 +98,11 @@ fn elevated_exact<B: Base>(c: &[i128], d: i64, s: i64) -> Option<Tracked<B>> {
     Some(if acc < 0 { t.neg() } else { t })
 }
 
-/// `(last+1) x (N+1)`: row `k` is the functional giving the `k`-th expansion coefficient of
-/// a degree-`N` polynomial from its Bernstein coefficients, `k = 0..=last`.
-fn functionals<B: Base>(family: Family, nn: i64, last: i64) -> Vec<Row<B>> {
+/// `(last-first+1) x (N+1)`: row `k - first` is the functional giving the `k`-th expansion
+/// coefficient of a degree-`N` polynomial from its Bernstein coefficients, `k = first..=last`: the correlation
+/// `sum_l c_l d_(j+l)` as `k + 1` row updates, then the column factors `C(N,j)` and the
+/// row's common factor.
+fn functionals<B: Base>(family: Family, nn: i64, first: i64, last: i64) -> Vec<Row<B>> {
     // w_i = C(2i,i)/4^i for i <= 2N (Chebyshev only).
     let mut w: Vec<Tracked<B>> = vec![Tracked::of(1.0)];
     if let Family::Chebyshev = family {
@@ -108,7 +114,8 @@ fn functionals<B: Base>(family: Family, nn: i64, last: i64) -> Vec<Row<B>> {
             );
         }
     }
-    (0..=last)
+    let width = idx(nn) + 1;
+    (first..=last)
         .map(|k| {
             let kk = nn + k;
             let c = coefficients::<B>(family, k);
@@ -132,15 +139,15 @@ fn functionals<B: Base>(family: Family, nn: i64, last: i64) -> Vec<Row<B>> {
                     )
                 }
             };
-            (0..=nn)
-                .map(|j| {
-                    let mut acc = zero::<B>();
-                    for (l, cl) in c.iter().enumerate() {
-                        acc = acc.fma(*cl, d[idx(j) + l]);
-                    }
-                    acc.mul(factor.mul(Tracked::binom(nn, j)))
-                })
-                .collect()
+            let d = Row::from_tracked(&d);
+            let mut acc = Row::zeros(width);
+            for (l, cl) in c.iter().enumerate() {
+                axpy_window(&mut acc, *cl, &d, l);
+            }
+            let cols: Vec<Tracked<B>> = (0..=nn)
+                .map(|j| factor.mul(Tracked::binom(nn, j)))
+                .collect();
+            scale_cols(&acc, &cols)
         })
         .collect()
 }
@@ -149,8 +156,8 @@ fn functionals<B: Base>(family: Family, nn: i64, last: i64) -> Vec<Row<B>> {
 /// kept coefficient functionals `f_0..f_M`.
 /// Only rows `s <= last` are computed (the others are left zero).
 fn back_to_bernstein<B: Base>(family: Family, mm: i64, last: i64, f: &[Row<B>]) -> Vec<Row<B>> {
-    let len = f.first().map_or(0, Vec::len);
-    let mut out: Vec<Row<B>> = vec![vec![zero(); len]; idx(mm) + 1];
+    let len = f.first().map_or(0, |r| r.v.len());
+    let mut out: Vec<Row<B>> = vec![Row::zeros(len); idx(mm) + 1];
     for k in 0..=mm {
         let c = coefficients::<B>(family, k);
         let ci = integer_coefficients(family, k);
@@ -172,6 +179,134 @@ fn back_to_bernstein<B: Base>(family: Family, mm: i64, last: i64, f: &[Row<B>]) 
     out
 }
 
+/// The coefficient functionals on `P`, `f_k = sum_i phi_ki P^II_i`, with
+/// `P^II_i = C(n, r+1+i) / C(N, i) A_(r+1+i)` and the auxiliary points
+/// `A_j = P_j - sum_l b_lj Q_l` over the fixed end points (see `rows::auxiliary`): expanded as
+/// `w_k = phi_k C(n, r+1+i) / C(N, i)` on `P_(r+1+i)` minus one scalar `w_k . b_l` per end
+/// point, `O(N (r + p + 2))` per functional instead of a dense product.
+fn on_points<B: Base>(
+    phi: Vec<Row<B>>,
+    n: usize,
+    m: usize,
+    r: i32,
+    p: i32,
+    left: &[Row<B>],
+    right: &[Row<B>],
+) -> Vec<Row<B>> {
+    let (ni, mi, ri, pi) = (to_i(n), to_i(m), i64::from(r), i64::from(p));
+    if ri == -1 && pi == -1 {
+        return phi;
+    }
+    let nn = ni - (ri + pi + 2);
+    let sc: Vec<Tracked<B>> = (0..=nn)
+        .map(|i| Tracked::binom(ni, ri + 1 + i).div(Tracked::binom(nn, i)))
+        .collect();
+    let ends: Vec<(i64, &Row<B>)> = left
+        .iter()
+        .enumerate()
+        .map(|(l, q)| (to_i(l), q))
+        .chain(
+            right
+                .iter()
+                .enumerate()
+                .map(|(l, q)| (mi - pi + to_i(l), q)),
+        )
+        .collect();
+    let betas: Vec<Vec<Tracked<B>>> = ends
+        .iter()
+        .map(|(l, _)| (0..=nn).map(|i| b::<B>(mi, ni, *l, ri + 1 + i)).collect())
+        .collect();
+    phi.iter()
+        .map(|ph| {
+            let w = scale_cols(ph, &sc);
+            let mut row = Row::zeros(n + 1);
+            row.v[idx(ri + 1)..=idx(ni - pi - 1)].copy_from_slice(&w.v);
+            row.e[idx(ri + 1)..=idx(ni - pi - 1)].copy_from_slice(&w.e);
+            for ((_, q), beta) in ends.iter().zip(&betas) {
+                axpy(&mut row, dot(&w, beta).neg(), q);
+            }
+            row
+        })
+        .collect()
+}
+
+/// A truncation by one degree (`N = M + 1`) from the top (beyond the seed): the highest
+/// coefficient is the ratio of leading power coefficients, `f_N(S) = Delta^N S / lead(p_N)`
+/// with `lead(p_N) = sum_l |c_l|` (`C(2N+a+b, N)` for Jacobi, `2^(2N-1)` for Chebyshev), a
+/// single signed binomial per entry; `S - f_N p_N` is then exactly of degree `M`, and its
+/// degree-`M` coefficients come from the inverse elevation of `../steps.rs` (Forrest's
+/// split). This avoids the alternating sums of the low-order functionals, whose
+/// cancellation grows like `4^k` and defeats even double-word at degree 64. Returns the
+/// rows of `U` (degree `M`) and `f_N` on the points.
+#[allow(clippy::too_many_arguments, reason = "the truncation's own parameters")]
+fn top_complement<B: Base>(
+    family: Family,
+    n: usize,
+    m: usize,
+    r: i32,
+    p: i32,
+    left: &[Row<B>],
+    right: &[Row<B>],
+    input: &[Row<B>],
+) -> (Vec<Row<B>>, Row<B>) {
+    let (ni, ri, pi) = (to_i(n), i64::from(r), i64::from(p));
+    let nn = ni - (ri + pi + 2);
+    // S's Bernstein coefficients (degree N) as functionals of P: P^II (eq. 14.5.14).
+    let s: Vec<Row<B>> = if ri == -1 && pi == -1 {
+        input.to_vec()
+    } else {
+        auxiliary(n, m, r, p, left, right, input)
+            .iter()
+            .enumerate()
+            .map(|(i, a)| {
+                let i = to_i(i);
+                scale(a, Tracked::binom(ni, ri + 1 + i).div(Tracked::binom(nn, i)))
+            })
+            .collect()
+    };
+    let mut d = Row::zeros(n + 1);
+    for (j, row) in s.iter().enumerate() {
+        axpy(&mut d, sign_binom(idx(nn), j), row);
+    }
+    let c = coefficients::<B>(family, nn);
+    let lead = match family {
+        Family::Chebyshev => Tracked::of(2f64.powi(i32::try_from(2 * nn - 1).unwrap_or(i32::MAX))),
+        Family::Jacobi { a, b } => Tracked::binom(2 * nn + a + b, nn),
+    };
+    let top = div(&d, lead);
+    let g: Vec<Row<B>> = s
+        .iter()
+        .zip(&c)
+        .enumerate()
+        .map(|(i, (si, ci))| {
+            let mut gi = si.clone();
+            axpy(&mut gi, ci.div(Tracked::binom(nn, to_i(i))).neg(), &top);
+            gi
+        })
+        .collect();
+    (inverse_elevation(&g), top)
+}
+
+/// Whether the `f64` route of a truncation is sure to be refused, judged by one row: the
+/// proven relative error of the `f64` coefficient functional of degree `k` (the highest the
+/// operator or its bound terms need) on degree-`N` polynomials exceeds `4 tol` (it tracks the
+/// operator's own proven error within a factor of about 2 at the pairs of the
+/// `operator_build` bench: 7e-10 against 5e-10 at L2-C0 `(30,15)`). Saves the
+/// `f64` attempt where cancellation makes it hopeless (a performance choice only: the
+/// double-word route is proven on its own).
+pub(crate) fn f64_hopeless(family: Family, nn: i64, k: i64, tol: f64) -> bool {
+    if nn < 0 || k < 0 {
+        return false;
+    }
+    let row = functionals::<f64>(family, nn, k, k).pop();
+    row.is_some_and(|r| {
+        let (v, e) = r.rounded();
+        let s: f64 = v.iter().map(|x| x.abs()).sum();
+        // A NaN or infinite bound counts as hopeless too.
+        e.is_nan() || e > 4.0 * tol * s
+    })
+}
+
 /// The operator `n -> m` with `(r, p)` ends and the interior by truncation in `family`;
 /// the bound terms (Chebyshev: `factor * ||f_k . P||`, `k > M`) when `factor` is given.
 pub(crate) fn truncated<B: Base>(
@@ -189,32 +324,6 @@ pub(crate) fn truncated<B: Base>(
     let mut terms = Vec::new();
     if ri + pi + 1 < mi {
         let (nn, mm) = (ni - (ri + pi + 2), mi - (ri + pi + 2));
-        // The bound terms need every coefficient, the operator only the kept ones.
-        let last = if factor.is_some() { nn } else { mm };
-        let phi = functionals::<B>(family, nn, last);
-        // Coefficient functionals on P: f_k = sum_i phi_ki P^II_i (P^II = P when r = p = -1).
-        let f: Vec<Row<B>> = if ri == -1 && pi == -1 {
-            phi
-        } else {
-            let aux = auxiliary(n, m, r, p, &left, &right, &input);
-            let p2: Vec<Row<B>> = aux
-                .iter()
-                .enumerate()
-                .map(|(i, a)| {
-                    let i = to_i(i);
-                    scale(a, Tracked::binom(ni, ri + 1 + i).div(Tracked::binom(nn, i)))
-                })
-                .collect();
-            phi.iter()
-                .map(|ph| {
-                    let mut row = vec![zero(); n + 1];
-                    for (c, q) in ph.iter().zip(&p2) {
-                        axpy(&mut row, *c, q);
-                    }
-                    row
-                })
-                .collect()
-        };
         // A symmetric problem (`r = p`, a symmetric weight) has a centro-symmetric operator,
         // `a_(m-i, n-j) = a_ij`: the second half of the interior rows mirrors the first
         // (the mirrored error bounds hold for the mirrored exact entries).
@@ -224,13 +333,23 @@ pub(crate) fn truncated<B: Base>(
                 Family::Jacobi { a, b } => a == b,
             };
         let last_i = if symmetric { mi / 2 } else { mi - pi - 1 };
-        let u = back_to_bernstein(family, mm, last_i - ri - 1, &f[..=idx(mm)]);
+        let (u, high) = if nn == mm + 1 {
+            let (u, top) = top_complement(family, n, m, r, p, &left, &right, &input);
+            (u, vec![top])
+        } else {
+            // The bound terms need every coefficient, the operator only the kept ones.
+            let last = if factor.is_some() { nn } else { mm };
+            let phi = functionals::<B>(family, nn, 0, last);
+            // Coefficient functionals on P: f_k = sum_i phi_ki P^II_i (P^II = P when
+            // r = p = -1).
+            let mut f = on_points(phi, n, m, r, p, &left, &right);
+            let u = back_to_bernstein(family, mm, last_i - ri - 1, &f[..=idx(mm)]);
+            (u, f.split_off(idx(mm) + 1))
+        };
         // Q_i = U_{i-r-1} C(M, i-r-1) / C(m, i)   (14.5.16)
         for i in (ri + 1)..=(mi - pi - 1) {
             if i > last_i {
-                let mut row = rows[idx(mi - i)].clone();
-                row.reverse();
-                rows.push(row);
+                rows.push(rows[idx(mi - i)].reversed());
                 continue;
             }
             let s = i - ri - 1;
@@ -240,7 +359,7 @@ pub(crate) fn truncated<B: Base>(
             ));
         }
         if let Some(coef) = factor {
-            terms.extend(f.into_iter().skip(idx(mm) + 1).map(|g| (coef, g)));
+            terms.extend(high.into_iter().map(|g| (coef, g)));
         }
     }
     rows.extend(right);
