@@ -227,6 +227,21 @@ fn curve_strategy(
         })
 }
 
+/// `reach^p` of the farther unclamped end: `reach` is the distance from the end of the
+/// valid domain to the farthest outer knot over the length of the end span (`1` for a
+/// clamped end).
+fn extrapolation_reach(c: &BSplineCurve) -> f64 {
+    let (p, k) = (c.degree(), c.knots());
+    let n = k.len() - p - 1;
+    let (a, b) = (k[p], k[n]);
+    let first = k[p + 1..].iter().copied().find(|&x| x > a).unwrap_or(b) - a;
+    let last = b - k[..n].iter().rev().copied().find(|&x| x < b).unwrap_or(a);
+    let reach = ((a - k[0]) / first)
+        .max((k[k.len() - 1] - b) / last)
+        .max(1.0);
+    reach.powi(i32::try_from(p).unwrap_or(i32::MAX))
+}
+
 fn scale_of(c: &BSplineCurve) -> f64 {
     c.points().iter().fold(1.0f64, |m, x| m.max(x.abs()))
 }
@@ -259,7 +274,19 @@ proptest! {
     #[test]
     fn curve_pieces_curve_is_the_identity(c in curve_strategy(9, 100, true)) {
         let pieces = to_bezier_pieces(&c).unwrap();
-        let back = pieces_to_nurbs(&pieces, None).unwrap();
+        let back = match pieces_to_nurbs(&pieces, None) {
+            Ok(back) => back,
+            // An unclamped end's outer points are blossoms extrapolated from the end span
+            // out to the outer knots: the pieces' rounding grows by `reach^p`, `reach` the
+            // distance to the farthest outer knot over the end span's length. Far out
+            // (`reach^p > 1e10`, e.g. a 0.05-long end span with outer knots 7 away at
+            // degree 9: 1e19) the recovered weight may come out non-positive, which is
+            // refused by name; anywhere else it is a failure.
+            Err(cagd_core::Error::NonPositiveWeight { .. }) if extrapolation_reach(&c) > 1e10 => {
+                return Ok(());
+            }
+            Err(e) => return Err(TestCaseError::fail(format!("pieces_to_nurbs: {e}"))),
+        };
         // The same knot vector, clamped or not (an unclamped curve's pieces carry its
         // outer knots).
         prop_assert_eq!(back.curve.knots(), c.knots());
