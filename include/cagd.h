@@ -1587,6 +1587,9 @@ CagdStatus cagd_bspline_copy(const struct CagdBSpline *spline,
  *   the joints are not `C^continuity` within `tol`.
  * - `CAGD_ERR_NON_FINITE`: a merged control point overflows (coordinates near the
  *   `double` range).
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a merged weight of rational segments overflows to
+ *   infinity (weights near the `double` range; the spline's weights must be finite and
+ *   positive).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2056,6 +2059,8 @@ CagdStatus cagd_bsplinesurface_eval(const struct CagdBSplineSurface *surface,
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced NURBS weight is not positive.
  * - `CAGD_ERR_CONDITION_NOT_MET`: coordinates near the limits of f64, whose rounding
  *   level in the centred model frame overflows.
+ * - `CAGD_ERR_NON_FINITE`: a reduced control point overflows (coordinates near the limits
+ *   of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety

@@ -86,6 +86,9 @@ unsafe fn handles_in<'a>(
 ///   the joints are not `C^continuity` within `tol`.
 /// - `CAGD_ERR_NON_FINITE`: a merged control point overflows (coordinates near the
 ///   `double` range).
+/// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a merged weight of rational segments overflows to
+///   infinity (weights near the `double` range; the spline's weights must be finite and
+///   positive).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

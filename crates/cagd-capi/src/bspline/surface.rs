@@ -335,6 +335,8 @@ unsafe fn outputs<'a>(
 /// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced NURBS weight is not positive.
 /// - `CAGD_ERR_CONDITION_NOT_MET`: coordinates near the limits of f64, whose rounding
 ///   level in the centred model frame overflows.
+/// - `CAGD_ERR_NON_FINITE`: a reduced control point overflows (coordinates near the limits
+///   of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
