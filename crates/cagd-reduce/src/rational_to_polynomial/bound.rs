@@ -93,13 +93,21 @@ fn product_into(
     out: &mut [f64],
 ) {
     let cols = b + e + 1;
+    // The v factors C(b, j) C(e, l) / C(b + e, j + l), once per call (the same numbers as
+    // computed in the loop, so the products are bit for bit those of the definition).
+    let cvs: Vec<f64> = (0..=b)
+        .flat_map(|j| {
+            (0..=e)
+                .map(move |l| binomial_f64(b, j) * binomial_f64(e, l) / binomial_f64(b + e, j + l))
+        })
+        .collect();
     for i in 0..=a {
         for j in 0..=b {
             let fij = f[i * (b + 1) + j] * sign;
             for k in 0..=c {
                 let cu = binomial_f64(a, i) * binomial_f64(c, k) / binomial_f64(a + c, i + k);
                 for l in 0..=e {
-                    let cv = binomial_f64(b, j) * binomial_f64(e, l) / binomial_f64(b + e, j + l);
+                    let cv = cvs[j * (e + 1) + l];
                     let s = fij * cu * cv;
                     let o = ((i + k) * cols + j + l) * dim;
                     let q = (k * (e + 1) + l) * dim;

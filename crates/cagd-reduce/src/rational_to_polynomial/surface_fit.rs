@@ -8,7 +8,7 @@
 //! directions are placed anew by [`refine`] (on the worst patch bound of each knot
 //! interval) and the fit is repeated.
 
-use cagd_core::kernel::de_casteljau;
+use cagd_core::kernel::bernstein_all;
 use cagd_core::{BSplineSurface, Error, Result, basis_functions, gauss_legendre};
 
 use super::bound::patch_bound;
@@ -20,10 +20,22 @@ use crate::{BandedLsq, SpanBound};
 /// Most refine-and-refit rounds, and most patches.
 const MAX_ROUNDS: usize = 40;
 const MAX_PATCHES: usize = 1 << 20;
-/// Most patches fitted and bounded over all rounds of one refinement: `2^17`, about a
-/// second in a release build (ADDED; bounded work, issue 18: a 3 x 4 NURBS surface within
-/// 0.5 of coordinates up to 2e6 asked for 883 000 patches and minutes).
+/// Most patches fitted and bounded over all rounds of one refinement: `2^17` bicubic-3D
+/// patches, about a second in a release build, a patch counted [`patch_cost`] times
+/// (ADDED; bounded work, issue 18: a 3 x 4 NURBS surface within 0.5 of coordinates up to
+/// 2e6 asked for 883 000 patches and minutes; a degree (5, 12) NURBS surface took 24 s of
+/// bicubic-priced patches in the C ABI fuzz run).
 const MAX_PATCH_WORK: usize = 1 << 17;
+
+/// The cost of one fitted and bounded patch of an input of degrees `(p, q)` in `d`
+/// dimensions, in bicubic-3D patches: `max(1, (p + 1)(q + 1)(max(p, q) + 1) / 64)` (the
+/// product bound elevates the `(p + 1)(q + 1)` net and bounds its rows by subdivision, a
+/// factor of the degree more) times `ceil((d + 1) / 4)`.
+fn patch_cost((p, q): (usize, usize), d: usize) -> usize {
+    ((p + 1) * (q + 1) * (p.max(q) + 1) / 64)
+        .max(1)
+        .saturating_mul((d + 1).div_ceil(4))
+}
 
 /// A NURBS surface as homogeneous Bézier patches on a grid of breaks.
 #[derive(Debug, Clone)]
@@ -82,27 +94,58 @@ impl RationalPatches {
         b[1..].partition_point(|x| *x <= mid).min(b.len() - 2)
     }
 
-    /// `C(u, v)` on patch `(iu, iv)` (global parameters) into `out`.
-    fn eval(&self, (iu, iv): (usize, usize), u: f64, v: f64, out: &mut [f64]) {
-        let ((p, q), hd) = (self.degrees, self.dim + 1);
-        let patch = &self.hom[iu * self.nv() + iv];
-        let su = (u - self.breaks_u[iu]) / (self.breaks_u[iu + 1] - self.breaks_u[iu]);
-        let sv = (v - self.breaks_v[iv]) / (self.breaks_v[iv + 1] - self.breaks_v[iv]);
-        let mut col = vec![0.0; (p + 1) * hd];
-        let mut work = vec![0.0; (q + 1).max(p + 1) * hd];
-        for i in 0..=p {
-            de_casteljau(
-                &patch[i * (q + 1) * hd..(i + 1) * (q + 1) * hd],
-                hd,
-                sv,
-                &mut work,
-                &mut col[i * hd..(i + 1) * hd],
-            );
-        }
+    /// `C(u_a, v_b)` for every pair of a grid of nodes, into `out` (row-major in `a`, `dim`
+    /// coordinates per point): `us[a] = (iu, u)` and `vs[b] = (iv, v)` give each node's
+    /// patch index and global parameter. Tensor Bernstein sums in homogeneous space: per
+    /// `u` node the `(p+1) x (q+1)` net of each patch column used is contracted with the
+    /// `u` Bernstein values once (`O(p q)`), then each `v` node takes `O(q)` — instead of
+    /// `q + 2` de Casteljau runs (`O(p q^2)`) per point. Every sum is a convex combination,
+    /// as in de Casteljau; the samples feed the least-squares fit, whose result is certified
+    /// separately ([`patch_bounds`]).
+    fn sample_grid(&self, us: &[(usize, f64)], vs: &[(usize, f64)], out: &mut [f64]) {
+        let ((p, q), d) = (self.degrees, self.dim);
+        let hd = d + 1;
+        let nv = self.nv();
+        let local = |b: &[f64], i: usize, x: f64| (x - b[i]) / (b[i + 1] - b[i]);
+        let bern_v: Vec<f64> = vs
+            .iter()
+            .flat_map(|&(iv, v)| {
+                let mut b = vec![0.0; q + 1];
+                bernstein_all(q, local(&self.breaks_v, iv, v), &mut b);
+                b
+            })
+            .collect();
+        let mut bu = vec![0.0; p + 1];
+        let mut contracted = vec![0.0; nv * (q + 1) * hd];
+        let mut filled = vec![usize::MAX; nv];
         let mut h = vec![0.0; hd];
-        de_casteljau(&col, hd, su, &mut work, &mut h);
-        for (o, x) in out.iter_mut().zip(&h) {
-            *o = x / h[self.dim];
+        let cols = vs.len() * d;
+        for (a, &(iu, u)) in us.iter().enumerate() {
+            bernstein_all(p, local(&self.breaks_u, iu, u), &mut bu);
+            for (b, &(iv, _)) in vs.iter().enumerate() {
+                let c = &mut contracted[iv * (q + 1) * hd..(iv + 1) * (q + 1) * hd];
+                if filled[iv] != a {
+                    filled[iv] = a;
+                    c.fill(0.0);
+                    let patch = &self.hom[iu * nv + iv];
+                    for (bi, row) in bu.iter().zip(patch.chunks_exact((q + 1) * hd)) {
+                        for (x, y) in c.iter_mut().zip(row) {
+                            *x += bi * y;
+                        }
+                    }
+                }
+                h.fill(0.0);
+                let bv = &bern_v[b * (q + 1)..(b + 1) * (q + 1)];
+                for (bj, pt) in bv.iter().zip(c.chunks_exact(hd)) {
+                    for (x, y) in h.iter_mut().zip(pt) {
+                        *x += bj * y;
+                    }
+                }
+                let o = a * cols + b * d;
+                for (x, y) in out[o..o + d].iter_mut().zip(&h) {
+                    *x = y / h[d];
+                }
+            }
         }
     }
 
@@ -178,17 +221,15 @@ pub(crate) fn fit(
     // Samples F[a][b] (u node a, v node b), row-major in a.
     let cols = gv.len() * d;
     let mut f = vec![0.0; gu.len() * cols];
-    let iv_of: Vec<usize> = gv
+    let us: Vec<(usize, f64)> = gu
         .iter()
-        .map(|&(s, _, _)| RationalPatches::locate(&src.breaks_v, kv[s], kv[s + 1]))
+        .map(|&(s, u, _)| (RationalPatches::locate(&src.breaks_u, ku[s], ku[s + 1]), u))
         .collect();
-    for (a, &(s, u, _)) in gu.iter().enumerate() {
-        let iu = RationalPatches::locate(&src.breaks_u, ku[s], ku[s + 1]);
-        for (b, &(_, v, _)) in gv.iter().enumerate() {
-            let o = a * cols + b * d;
-            src.eval((iu, iv_of[b]), u, v, &mut f[o..o + d]);
-        }
-    }
+    let vs: Vec<(usize, f64)> = gv
+        .iter()
+        .map(|&(s, v, _)| (RationalPatches::locate(&src.breaks_v, kv[s], kv[s + 1]), v))
+        .collect();
+    src.sample_grid(&us, &vs, &mut f);
     // u: G (n_u rows of gv.len() * d), then transpose to (v node, i) and solve in v.
     let g = solve_direction(ku, mu, &gu, &f, cols)?;
     let nu = ku.len() - mu - 1;
@@ -286,6 +327,7 @@ pub(crate) fn fit_to_budget(
 ) -> Result<SurfaceFit> {
     let mut rounds = 0;
     let mut work = 0usize;
+    let unit = patch_cost(src.degrees, src.dim);
     let (mut ku, mut kv) = (su.clone(), sv.clone());
     loop {
         let net = fit(src, m, (&ku, &kv))?;
@@ -302,7 +344,7 @@ pub(crate) fn fit_to_budget(
             });
         }
         rounds += 1;
-        work = work.saturating_add(bounds.len());
+        work = work.saturating_add(bounds.len().saturating_mul(unit));
         let target = 0.95 * budget;
         let new_u = refine(
             &direction_spans(&bounds, true),
@@ -325,10 +367,10 @@ pub(crate) fn fit_to_budget(
                 why: "the refinement needs too many patches",
             });
         }
-        if work.saturating_add(count) > MAX_PATCH_WORK {
+        if work.saturating_add(count.saturating_mul(unit)) > MAX_PATCH_WORK {
             return Err(Error::ConditionNotMet {
                 eq: "tolerance",
-                why: "the refinement needs too much work (more than 2^17 patches fitted over its rounds)",
+                why: "the refinement needs too much work (more than 2^17 patches fitted over its rounds, a patch above bicubic or in more than 3D counted as several)",
             });
         }
         ku.clone_from(&su);

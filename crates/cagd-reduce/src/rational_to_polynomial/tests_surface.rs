@@ -235,3 +235,48 @@ proptest! {
         check(&s, Some(m), tol, None);
     }
 }
+
+/// Bounded work at high degree (issue 18; the C ABI fuzz run found a degree (5, 12) NURBS
+/// surface to (2, 1) that fitted and bounded bicubic-priced patches for 24 s): a degree
+/// (5, 12) rational surface with weights in [0.4, 2.5] to (2, 1) at a tight tolerance is
+/// either answered within it (checked against samples) or refused by the named work cap.
+#[test]
+fn high_degree_surfaces_answer_or_refuse_by_name() {
+    let (p, q) = (5, 12);
+    let (nu, nv) = (8, 15);
+    let clamped = |deg: usize, n: usize| {
+        let mut k = vec![0.0; deg + 1];
+        k.extend((1..n - deg).map(|i| i as f64 / (n - deg) as f64));
+        k.extend(vec![1.0; deg + 1]);
+        k
+    };
+    let mut seed = 11u64;
+    let mut rnd = || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let pts: Vec<f64> = (0..nu * nv).map(|_| 2.0 * rnd() - 1.0).collect();
+    let w: Vec<f64> = (0..nu * nv).map(|_| 0.4 + 2.1 * rnd()).collect();
+    let s =
+        BSplineSurface::new_rational((p, q), clamped(p, nu), clamped(q, nv), pts, w, (nu, nv), 1)
+            .unwrap();
+    for tol in [1e-2, 1.6e-4] {
+        match rational_surface_to_polynomial(&s, Some((2, 1)), tol) {
+            Ok(_) => {
+                check(&s, Some((2, 1)), tol, None);
+            }
+            Err(Error::ConditionNotMet {
+                eq: "tolerance",
+                why,
+            }) => {
+                assert!(
+                    why.contains("too much work") || why.contains("too many"),
+                    "{why}"
+                );
+            }
+            Err(e) => panic!("tol {tol}: {e}"),
+        }
+    }
+}
