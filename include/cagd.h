@@ -2634,6 +2634,8 @@ CagdStatus cagd_tensorpatch_split_curve(const struct CagdTensorPatch *patch,
  *   the square, degree > 3, no segment).
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: a piece's degree would exceed 64 (the patch's
  *   degree composed with a trimming curve's).
+ * - `CAGD_ERR_NON_FINITE`: a point of a trimmed piece overflows (coordinates near the
+ *   double range).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2839,7 +2841,8 @@ CagdStatus cagd_bsplinesurface_to_bezier_patches(const struct CagdBSplineSurface
  *   the order above, or non-increasing breaks; a misaligned pointer.
  * - `CAGD_ERR_DIMENSION_MISMATCH`: pieces of differing degrees or dimensions, or a count
  *   that is not a full grid.
- * - `CAGD_ERR_NON_FINITE`, `CAGD_ERR_NON_POSITIVE_WEIGHT`: the result overflows.
+ * - `CAGD_ERR_NON_FINITE`, `CAGD_ERR_NON_POSITIVE_WEIGHT`: the result or its certified
+ *   bound overflows.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -4005,6 +4008,8 @@ void cagd_intervaltri_free(struct CagdIntervalTriPatch *patch);
  * - `CAGD_OK`: every output is written.
  * - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+ * - `CAGD_ERR_NON_FINITE`: the thickness overflows (boxes wider than the double range);
+ *   nothing is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -4813,7 +4818,10 @@ CagdStatus cagd_tripatch_reduce(const struct CagdTriPatch *patch,
  *   `cagd_tensorpatch_reduce`.
  * - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS`: as
  *   `cagd_tensorpatch_reduce`.
- * - `CAGD_ERR_NO_CONVERGENCE`: level 8 (65536 pieces) is not enough.
+ * - `CAGD_ERR_NO_CONVERGENCE`: more than 65 536 pieces (`MAX_TOLERANCE_PIECES`, a
+ *   `2^a x 2^b` grid) would be needed.
+ * - `CAGD_ERR_NON_FINITE`: a reduced piece or its bound overflows (coordinates near the
+ *   double range).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -4851,6 +4859,8 @@ CagdStatus cagd_tensorpatch_reduce_to_tolerance(const struct CagdTensorPatch *pa
  * - `CAGD_ERR_CONDITION_NOT_MET`: a boundary method with `r != p` (the middle
  *   sub-triangle traverses shared edges backwards).
  * - `CAGD_ERR_NO_CONVERGENCE`: level 8 (65536 pieces) is not enough.
+ * - `CAGD_ERR_NON_FINITE`: a reduced piece or its bound overflows (coordinates near the
+ *   double range).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety

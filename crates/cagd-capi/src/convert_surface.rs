@@ -96,7 +96,8 @@ pub unsafe extern "C" fn cagd_bsplinesurface_to_bezier_patches(
 ///   the order above, or non-increasing breaks; a misaligned pointer.
 /// - `CAGD_ERR_DIMENSION_MISMATCH`: pieces of differing degrees or dimensions, or a count
 ///   that is not a full grid.
-/// - `CAGD_ERR_NON_FINITE`, `CAGD_ERR_NON_POSITIVE_WEIGHT`: the result overflows.
+/// - `CAGD_ERR_NON_FINITE`, `CAGD_ERR_NON_POSITIVE_WEIGHT`: the result or its certified
+///   bound overflows.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -127,6 +128,15 @@ pub unsafe extern "C" fn cagd_patchpiecelist_to_bsplinesurface(
                 .map(|(k, pc)| grid_piece(k, pc))
                 .collect::<CResult<Vec<_>>>()?;
         let r = patches_to_nurbs(&pieces, tol)?;
+        if !r.bound.is_finite() {
+            // Working coordinates near the double range: the certified distance overflows
+            // (C ABI fuzz run, seed 103), refused rather than handed out with an infinite
+            // bound.
+            return Err(Failure::new(
+                CagdStatus::ERR_NON_FINITE,
+                format!("the merge's certified bound = {} is not finite", r.bound),
+            ));
+        }
         *out = into_handle(CagdBSplineSurface(r.surface));
         if let Some(b) = bound {
             *b = r.bound;

@@ -9,8 +9,8 @@ use cagd_reduce::{
 };
 
 use crate::boundary::{
-    CResult, OUT, boundary, boundary_void, checked_len, free_handle, handle_ref, into_handle,
-    nonnull, out_ref, points_in, slice_out,
+    CResult, Failure, OUT, boundary, boundary_void, checked_len, free_handle, handle_ref,
+    into_handle, nonnull, out_ref, points_in, slice_out,
 };
 use crate::status::CagdStatus;
 
@@ -148,6 +148,8 @@ pub unsafe extern "C" fn cagd_intervaltri_free(patch: *mut CagdIntervalTriPatch)
 /// - `CAGD_OK`: every output is written.
 /// - `CAGD_ERR_NULL_POINTER`: any argument is NULL.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
+/// - `CAGD_ERR_NON_FINITE`: the thickness overflows (boxes wider than the double range);
+///   nothing is written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -170,7 +172,16 @@ pub unsafe extern "C" fn cagd_intervaltri_shape(
                 out_ref(thickness_out, "thickness_out")?,
             )
         };
-        (*n, *d, *t) = (p.0.degree(), p.0.dim(), p.0.thickness());
+        let thickness = p.0.thickness();
+        if !thickness.is_finite() {
+            // Boxes wider than the double range (bounds near +-DBL_MAX; C ABI fuzz run,
+            // seed 103): the mean width is not a double.
+            return Err(Failure::new(
+                CagdStatus::ERR_NON_FINITE,
+                "the thickness (mean box width) overflows: boxes wider than the double range",
+            ));
+        }
+        (*n, *d, *t) = (p.0.degree(), p.0.dim(), thickness);
         Ok(())
     })
 }

@@ -1,5 +1,6 @@
 /* CagdIntervalTriPatch: Example 1 of seed 004 (SPEC-convert I.4-I.5, thickness 2 -> 125/36)
  * new -> reduce -> read back -> contains -> free; the elevation matrix; bad input. */
+#include <float.h>
 #include <stdbool.h>
 #include <stdint.h>
 
@@ -132,6 +133,31 @@ int cagd_ctest_intervaltri_bad_input(void) {
     rc = 0;
 cleanup:
     cagd_intervaltri_free(q);
+    cagd_intervaltri_free(p);
+    return rc;
+}
+
+/* Final 10^7 fuzz run (seed 103): boxes from -DBL_MAX to DBL_MAX have widths past the
+ * double range; cagd_intervaltri_shape returned CAGD_OK with thickness = inf. Now
+ * CAGD_ERR_NON_FINITE, nothing written; a patch of finite thickness still answers. */
+int cagd_ctest_intervaltri_thickness_overflow(void) {
+    int rc = 1;
+    CagdIntervalTriPatch *p = NULL;
+    double lo[3] = {-DBL_MAX, -DBL_MAX, -DBL_MAX}, hi[3] = {DBL_MAX, DBL_MAX, DBL_MAX};
+    size_t n = 77, d = 77;
+    double t = -7.0;
+    CHECK_OK(cagd_intervaltri_new(lo, hi, 1, 1, &p));
+    CHECK_STATUS(cagd_intervaltri_shape(p, &n, &d, &t), CAGD_ERR_NON_FINITE);
+    CHECK(t == -7.0 && n == 77 && d == 77);
+    cagd_intervaltri_free(p);
+    p = NULL;
+    lo[0] = lo[1] = lo[2] = -DBL_MAX / 4;
+    hi[0] = hi[1] = hi[2] = 0.0;
+    CHECK_OK(cagd_intervaltri_new(lo, hi, 1, 1, &p));
+    CHECK_OK(cagd_intervaltri_shape(p, &n, &d, &t));
+    CHECK(n == 1 && d == 1 && t == DBL_MAX / 4);
+    rc = 0;
+cleanup:
     cagd_intervaltri_free(p);
     return rc;
 }

@@ -58,6 +58,7 @@ c_tests![
     intervaltri_example_1,
     intervaltri_elevation_matrix,
     intervaltri_bad_input,
+    intervaltri_thickness_overflow,
     // c/status.c
     status_names,
     last_error_message,

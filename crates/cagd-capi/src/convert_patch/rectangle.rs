@@ -176,6 +176,8 @@ pub unsafe extern "C" fn cagd_tensorpatch_split_curve(
 ///   the square, degree > 3, no segment).
 /// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: a piece's degree would exceed 64 (the patch's
 ///   degree composed with a trimming curve's).
+/// - `CAGD_ERR_NON_FINITE`: a point of a trimmed piece overflows (coordinates near the
+///   double range).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

@@ -287,7 +287,10 @@ pub unsafe extern "C" fn cagd_tripatch_reduce(
 ///   `cagd_tensorpatch_reduce`.
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS`: as
 ///   `cagd_tensorpatch_reduce`.
-/// - `CAGD_ERR_NO_CONVERGENCE`: level 8 (65536 pieces) is not enough.
+/// - `CAGD_ERR_NO_CONVERGENCE`: more than 65 536 pieces (`MAX_TOLERANCE_PIECES`, a
+///   `2^a x 2^b` grid) would be needed.
+/// - `CAGD_ERR_NON_FINITE`: a reduced piece or its bound overflows (coordinates near the
+///   double range).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
@@ -342,6 +345,8 @@ pub unsafe extern "C" fn cagd_tensorpatch_reduce_to_tolerance(
 /// - `CAGD_ERR_CONDITION_NOT_MET`: a boundary method with `r != p` (the middle
 ///   sub-triangle traverses shared edges backwards).
 /// - `CAGD_ERR_NO_CONVERGENCE`: level 8 (65536 pieces) is not enough.
+/// - `CAGD_ERR_NON_FINITE`: a reduced piece or its bound overflows (coordinates near the
+///   double range).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
