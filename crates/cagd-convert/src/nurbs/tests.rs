@@ -282,7 +282,7 @@ proptest! {
             // (`reach^p > 1e10`, e.g. a 0.05-long end span with outer knots 7 away at
             // degree 9: 1e19) the recovered weight may come out non-positive, which is
             // refused by name; anywhere else it is a failure.
-            Err(cagd_core::Error::NonPositiveWeight { .. }) if extrapolation_reach(&c) > 1e10 => {
+            Err(Error::NonPositiveWeight { .. }) if extrapolation_reach(&c) > 1e10 => {
                 return Ok(());
             }
             Err(e) => return Err(TestCaseError::fail(format!("pieces_to_nurbs: {e}"))),
