@@ -21,10 +21,12 @@ use cagd_core::{
 
 use crate::patch::report::{TensorPiece, TriPiece};
 
-/// Grid nodes sampled over all pieces in pass 1: `2^22`, about a tenth of a second.
+/// Grid nodes sampled over all pieces in pass 1: `2^22`, about a tenth of a second
+/// (ADDED, beyond the seeds: bounded measuring of a patch reduction, issue 18).
 pub const PIECES_MEASURE_NODE_BUDGET: usize = 1 << 22;
 
-/// Pieces of largest sampled error maximised in full in pass 2.
+/// Pieces of largest sampled error maximised in full in pass 2 (ADDED, beyond the seeds,
+/// as [`PIECES_MEASURE_NODE_BUDGET`]).
 pub const PIECES_MEASURED_FULLY: usize = 16;
 
 /// Intervals per side of the pass-1 grid: `full`, or fewer (at least 4) when `pieces` grids
