@@ -4819,7 +4819,9 @@ CagdStatus cagd_tripatch_reduce(const struct CagdTriPatch *patch,
  * - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS`: as
  *   `cagd_tensorpatch_reduce`.
  * - `CAGD_ERR_NO_CONVERGENCE`: more than 65 536 pieces (`MAX_TOLERANCE_PIECES`, a
- *   `2^a x 2^b` grid) would be needed.
+ *   `2^a x 2^b` grid) would be needed, or the next round would pass the work cap
+ *   (`MAX_PATCH_TOLERANCE_WORK`: 2^27 units, a cell of degrees `(p, q)` in `d`
+ *   coordinates counted `d (p + 1)(q + 1)(p + q + 2)`).
  * - `CAGD_ERR_NON_FINITE`: a reduced piece or its bound overflows (coordinates near the
  *   double range).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
@@ -4858,7 +4860,10 @@ CagdStatus cagd_tensorpatch_reduce_to_tolerance(const struct CagdTensorPatch *pa
  *   `cagd_tripatch_reduce`.
  * - `CAGD_ERR_CONDITION_NOT_MET`: a boundary method with `r != p` (the middle
  *   sub-triangle traverses shared edges backwards).
- * - `CAGD_ERR_NO_CONVERGENCE`: level 8 (65536 pieces) is not enough.
+ * - `CAGD_ERR_NO_CONVERGENCE`: level 8 (65536 pieces) is not enough, or the next level
+ *   would pass the work cap (`MAX_PATCH_TOLERANCE_WORK`: 2^27 units, a degree-`n` piece
+ *   in `d` coordinates counted `d ((n + 1)(n + 2)^2 / 2 + (n + 1)^4 / 12)`: a degree-36 3-D
+ *   patch stops at level 3).
  * - `CAGD_ERR_NON_FINITE`: a reduced piece or its bound overflows (coordinates near the
  *   double range).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.

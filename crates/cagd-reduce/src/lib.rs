@@ -251,10 +251,11 @@ pub use interval::{
     reduce_interval_triangle_analytic, triangle_elevation_matrix, triangle_elevation_matrix_exact,
 };
 pub use patch::{
-    MAX_SUBDIVISION_LEVEL, MAX_TOLERANCE_PIECES, PIECES_MEASURE_NODE_BUDGET, PIECES_MEASURED_FULLY,
-    PatchConstraint, PatchOptions, PatchReduction, PatchReport, TensorMethod, TensorPiece,
-    TriMethod, TriOptions, TriPiece, TriReduction, reduce_tensor, reduce_tensor_to_tolerance,
-    reduce_triangle, reduce_triangle_to_tolerance, tri_perturbation_matrix,
+    MAX_PATCH_TOLERANCE_WORK, MAX_SUBDIVISION_LEVEL, MAX_TOLERANCE_PIECES,
+    PIECES_MEASURE_NODE_BUDGET, PIECES_MEASURED_FULLY, PatchConstraint, PatchOptions,
+    PatchReduction, PatchReport, TensorMethod, TensorPiece, TriMethod, TriOptions, TriPiece,
+    TriReduction, reduce_tensor, reduce_tensor_to_tolerance, reduce_triangle,
+    reduce_triangle_to_tolerance, tri_perturbation_matrix,
 };
 pub use rational_to_polynomial::{
     PolynomialReduction, PolynomialReport, PolynomialSurfaceReduction,

@@ -16,7 +16,8 @@ pub use report::{
 };
 pub use tensor::reduce_tensor;
 pub use tolerance::{
-    MAX_SUBDIVISION_LEVEL, MAX_TOLERANCE_PIECES, PIECES_MEASURE_NODE_BUDGET, PIECES_MEASURED_FULLY,
-    reduce_tensor_to_tolerance, reduce_triangle_to_tolerance,
+    MAX_PATCH_TOLERANCE_WORK, MAX_SUBDIVISION_LEVEL, MAX_TOLERANCE_PIECES,
+    PIECES_MEASURE_NODE_BUDGET, PIECES_MEASURED_FULLY, reduce_tensor_to_tolerance,
+    reduce_triangle_to_tolerance,
 };
 pub use triangle::{reduce_triangle, tri_perturbation_matrix};

@@ -14,15 +14,19 @@ use crate::{Result, TriPatch, tri_count, tri_index};
 /// becomes the degree-`n - 1` net `dst`, `dst_ij = u src_{i+1,j} + v src_{i,j+1} + w src_ij`.
 pub(crate) fn tri_step(src: &[f64], n: usize, dim: usize, bary: (f64, f64, f64), dst: &mut [f64]) {
     let (u, v, w) = bary;
+    // Row i of a net (fixed i, j = 0..) is contiguous (i-major storage), so each output row
+    // is one flat loop over (j, coordinate): dst_i = u src_(i+1) + v src_i[+1] + w src_i.
     for i in 0..n {
-        for j in 0..n - i {
-            let d = tri_index(n - 1, i, j) * dim;
-            let a = tri_index(n, i + 1, j) * dim;
-            let b = tri_index(n, i, j + 1) * dim;
-            let c = tri_index(n, i, j) * dim;
-            for k in 0..dim {
-                dst[d + k] = u * src[a + k] + v * src[b + k] + w * src[c + k];
-            }
+        let len = (n - i) * dim;
+        let d0 = tri_index(n - 1, i, 0) * dim;
+        let s0 = tri_index(n, i, 0) * dim;
+        let s1 = tri_index(n, i + 1, 0) * dim;
+        let out = &mut dst[d0..d0 + len];
+        let here = &src[s0..s0 + len];
+        let next_j = &src[s0 + dim..s0 + dim + len];
+        let next_i = &src[s1..s1 + len];
+        for (((o, a), b), c) in out.iter_mut().zip(next_i).zip(next_j).zip(here) {
+            *o = u * a + v * b + w * c;
         }
     }
 }

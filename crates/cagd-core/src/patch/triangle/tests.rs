@@ -302,3 +302,34 @@ fn elevation_near_f64_max_is_finite_or_refused() {
         "no case rounded past f64::MAX; the test no longer probes it"
     );
 }
+
+/// High degree (the proptest laws stop at 7): the midpoint pieces of a degree-40 net (its
+/// corners from corner replacements, its middle from blossoms with Bernstein sums) are the
+/// patch on their sub-triangles to a few hundred ulp of the net's size, as a de Casteljau
+/// evaluation is.
+#[test]
+fn midpoint_pieces_at_degree_40() {
+    let n = 40;
+    let mut s = 99u64;
+    let pts: Vec<f64> = (0..tri_count(n) * 3)
+        .map(|_| {
+            s = s
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (s >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+        })
+        .collect();
+    let t = TriPatch::new(pts, n, 3).unwrap();
+    let sc = size(t.points());
+    // Each piece's (u, v) = origin + sign (x, y) / 2.
+    let maps = [(0.0, 0.0, 0.5), (0.5, 0.0, 0.5), (0.0, 0.5, 0.5), (0.5, 0.5, -0.5)];
+    for (p, (u0, v0, h)) in t.subdivide_midpoint().iter().zip(maps) {
+        for (x, y) in params().into_iter().step_by(3) {
+            let (u, v) = (u0 + h * x, v0 + h * y);
+            let (a, b) = (p.eval(x, y).unwrap(), t.eval(u, v).unwrap());
+            for (a, b) in a.iter().zip(&b) {
+                assert!((a - b).abs() <= 1e-13 * sc, "{a} vs {b}");
+            }
+        }
+    }
+}

@@ -12,8 +12,9 @@
 //! Every subdivision is uniform (all cells of one size), so neighbouring pieces share whole
 //! edges, never T-junctions; with a boundary-consistent method the reduced pieces meet C⁰.
 //!
-//! Bounded work (ADDED): at most [`MAX_TOLERANCE_PIECES`] pieces; a round stops at its
-//! first piece over the tolerance, so the rounds before the accepted one cost at most about
+//! Bounded work (ADDED): at most [`MAX_TOLERANCE_PIECES`] pieces and
+//! [`MAX_PATCH_TOLERANCE_WORK`] units of work priced by degree (a round that would pass it
+//! is not started); a round stops at its first piece over the tolerance, so the rounds before the accepted one cost at most about
 //! as much as the accepted one; the accepted pieces are measured within
 //! [`PIECES_MEASURE_NODE_BUDGET`] grid nodes with the [`PIECES_MEASURED_FULLY`] of largest
 //! sampled error maximised in full.
@@ -34,3 +35,29 @@ pub const MAX_SUBDIVISION_LEVEL: usize = 8;
 /// work). A tolerance that needs more is refused with [`cagd_core::Error::NoConvergence`]
 /// (the tolerance and the bound reached).
 pub const MAX_TOLERANCE_PIECES: usize = 1 << (2 * MAX_SUBDIVISION_LEVEL);
+
+/// Most work of one patch reduction to a tolerance, summed over its rounds (ADDED; bounded
+/// work, issue 18): `2^27` units, a piece counted by [`tensor_piece_cost`] /
+/// [`tri_piece_cost`] (measured 3-11 ns per unit in a release build, so well under a second
+/// of a round's reductions and subdivisions). A round that would pass it is not started: the
+/// reduction is refused with [`cagd_core::Error::NoConvergence`] and the bound reached. At
+/// low degree the piece cap comes first (`65 536` bicubic pieces are `2^24.6` units); a
+/// degree-36 triangle stops at level 3 instead of subdividing to level 8 for minutes.
+pub const MAX_PATCH_TOLERANCE_WORK: usize = 1 << 27;
+
+/// The work units of reducing one `(p, q)` tensor cell in `dim` coordinates and of
+/// bisecting it: `dim (p + 1)(q + 1)(p + q + 2)` (its bound subdivides rows and columns).
+pub(crate) fn tensor_piece_cost((p, q): (usize, usize), dim: usize) -> usize {
+    dim.saturating_mul(p + 1)
+        .saturating_mul(q + 1)
+        .saturating_mul(p + q + 2)
+}
+
+/// The work units of one degree-`n` triangular piece in `dim` coordinates: its reduction
+/// and bound, `dim (n + 1)(n + 2)(n + 2) / 2`, and its share of the midpoint split,
+/// `dim (n + 1)^4 / 12` (the middle sub-triangle's blossoms).
+pub(crate) fn tri_piece_cost(n: usize, dim: usize) -> usize {
+    let tri = (n + 1) * (n + 2) / 2;
+    let split = (n + 1).pow(4) / 12;
+    dim.saturating_mul(tri * (n + 2) + split)
+}

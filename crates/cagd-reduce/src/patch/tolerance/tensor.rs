@@ -14,8 +14,8 @@
 
 use cagd_core::{Error, Result, TensorPatch, check_tolerance};
 
-use super::MAX_TOLERANCE_PIECES;
 use super::measure::measure_tensor_pieces;
+use super::{MAX_PATCH_TOLERANCE_WORK, MAX_TOLERANCE_PIECES, tensor_piece_cost};
 use crate::patch::report::{PatchOptions, TensorPiece};
 use crate::reduce_tensor;
 
@@ -95,7 +95,8 @@ impl Grid {
 /// # Errors
 /// [`Error::BadTolerance`] (`tol` not finite and `> 0`), the errors of
 /// [`crate::reduce_tensor`], [`Error::NoConvergence`] (with the bound reached) when
-/// [`MAX_TOLERANCE_PIECES`] pieces are not enough.
+/// [`MAX_TOLERANCE_PIECES`] pieces are not enough or the next round would pass
+/// [`super::MAX_PATCH_TOLERANCE_WORK`].
 pub fn reduce_tensor_to_tolerance(
     p: &TensorPatch,
     target: (usize, usize),
@@ -115,6 +116,8 @@ pub fn reduce_tensor_to_tolerance(
         cells: vec![p.clone()],
         splits: [0, 0],
     };
+    let unit = tensor_piece_cost(p.degrees(), p.dim());
+    let mut work = unit;
     loop {
         let mut pieces = Vec::with_capacity(grid.cells.len());
         let (mut worst, mut failed) = (0.0f64, None);
@@ -134,7 +137,9 @@ pub fn reduce_tensor_to_tolerance(
             }
             return Ok(pieces);
         };
-        if grid.pieces_after_split() > MAX_TOLERANCE_PIECES {
+        // The next round: its cells, and the four halves of a direction trial.
+        work = work.saturating_add((grid.pieces_after_split() + 4).saturating_mul(unit));
+        if grid.pieces_after_split() > MAX_TOLERANCE_PIECES || work > MAX_PATCH_TOLERANCE_WORK {
             return Err(Error::NoConvergence {
                 tolerance: tol,
                 achieved: worst,

@@ -3,8 +3,8 @@
 
 use cagd_core::{Error, Result, TriPatch, check_tolerance};
 
-use super::MAX_SUBDIVISION_LEVEL;
 use super::measure::measure_tri_pieces;
+use super::{MAX_PATCH_TOLERANCE_WORK, MAX_SUBDIVISION_LEVEL, tri_piece_cost};
 use crate::patch::report::{PatchConstraint, TriMethod, TriOptions, TriPiece};
 use crate::reduce_triangle;
 
@@ -24,7 +24,9 @@ use crate::reduce_triangle;
 ///
 /// # Errors
 /// [`Error::BadTolerance`], the errors of [`reduce_triangle`], [`Error::ConditionNotMet`]
-/// (a boundary method with `r != p`), [`Error::NoConvergence`].
+/// (a boundary method with `r != p`), [`Error::NoConvergence`] (with the bound reached) when
+/// level [`MAX_SUBDIVISION_LEVEL`] is not enough or the next level would pass
+/// [`super::MAX_PATCH_TOLERANCE_WORK`].
 pub fn reduce_triangle_to_tolerance(
     t: &TriPatch,
     m: usize,
@@ -48,7 +50,19 @@ pub fn reduce_triangle_to_tolerance(
     type Cell = (TriPatch, [(f64, f64); 3]);
     let mut cells: Vec<Cell> = vec![(t.clone(), [(1.0, 0.0), (0.0, 1.0), (0.0, 0.0)])];
     let mut achieved = f64::INFINITY;
+    let unit = tri_piece_cost(t.degree(), t.dim());
+    let mut work = 0usize;
     for level in 0..=MAX_SUBDIVISION_LEVEL {
+        // Level 0 is one reduction; a later level splits every cell in four.
+        let count = if level == 0 {
+            1
+        } else {
+            cells.len().saturating_mul(4)
+        };
+        work = work.saturating_add(count.saturating_mul(unit));
+        if level > 0 && work > MAX_PATCH_TOLERANCE_WORK {
+            break;
+        }
         if level > 0 {
             cells = cells
                 .iter()
