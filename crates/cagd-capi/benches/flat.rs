@@ -26,7 +26,7 @@ use std::hint::black_box;
 use std::ptr::{null, null_mut};
 
 use cagd_capi::*;
-use cagd_testkit::bench::random_input;
+use cagd_testkit::bench::{gemm_floor, interleaved_ns, random_input};
 use criterion::{Criterion, criterion_group, criterion_main};
 
 const DIM: usize = 3;
@@ -34,29 +34,6 @@ const DIM: usize = 3;
 /// resolution).
 const REPS: usize = 2000;
 const N_CURVES: usize = 100_000;
-
-/// Median wall times (ns) of `fs`, measured in `rounds` interleaved rounds (one run of each
-/// per round, after one warm-up run each), so that a change of machine load during the
-/// measurement affects every variant alike.
-fn interleaved(rounds: usize, fs: &mut [&mut dyn FnMut()]) -> Vec<f64> {
-    for f in fs.iter_mut() {
-        f();
-    }
-    let mut t = vec![Vec::with_capacity(rounds); fs.len()];
-    for _ in 0..rounds {
-        for (f, ti) in fs.iter_mut().zip(&mut t) {
-            let s = std::time::Instant::now();
-            f();
-            ti.push(s.elapsed().as_secs_f64() * 1e9);
-        }
-    }
-    t.into_iter()
-        .map(|mut v| {
-            v.sort_by(f64::total_cmp);
-            v[v.len() / 2]
-        })
-        .collect()
-}
 
 fn options(target: usize) -> CagdReduceOptions {
     let mut o = CagdReduceOptions::default();
@@ -138,7 +115,7 @@ fn single(c: &mut Criterion) {
         group.finish();
         let (mut o1, mut o2, mut o3) = (out.clone(), out.clone(), out.clone());
         let mut scratch = [0.0; 64];
-        let t = interleaved(
+        let t = interleaved_ns(
             31,
             &mut [
                 &mut || {
@@ -250,7 +227,7 @@ fn batches(c: &mut Criterion) {
                 vec![0.0; out.len()],
                 vec![0.0; out.len()],
             );
-            let t = interleaved(
+            let t = interleaved_ns(
                 15,
                 &mut [
                     &mut || batch_call(black_box(&input), n, layout, what, 1, &mut out),
@@ -280,30 +257,6 @@ fn batches(c: &mut Criterion) {
 /// GEMM floor: the same operator applied to the same curves laid out point-major by one
 /// `matrixmultiply::dgemm` call (the kernel both layouts use).
 const PAIRS: [(usize, usize); 6] = [(4, 3), (5, 4), (10, 5), (15, 10), (20, 10), (30, 15)];
-
-fn gemm_floor(a: &[f64], n1: usize, m1: usize, p: &[f64], q: &mut [f64]) {
-    let cols = p.len() / n1;
-    let s = |x: usize| isize::try_from(x).unwrap_or(isize::MAX);
-    // SAFETY: `a` is m1 x n1, `p` n1 x cols, `q` m1 x cols, all row-major and contiguous.
-    unsafe {
-        matrixmultiply::dgemm(
-            m1,
-            n1,
-            cols,
-            1.0,
-            a.as_ptr(),
-            s(n1),
-            1,
-            p.as_ptr(),
-            s(cols),
-            1,
-            0.0,
-            q.as_mut_ptr(),
-            s(cols),
-            1,
-        );
-    }
-}
 
 fn reduce_pairs(c: &mut Criterion) {
     for (n, m) in PAIRS {
@@ -335,7 +288,7 @@ fn reduce_pairs(c: &mut Criterion) {
             vec![0.0; out.len()],
         );
         let mut out4 = out.clone();
-        let t = interleaved(
+        let t = interleaved_ns(
             15,
             &mut [
                 &mut || batch_call(black_box(&pm), n, pml, Ok(&o), 1, &mut out),

@@ -32,6 +32,7 @@ mod fuzz;
 mod fuzz_in_process;
 mod input;
 mod limits;
+mod method_names;
 mod output;
 
 use std::process::ExitCode;

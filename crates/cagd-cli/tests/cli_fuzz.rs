@@ -9,6 +9,8 @@
 )]
 #[path = "../src/fuzz/mod.rs"]
 mod fuzz;
+#[path = "../src/method_names.rs"]
+mod method_names;
 
 use std::io::Write;
 use std::process::{Command, Stdio};

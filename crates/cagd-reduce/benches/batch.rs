@@ -14,8 +14,6 @@
 //! `reduce_batch` only, with short times (run with `-- --warm-up-time 1
 //! --measurement-time 3`).
 
-#![allow(unsafe_code, reason = "the GEMM floor calls matrixmultiply::dgemm")]
-
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -26,7 +24,7 @@ use cagd_reduce::{
 };
 use criterion::{Criterion, criterion_group, criterion_main};
 
-use cagd_testkit::bench::{interleaved_ns, median_ns, random_input};
+use cagd_testkit::bench::{gemm_floor, interleaved_ns, median_ns, random_input};
 
 const N_CURVES: usize = 100_000;
 const DIM: usize = 3;
@@ -34,33 +32,6 @@ const PAIRS: [(usize, usize); 6] = [(4, 3), (5, 4), (10, 5), (15, 10), (20, 10),
 /// OCCT `GeomConvert_ApproxCurve` per curve (µs), issue 17's measurement, same pairs.
 const OCCT_US: [f64; 6] = [5.8, 6.6, 7.0, 10.4, 10.5, 29.2];
 const METHOD: Method = Method::L2 { r: 0, p: 0 };
-
-/// The point-major floor: `Q = A P` with `A` `m1 x n1`, `P` `n1 x cols`, `Q` `m1 x cols`,
-/// all row-major and contiguous, in one `matrixmultiply::dgemm`.
-fn gemm_floor(a: &[f64], n1: usize, m1: usize, p: &[f64], q: &mut [f64]) {
-    let cols = p.len() / n1;
-    assert!(a.len() == m1 * n1 && q.len() == m1 * cols);
-    let s = |x: usize| isize::try_from(x).unwrap_or(isize::MAX);
-    // SAFETY: the sizes are checked above; the three matrices are row-major, contiguous.
-    unsafe {
-        matrixmultiply::dgemm(
-            m1,
-            n1,
-            cols,
-            1.0,
-            a.as_ptr(),
-            s(n1),
-            1,
-            p.as_ptr(),
-            s(cols),
-            1,
-            0.0,
-            q.as_mut_ptr(),
-            s(cols),
-            1,
-        );
-    }
-}
 
 fn bench(c: &mut Criterion) {
     println!(

@@ -1,6 +1,6 @@
 //! Helpers shared by the benchmarks of every crate: reproducible input, a median timer and
 //! the time of a plain copy of the same bytes (the yardstick every benchmark reports a
-//! ratio to).
+//! ratio to), and the GEMM floor of the batch benchmarks.
 
 use std::hint::black_box;
 use std::time::Instant;
@@ -71,4 +71,37 @@ pub fn interleaved_ns(rounds: usize, fs: &mut [&mut dyn FnMut()]) -> Vec<f64> {
             v[v.len() / 2]
         })
         .collect()
+}
+
+/// The point-major GEMM floor of the batch benchmarks (issue 17): `Q = A P` with `A`
+/// `m1 x n1`, `P` `n1 x cols`, `Q` `m1 x cols`, all row-major and contiguous, in one
+/// `matrixmultiply::dgemm` (the kernel crate the batch calls use).
+///
+/// # Panics
+/// When the lengths do not match (`a.len() != m1 n1`, `q.len() != m1 cols`, `cols = p.len() /
+/// n1`).
+#[allow(unsafe_code, reason = "the floor is one matrixmultiply::dgemm call")]
+pub fn gemm_floor(a: &[f64], n1: usize, m1: usize, p: &[f64], q: &mut [f64]) {
+    let cols = p.len() / n1;
+    assert!(a.len() == m1 * n1 && p.len() == n1 * cols && q.len() == m1 * cols);
+    let s = |x: usize| isize::try_from(x).unwrap_or(isize::MAX);
+    // SAFETY: the sizes are checked above; the three matrices are row-major, contiguous.
+    unsafe {
+        matrixmultiply::dgemm(
+            m1,
+            n1,
+            cols,
+            1.0,
+            a.as_ptr(),
+            s(n1),
+            1,
+            p.as_ptr(),
+            s(cols),
+            1,
+            0.0,
+            q.as_mut_ptr(),
+            s(cols),
+            1,
+        );
+    }
 }

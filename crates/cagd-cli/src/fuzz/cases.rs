@@ -56,20 +56,8 @@ impl Case {
     }
 }
 
-const METHODS: &[&str] = &[
-    "forrest",
-    "farin",
-    "piegl",
-    "perturbation",
-    "perturbation-g1",
-    "pinv",
-    "pinv-ends",
-    "chebyshev",
-    "eck",
-    "watkins-worsey",
-    "bogacki",
-    "l2",
-];
+/// The method names the command accepts (its own table).
+const METHODS: &[&str] = crate::method_names::NAMES;
 
 fn s(x: impl ToString) -> String {
     x.to_string()

@@ -2,21 +2,7 @@
 
 use cagd_reduce::Method;
 
-/// Every method name the command accepts, in the order `cagd demo` prints them.
-pub(crate) const NAMES: &[&str] = &[
-    "forrest",
-    "farin",
-    "piegl",
-    "perturbation",
-    "perturbation-g1",
-    "pinv",
-    "pinv-ends",
-    "chebyshev",
-    "eck",
-    "watkins-worsey",
-    "bogacki",
-    "l2",
-];
+pub(crate) use crate::method_names::NAMES;
 
 /// How a name is carried out: a linear method, or the G1 perturbation with optimal
 /// `l1, l2` (not linear; one degree per step).

@@ -322,7 +322,12 @@ fn midpoint_pieces_at_degree_40() {
     let t = TriPatch::new(pts, n, 3).unwrap();
     let sc = size(t.points());
     // Each piece's (u, v) = origin + sign (x, y) / 2.
-    let maps = [(0.0, 0.0, 0.5), (0.5, 0.0, 0.5), (0.0, 0.5, 0.5), (0.5, 0.5, -0.5)];
+    let maps = [
+        (0.0, 0.0, 0.5),
+        (0.5, 0.0, 0.5),
+        (0.0, 0.5, 0.5),
+        (0.5, 0.5, -0.5),
+    ];
     for (p, (u0, v0, h)) in t.subdivide_midpoint().iter().zip(maps) {
         for (x, y) in params().into_iter().step_by(3) {
             let (u, v) = (u0 + h * x, v0 + h * y);
