@@ -8,6 +8,7 @@ use cagd_reduce::{
     MAX_TOLERANCE_PIECES, Method, PatchOptions, TensorMethod, TensorPiece,
     reduce_tensor_to_tolerance,
 };
+use cagd_testkit::bench::random_input;
 
 fn opts(m: Method) -> PatchOptions {
     PatchOptions {
@@ -136,19 +137,6 @@ fn out_of_reach_is_refused() {
     }
 }
 
-/// Points of a pseudo-random net (a fixed LCG: the harness's inputs are random too).
-fn noise(count: usize, seed: u64) -> Vec<f64> {
-    let mut s = seed;
-    (0..count)
-        .map(|_| {
-            s = s
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (s >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        })
-        .collect()
-}
-
 /// The C ABI fuzz run's 199 s call (session 0xff98dcc0cc1a0e5a): a random degree-36
 /// triangle to degree 3 within 8.7e-4 by L2. Its bound falls like `2^-4L`, so it would need
 /// level 8 (87 381 reductions and 21 845 blossom splits at degree 36); the work cap priced by
@@ -157,7 +145,7 @@ fn noise(count: usize, seed: u64) -> Vec<f64> {
 fn a_high_degree_triangle_is_refused_by_the_work_cap() {
     use cagd_core::TriPatch;
     use cagd_reduce::{PatchConstraint, TriMethod, TriOptions, reduce_triangle_to_tolerance};
-    let t = TriPatch::new(noise(703 * 3, 7), 36, 3).unwrap();
+    let t = TriPatch::new(random_input(703 * 3, 7), 36, 3).unwrap();
     let opts = TriOptions::new(TriMethod::L2(PatchConstraint::None));
     match reduce_triangle_to_tolerance(&t, 3, 8.7e-4, &opts) {
         Err(cagd_core::Error::NoConvergence {
@@ -176,7 +164,7 @@ fn a_high_degree_triangle_is_refused_by_the_work_cap() {
 fn a_high_degree_triangle_within_reach_answers() {
     use cagd_core::{TriPatch, tri_patch_distance};
     use cagd_reduce::{PatchConstraint, TriMethod, TriOptions, reduce_triangle_to_tolerance};
-    let t = TriPatch::new(noise(703 * 3, 7), 36, 3).unwrap();
+    let t = TriPatch::new(random_input(703 * 3, 7), 36, 3).unwrap();
     let opts = TriOptions::new(TriMethod::L2(PatchConstraint::None));
     let whole = cagd_reduce::reduce_triangle(&t, 3, &opts)
         .unwrap()
@@ -199,7 +187,7 @@ fn a_high_degree_triangle_within_reach_answers() {
 /// instead of reducing up to 65 536 cells of 1 681 points.
 #[test]
 fn a_high_degree_tensor_patch_is_refused_by_the_work_cap() {
-    let p = TensorPatch::new(noise(41 * 41 * 3, 11), 40, 40, 3).unwrap();
+    let p = TensorPatch::new(random_input(41 * 41 * 3, 11), 40, 40, 3).unwrap();
     match reduce_tensor_to_tolerance(&p, (3, 3), 1e-9, &opts(Method::L2 { r: 0, p: 0 })) {
         Err(cagd_core::Error::NoConvergence { achieved, .. }) => {
             assert!(achieved > 1e-9 && achieved.is_finite(), "{achieved}");
