@@ -10,7 +10,7 @@ mod batch;
 mod bound;
 mod exact_degree;
 mod g1;
-mod gemm;
+pub(crate) mod gemm;
 mod lanes;
 mod measure;
 mod method;

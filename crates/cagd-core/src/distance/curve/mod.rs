@@ -193,9 +193,35 @@ pub fn max_distance_1d(
         }
         d2.push(v);
     }
+    Ok(refine_sampled_maxima(&f, &g, dim, lo, hi, &d2))
+}
+
+/// The second half of [`max_distance_1d`] for callers that sampled already:
+/// `max_{t in [lo, hi]} ||f(t) - g(t)||` from the finite squared distances `d2` at the
+/// `n + 1 = d2.len()` equally spaced samples `t_i = lo + (hi - lo) i / n` (`t_n = hi`),
+/// every sampled local maximum refined by Brent's method inside its two neighbouring
+/// intervals. Never below the sampled maximum. `d2` must come from `f` and `g` at those
+/// samples (up to rounding) and have at least two values; `lo <= hi`, both finite.
+pub fn refine_sampled_maxima(
+    f: &impl Fn(f64, &mut [f64]),
+    g: &impl Fn(f64, &mut [f64]),
+    dim: usize,
+    lo: f64,
+    hi: f64,
+    d2: &[f64],
+) -> f64 {
     let mut best = d2.iter().copied().fold(0.0f64, f64::max);
-    if hi > lo {
-        let mut h = |t: f64| sq_dist(&f, &g, t, &mut a, &mut b);
+    let n = d2.len().saturating_sub(1);
+    if hi > lo && n >= 1 {
+        let t_at = |i: usize| {
+            if i == n {
+                hi
+            } else {
+                lo + (hi - lo) * (i as f64 / n as f64)
+            }
+        };
+        let (mut a, mut b) = (vec![0.0; dim], vec![0.0; dim]);
+        let mut h = |t: f64| sq_dist(f, g, t, &mut a, &mut b);
         for i in 0..=n {
             let left = if i > 0 { d2[i - 1] } else { f64::NEG_INFINITY };
             let right = if i < n { d2[i + 1] } else { f64::NEG_INFINITY };
@@ -212,7 +238,7 @@ pub fn max_distance_1d(
             }
         }
     }
-    Ok(best.sqrt())
+    best.sqrt()
 }
 
 /// The parametric distance `max_{t in [0,1]} ||a(t) - b(t)||` (Euclidean norm) between two
