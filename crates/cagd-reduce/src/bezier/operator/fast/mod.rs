@@ -1,8 +1,8 @@
 //! Fast construction of the reduction operators (goes beyond the seed): the same algorithms
 //! as the exact route (`super::exact_operator`, kept as the oracle) and closed forms for the
 //! multi-degree methods ([`truncation`]), run in `f64` and, where that is not accurate
-//! enough, in double-word arithmetic, every number carrying a rigorous bound of its error
-//! ([`tracked`]).
+//! enough, in double-word arithmetic, and where even that is not, in 256-bit floating point
+//! ([`wide`]), every number carrying a rigorous bound of its error ([`tracked`]).
 //!
 //! A route is accepted only if its *proven* error is at most [`TOLERANCE`] relative to the
 //! operator's inf-norm (entrywise and per row sum) and to each bound functional's 1-norm;
@@ -16,6 +16,7 @@ mod rows;
 mod steps;
 mod tracked;
 mod truncation;
+mod wide;
 
 use rows::{Row, Rows, to_i};
 use tracked::Base;
@@ -36,6 +37,10 @@ pub enum OperatorRoute {
     F64,
     /// Double-word (about 106-bit) arithmetic with a proven error bound.
     DoubleWord,
+    /// 256-bit binary floating point with a proven error bound (where the double-word
+    /// route's proven error is above the goal: the stepwise perturbation at high degree,
+    /// truncations close to `m = n`).
+    MultiWord,
     /// Exact rational arithmetic, rounded once.
     Exact,
 }
@@ -174,8 +179,9 @@ fn finish<B: Base>(
 }
 
 /// The operator of `method` (`n -> m`, preconditions checked by the caller) by the first
-/// route whose proven error is within [`TOLERANCE`]: `f64`, then double-word; `None` if
-/// neither is (or the method has no fast route), and the caller uses the exact route.
+/// route whose proven error is within [`TOLERANCE`]: `f64`, then double-word, then 256-bit
+/// ([`wide`]); `None` if none is (or the method has no fast route), and the caller uses the
+/// exact route.
 ///
 /// A method with its own bound terms takes the `f64` route only if its proven error is
 /// within `2 (n+3) eps` of the inf-norm, the rounding allowance `Operator::own_bound` already
@@ -201,7 +207,11 @@ pub(crate) fn build(method: Method, n: usize, m: usize) -> Option<Built> {
         }
     }
     let (rows, terms) = rows_of::<dd::Dd>(method, n, m)?;
-    finish(&rows, &terms, OperatorRoute::DoubleWord, TOLERANCE)
+    if let Some(b) = finish(&rows, &terms, OperatorRoute::DoubleWord, TOLERANCE) {
+        return Some(b);
+    }
+    let (rows, terms) = rows_of::<wide::Wide>(method, n, m)?;
+    finish(&rows, &terms, OperatorRoute::MultiWord, TOLERANCE)
 }
 
 #[cfg(test)]

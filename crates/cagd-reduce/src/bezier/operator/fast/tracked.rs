@@ -7,6 +7,7 @@
 //! [`Tracked::err`] covers by doubling.
 
 use super::dd::Dd;
+use super::wide::Wide;
 
 /// A base arithmetic: `f64` or double-word, with its proven relative error per operation.
 pub(crate) trait Base: Copy {
@@ -29,6 +30,11 @@ pub(crate) trait Base: Copy {
     fn div(self, y: Self) -> Self;
     /// The nearest `f64` (round-to-nearest of the value, up to one more rounding).
     fn to_f64(self) -> f64;
+    /// `C(n, k)` (`0 <= k <= n <= MAX_BINOMIAL_N`) with its absolute error bound.
+    fn of_binom(n: usize, k: usize) -> (Self, f64) {
+        let (hi, lo) = binom_parts(n, k);
+        Self::of_parts(hi, lo)
+    }
 }
 
 impl Base for f64 {
@@ -108,6 +114,49 @@ impl Base for Dd {
     }
 }
 
+impl Base for Wide {
+    const U: f64 = Wide::U;
+    fn of(x: f64) -> Self {
+        Wide::from_f64(x)
+    }
+    fn of_u128(x: u128) -> (Self, f64) {
+        (Wide::from_u128(x), 0.0)
+    }
+    fn of_parts(hi: f64, lo: f64) -> (Self, f64) {
+        // As for double-word: exact below 2^106, relative error <= u^2 above (unused for
+        // binomials, which `of_binom` takes exactly).
+        let e = if hi < 2f64.powi(106) {
+            0.0
+        } else {
+            hi * 2f64.powi(-104)
+        };
+        (Wide::from_f64(hi).add(Wide::from_f64(lo)), e)
+    }
+    fn of_binom(n: usize, k: usize) -> (Self, f64) {
+        // Beyond the exact table (not reached: degrees are validated first) as the other
+        // bases do: `0`.
+        (
+            Wide::from_u128(cagd_core::try_binomial(n, k).unwrap_or(0)),
+            0.0,
+        )
+    }
+    fn add(self, y: Self) -> Self {
+        Wide::add(self, y)
+    }
+    fn sub(self, y: Self) -> Self {
+        Wide::add(self, y.neg())
+    }
+    fn mul(self, y: Self) -> Self {
+        Wide::mul(self, y)
+    }
+    fn div(self, y: Self) -> Self {
+        Wide::div(self, y)
+    }
+    fn to_f64(self) -> f64 {
+        Wide::to_f64(self)
+    }
+}
+
 /// `C(n, k)` as `(hi, lo)`: `hi` the nearest `f64`, `lo` the rest `C(n,k) - hi` rounded to
 /// `f64` (exact below `2^106`), from a process-wide table (the `u128 -> f64` conversions are
 /// libcalls, and the builders ask for thousands of binomials).
@@ -170,8 +219,7 @@ impl<B: Base> Tracked<B> {
             clippy::cast_sign_loss,
             reason = "0 <= k <= n <= 130"
         )]
-        let (hi, lo) = binom_parts(n as usize, k as usize);
-        let (v, e) = B::of_parts(hi, lo);
+        let (v, e) = B::of_binom(n as usize, k as usize);
         Self { v, e }
     }
 
