@@ -164,7 +164,7 @@ fn multi_word_route_matches_the_exact_oracle() {
                 if method.check(n, m).is_err() {
                     continue;
                 }
-                let (rows, terms) = rows_of::<wide::Wide>(method, n, m).unwrap();
+                let (rows, terms) = rows_of::<wide::Wide>(method, n, m, false).unwrap();
                 let b = finish(&rows, &terms, OperatorRoute::MultiWord, 1e-15)
                     .unwrap_or_else(|| panic!("{method:?} {n}->{m}: not proven to 1e-15"));
                 let (e, te, _) = compare_built(method, n, m, &b).unwrap();
@@ -227,5 +227,14 @@ fn survey_high_degree_routes() {
             slowest.0 * 1e3,
             (slowest.1, slowest.2)
         );
+    }
+}
+
+/// Profiling aid (not a check): 200 builds of L2-C0 `(30,15)`.
+#[test]
+#[ignore = "profiling aid"]
+fn profile_l2_c0_30_15() {
+    for _ in 0..200 {
+        std::hint::black_box(build(Method::L2 { r: 0, p: 0 }, 30, 15));
     }
 }

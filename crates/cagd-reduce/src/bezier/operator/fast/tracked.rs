@@ -35,6 +35,13 @@ pub(crate) trait Base: Copy {
         let (hi, lo) = binom_parts(n, k);
         Self::of_parts(hi, lo)
     }
+    /// `1 / C(n, k)` (`0 <= k <= n <= MAX_BINOMIAL_N`) with its absolute error bound (the
+    /// raw propagated bound of [`Tracked::div`]).
+    fn of_recip_binom(n: usize, k: usize) -> (Self, f64) {
+        let (b, e) = Self::of_binom(n, k);
+        let q = Tracked::<Self>::of(1.0).div(Tracked::from_parts(b, e));
+        (q.value(), q.bound())
+    }
 }
 
 impl Base for f64 {
@@ -111,6 +118,29 @@ impl Base for Dd {
     }
     fn to_f64(self) -> f64 {
         self.hi + self.lo
+    }
+    /// From a process-wide table, one row per `n` built on first use (the truncations'
+    /// coefficient functionals ask for `O(n^2)` of them per build, each a double-word
+    /// division).
+    fn of_recip_binom(n: usize, k: usize) -> (Self, f64) {
+        use std::sync::OnceLock;
+        static ROWS: [OnceLock<Vec<(Dd, f64)>>; cagd_core::MAX_BINOMIAL_N + 1] =
+            [const { OnceLock::new() }; cagd_core::MAX_BINOMIAL_N + 1];
+        let Some(row) = ROWS.get(n) else {
+            return (Dd::from_f64(0.0), f64::INFINITY);
+        };
+        let row = row.get_or_init(|| {
+            (0..=n)
+                .map(|k| {
+                    let (b, e) = Self::of_binom(n, k);
+                    let q = Tracked::<Self>::of(1.0).div(Tracked::from_parts(b, e));
+                    (q.value(), q.bound())
+                })
+                .collect()
+        });
+        row.get(k)
+            .copied()
+            .unwrap_or((Dd::from_f64(0.0), f64::INFINITY))
     }
 }
 
@@ -220,6 +250,23 @@ impl<B: Base> Tracked<B> {
             reason = "0 <= k <= n <= 130"
         )]
         let (v, e) = B::of_binom(n as usize, k as usize);
+        Self { v, e }
+    }
+
+    /// `1 / C(n, k)` (an infinite error bound outside `0 <= k <= n`).
+    pub(crate) fn recip_binom(n: i64, k: i64) -> Self {
+        if n < 0 || k < 0 || k > n {
+            return Self {
+                v: B::of(0.0),
+                e: f64::INFINITY,
+            };
+        }
+        #[allow(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "0 <= k <= n <= 130"
+        )]
+        let (v, e) = B::of_recip_binom(n as usize, k as usize);
         Self { v, e }
     }
 
