@@ -351,10 +351,33 @@ fn top_complement<B: Base>(
 /// `operator_build` bench: 7e-10 against 5e-10 at L2-C0 `(30,15)`). Saves the
 /// `f64` attempt where cancellation makes it hopeless (a performance choice only: the
 /// double-word route is proven on its own).
+/// The verdict is remembered per `(family, N, k, tol)` for the process (it is a constant of
+/// those, and its one `f64` functional cost 4 % of an L2 build at `(30,15)`).
 pub(crate) fn f64_hopeless(family: Family, nn: i64, k: i64, tol: f64) -> bool {
+    use std::collections::HashMap;
+    use std::sync::{OnceLock, RwLock};
+    type Memo = RwLock<HashMap<(i64, i64, i64, i64, u64), bool>>;
+    static MEMO: OnceLock<Memo> = OnceLock::new();
     if nn < 0 || k < 0 {
         return false;
     }
+    let memo = MEMO.get_or_init(|| RwLock::new(HashMap::new()));
+    let (fa, fb) = match family {
+        Family::Chebyshev => (-1, -1),
+        Family::Jacobi { a, b } => (a, b),
+    };
+    let key = (fa, fb, nn, k, tol.to_bits());
+    if let Some(v) = memo.read().ok().and_then(|m| m.get(&key).copied()) {
+        return v;
+    }
+    let v = f64_hopeless_uncached(family, nn, k, tol);
+    if let Ok(mut m) = memo.write() {
+        m.insert(key, v);
+    }
+    v
+}
+
+fn f64_hopeless_uncached(family: Family, nn: i64, k: i64, tol: f64) -> bool {
     let row = functionals::<f64>(family, nn, k, k).pop();
     row.is_some_and(|r| {
         let (v, e) = r.rounded();
