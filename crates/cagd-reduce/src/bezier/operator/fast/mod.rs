@@ -218,7 +218,11 @@ pub(crate) fn build(method: Method, n: usize, m: usize) -> Option<Built> {
     };
     for &mixed in tries {
         let (rows, terms) = rows_of::<dd::Dd>(method, n, m, mixed)?;
-        if let Some(b) = finish(&rows, &terms, OperatorRoute::DoubleWord, TOLERANCE) {
+        // The mixed route only at the rounding level (`strict`): the error-curve basis of
+        // the bounds (`error_basis.rs`) finds its rank at that level, and a less accurate
+        // operator would only loosen the bounds.
+        let tol = if mixed { strict } else { TOLERANCE };
+        if let Some(b) = finish(&rows, &terms, OperatorRoute::DoubleWord, tol) {
             return Some(b);
         }
     }
