@@ -196,7 +196,17 @@ fn every_method_has_a_fast_route_and_the_exact_one_on_request() {
     assert_eq!(op.construction_error(), 0.0);
 }
 
-/// Survey (not a check): at degree >= 40, the pairs left to the exact route and the
+/// The source degrees of the survey: `CAGD_SURVEY_ALL=1` every `n` from 17 to 64, else
+/// 40, 48, 56, 64.
+fn survey_degrees() -> Vec<usize> {
+    if std::env::var("CAGD_SURVEY_ALL").is_ok_and(|v| v == "1") {
+        (17..=64).collect()
+    } else {
+        vec![40, 48, 56, 64]
+    }
+}
+
+/// Survey (not a check): at degree >= 40 (or 17..=64, see [`survey_degrees`]), the pairs left to the exact route and the
 /// slowest build per method (`cargo test --release -p cagd-reduce --lib survey -- --ignored
 /// --nocapture`).
 #[test]
@@ -204,7 +214,7 @@ fn every_method_has_a_fast_route_and_the_exact_one_on_request() {
 fn survey_high_degree_routes() {
     for method in methods() {
         let (mut exact, mut slowest, mut wide) = (Vec::new(), (0.0f64, 0, 0), 0);
-        for n in [40usize, 48, 56, 64] {
+        for n in survey_degrees() {
             for m in 1..n {
                 if method.check(n, m).is_err() {
                     continue;
