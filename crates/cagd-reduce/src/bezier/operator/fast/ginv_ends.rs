@@ -19,7 +19,8 @@ use super::tracked::{Base, Tracked};
 use super::truncation::{Family, truncated};
 
 /// The rows of the generalized inverse with fixed ends, `n -> m` (no own-bound terms).
-pub(crate) fn ginv_ends<B: Base>(n: usize, m: usize) -> Rows<B> {
+/// (`mixed`: as [`truncated`]'s.)
+pub(crate) fn ginv_ends<B: Base>(n: usize, m: usize, mixed: bool) -> Rows<B> {
     if m <= 1 {
         let rows = if m == 0 {
             // Not reachable through `Method::check` (two fixed ends need m >= 1); kept total.
@@ -29,7 +30,7 @@ pub(crate) fn ginv_ends<B: Base>(n: usize, m: usize) -> Rows<B> {
         };
         return (rows, Vec::new());
     }
-    let (x, _) = truncated::<B>(Family::Jacobi { a: 0, b: 0 }, n, m, -1, -1, None);
+    let (x, _) = truncated::<B>(Family::Jacobi { a: 0, b: 0 }, n, m, -1, -1, None, mixed);
     let tr = |r: &Row<B>| -> Vec<Tracked<B>> { (0..=n).map(|c| r.at(c)).collect() };
     let x0 = tr(&x[0]);
     // y_0[i] = X_i . x_0; X is centro-symmetric (the free problem is), so y_m[i] = y_0[m-i].

@@ -1,8 +1,8 @@
 //! Fast construction of the reduction operators (goes beyond the seed): the same algorithms
 //! as the exact route (`super::exact_operator`, kept as the oracle) and closed forms for the
 //! multi-degree methods ([`truncation`]), run in `f64` and, where that is not accurate
-//! enough, in double-word arithmetic, every number carrying a rigorous bound of its error
-//! ([`tracked`]).
+//! enough, in double-word arithmetic, and where even that is not, in 256-bit floating point
+//! ([`wide`]), every number carrying a rigorous bound of its error ([`tracked`]).
 //!
 //! A route is accepted only if its *proven* error is at most [`TOLERANCE`] relative to the
 //! operator's inf-norm (entrywise and per row sum) and to each bound functional's 1-norm;
@@ -16,6 +16,7 @@ mod rows;
 mod steps;
 mod tracked;
 mod truncation;
+mod wide;
 
 use rows::{Row, Rows, to_i};
 use tracked::Base;
@@ -36,6 +37,10 @@ pub enum OperatorRoute {
     F64,
     /// Double-word (about 106-bit) arithmetic with a proven error bound.
     DoubleWord,
+    /// 256-bit binary floating point with a proven error bound (where the double-word
+    /// route's proven error is above the goal: the stepwise perturbation at high degree,
+    /// truncations close to `m = n`).
+    MultiWord,
     /// Exact rational arithmetic, rounded once.
     Exact,
 }
@@ -51,29 +56,32 @@ pub(crate) struct Built {
 }
 
 /// The rows and terms of `method` in base arithmetic `B` (`None` for a method without a
-/// fast route: none today, kept for methods added later).
-fn rows_of<B: Base>(method: Method, n: usize, m: usize) -> Option<Rows<B>> {
+/// fast route: none today, kept for methods added later); `mixed`: the truncations' back
+/// conversion in `f64` (see [`truncated`]).
+fn rows_of<B: Base>(method: Method, n: usize, m: usize, mixed: bool) -> Option<Rows<B>> {
     if method == Method::Eck {
-        return Some(eck(n, m));
+        return Some(eck(n, m, mixed));
     }
     if method.is_one_degree() {
         return Some(steps::stepwise(method, n, m));
     }
     let cheb = |r: i32, p: i32| {
         let factor = super::chebyshev::bound_factor_up(r, p);
-        truncated(Family::Chebyshev, n, m, r, p, Some(factor))
+        truncated(Family::Chebyshev, n, m, r, p, Some(factor), mixed)
     };
     Some(match method {
         Method::WatkinsWorsey | Method::BogackiWeinsteinXu => cheb(-1, -1),
         Method::ConstrainedChebyshev { r, p } => cheb(r, p),
-        Method::GeneralizedInverse => truncated(Family::Jacobi { a: 0, b: 0 }, n, m, -1, -1, None),
-        Method::GeneralizedInverseEnds => ginv_ends::ginv_ends(n, m),
+        Method::GeneralizedInverse => {
+            truncated(Family::Jacobi { a: 0, b: 0 }, n, m, -1, -1, None, mixed)
+        }
+        Method::GeneralizedInverseEnds => ginv_ends::ginv_ends(n, m, mixed),
         Method::L2 { r, p } => {
             let family = Family::Jacobi {
                 a: 2 * i64::from(r) + 2,
                 b: 2 * i64::from(p) + 2,
             };
-            truncated(family, n, m, r, p, None)
+            truncated(family, n, m, r, p, None, mixed)
         }
         _ => return None,
     })
@@ -110,8 +118,8 @@ fn truncation_of(method: Method) -> Option<(Family, i32, i32, bool)> {
 /// the degree-`k` stage `s` (the truncation to degree `k`), whose leading power coefficient
 /// `Delta^k s` is `2^(2k-1)` times the `T_k(2t-1)` coefficient functional `f_k` of `P`; the
 /// terms are listed from `k = n` down, as the stepwise exact route lists them.
-fn eck<B: Base>(n: usize, m: usize) -> Rows<B> {
-    let (rows, terms) = truncated::<B>(Family::Chebyshev, n, m, -1, -1, Some(1.0));
+fn eck<B: Base>(n: usize, m: usize, mixed: bool) -> Rows<B> {
+    let (rows, terms) = truncated::<B>(Family::Chebyshev, n, m, -1, -1, Some(1.0), mixed);
     let mut terms: Vec<(f64, Row<B>)> = terms
         .into_iter()
         .zip(m + 1..=n)
@@ -174,8 +182,9 @@ fn finish<B: Base>(
 }
 
 /// The operator of `method` (`n -> m`, preconditions checked by the caller) by the first
-/// route whose proven error is within [`TOLERANCE`]: `f64`, then double-word; `None` if
-/// neither is (or the method has no fast route), and the caller uses the exact route.
+/// route whose proven error is within [`TOLERANCE`]: `f64`, then double-word, then 256-bit
+/// ([`wide`]); `None` if none is (or the method has no fast route), and the caller uses the
+/// exact route.
 ///
 /// A method with its own bound terms takes the `f64` route only if its proven error is
 /// within `2 (n+3) eps` of the inf-norm, the rounding allowance `Operator::own_bound` already
@@ -194,14 +203,31 @@ pub(crate) fn build(method: Method, n: usize, m: usize) -> Option<Built> {
             && truncation::f64_hopeless(family, nn, if terms { nn } else { mm }, tol)
     });
     if !skip_f64 {
-        let (rows, terms) = rows_of::<f64>(method, n, m)?;
+        let (rows, terms) = rows_of::<f64>(method, n, m, false)?;
         let tol = if terms.is_empty() { TOLERANCE } else { strict };
         if let Some(b) = finish(&rows, &terms, OperatorRoute::F64, tol) {
             return Some(b);
         }
     }
-    let (rows, terms) = rows_of::<dd::Dd>(method, n, m)?;
-    finish(&rows, &terms, OperatorRoute::DoubleWord, TOLERANCE)
+    // Double-word with the back conversion in `f64` first (for a truncation), then all in
+    // double-word.
+    let tries: &[bool] = if truncation_of(method).is_some() {
+        &[true, false]
+    } else {
+        &[false]
+    };
+    for &mixed in tries {
+        let (rows, terms) = rows_of::<dd::Dd>(method, n, m, mixed)?;
+        // The mixed route only at the rounding level (`strict`): the error-curve basis of
+        // the bounds (`error_basis.rs`) finds its rank at that level, and a less accurate
+        // operator would only loosen the bounds.
+        let tol = if mixed { strict } else { TOLERANCE };
+        if let Some(b) = finish(&rows, &terms, OperatorRoute::DoubleWord, tol) {
+            return Some(b);
+        }
+    }
+    let (rows, terms) = rows_of::<wide::Wide>(method, n, m, false)?;
+    finish(&rows, &terms, OperatorRoute::MultiWord, TOLERANCE)
 }
 
 #[cfg(test)]

@@ -72,6 +72,26 @@ impl<B: Base> Row<B> {
         r
     }
 
+    /// The row in `f64` arithmetic: each entry rounded (to nearest, up to one more
+    /// rounding: at most `2u |v|`, allowed as `eps |v|` with a margin), its error bound carried.
+    pub(crate) fn to_f64_row(&self) -> Row<f64> {
+        let v: Vec<f64> = self.v.iter().map(|x| x.to_f64()).collect();
+        let e = v
+            .iter()
+            .zip(&self.e)
+            .map(|(x, e)| e + f64::EPSILON * (1.0 + 1e-9) * x.abs())
+            .collect();
+        Row { v, e }
+    }
+
+    /// An `f64` row in this arithmetic (exactly), its error bound carried.
+    pub(crate) fn from_f64_row(r: &Row<f64>) -> Self {
+        Self {
+            v: r.v.iter().map(|&x| B::of(x)).collect(),
+            e: r.e.clone(),
+        }
+    }
+
     /// The entries rounded to `f64` and a rigorous bound of `sum_c |val_c - exact_c|` (the
     /// final rounding and the rounding of the error computation included, as
     /// [`Tracked::err`]).

@@ -33,7 +33,16 @@ pub(super) fn methods() -> Vec<Method> {
 /// for the method or has no fast route.
 pub(super) fn compare(method: Method, n: usize, m: usize) -> Option<(f64, f64, OperatorRoute)> {
     method.check(n, m).ok()?;
-    let fast = build(method, n, m)?;
+    compare_built(method, n, m, &build(method, n, m)?)
+}
+
+/// [`compare`] for a given fast-built operator.
+fn compare_built(
+    method: Method,
+    n: usize,
+    m: usize,
+    fast: &Built,
+) -> Option<(f64, f64, OperatorRoute)> {
     let (exact, terms) = exact_operator(method, n, m).ok()?;
     let ex = exact.to_f64();
     let cols = n + 1;
@@ -143,6 +152,38 @@ fn fast_routes_match_the_exact_oracle_to_degree_64() {
     println!("{}", sweep(&pairs).join("\n"));
 }
 
+/// The 256-bit route of every method against the oracle at every pair up to degree 12
+/// (forced: at these degrees `build` takes `f64` or double-word), and at pairs of degree 40
+/// where `build` takes it (the stepwise perturbation, truncations close to `m = n`): within
+/// its proven error, and that error far below the goal.
+#[test]
+fn multi_word_route_matches_the_exact_oracle() {
+    for method in methods() {
+        for n in 1..=12 {
+            for m in 0..n {
+                if method.check(n, m).is_err() {
+                    continue;
+                }
+                let (rows, terms) = rows_of::<wide::Wide>(method, n, m, false).unwrap();
+                let b = finish(&rows, &terms, OperatorRoute::MultiWord, 1e-15)
+                    .unwrap_or_else(|| panic!("{method:?} {n}->{m}: not proven to 1e-15"));
+                let (e, te, _) = compare_built(method, n, m, &b).unwrap();
+                assert!(e <= 1e-15 && te <= 1.0, "{method:?} {n}->{m}: {e:e} {te:e}");
+            }
+        }
+    }
+    for (method, n, m) in [
+        (Method::Perturb, 40, 10),
+        (Method::PerturbG1 { l1: 0.25, l2: -0.5 }, 40, 10),
+        (Method::GeneralizedInverse, 40, 37),
+        (Method::Eck, 40, 37),
+    ] {
+        let (e, te, route) = compare(method, n, m).unwrap();
+        assert_eq!(route, OperatorRoute::MultiWord, "{method:?} {n}->{m}");
+        assert!(e <= 1e-15 && te <= 1.0, "{method:?} {n}->{m}: {e:e} {te:e}");
+    }
+}
+
 #[test]
 fn every_method_has_a_fast_route_and_the_exact_one_on_request() {
     for method in methods() {
@@ -153,4 +194,57 @@ fn every_method_has_a_fast_route_and_the_exact_one_on_request() {
     let op = crate::build_operator(Method::GeneralizedInverseEnds, 9, 4, true).unwrap();
     assert_eq!(op.route(), OperatorRoute::Exact);
     assert_eq!(op.construction_error(), 0.0);
+}
+
+/// The source degrees of the survey: `CAGD_SURVEY_ALL=1` every `n` from 17 to 64, else
+/// 40, 48, 56, 64.
+fn survey_degrees() -> Vec<usize> {
+    if std::env::var("CAGD_SURVEY_ALL").is_ok_and(|v| v == "1") {
+        (17..=64).collect()
+    } else {
+        vec![40, 48, 56, 64]
+    }
+}
+
+/// Survey (not a check): at degree >= 40 (or 17..=64, see [`survey_degrees`]), the pairs left to the exact route and the
+/// slowest build per method (`cargo test --release -p cagd-reduce --lib survey -- --ignored
+/// --nocapture`).
+#[test]
+#[ignore = "survey"]
+fn survey_high_degree_routes() {
+    for method in methods() {
+        let (mut exact, mut slowest, mut wide) = (Vec::new(), (0.0f64, 0, 0), 0);
+        for n in survey_degrees() {
+            for m in 1..n {
+                if method.check(n, m).is_err() {
+                    continue;
+                }
+                let t = std::time::Instant::now();
+                let b = build(method, n, m);
+                let dt = t.elapsed().as_secs_f64();
+                if dt > slowest.0 {
+                    slowest = (dt, n, m);
+                }
+                match b {
+                    None => exact.push((n, m)),
+                    Some(b) if b.route == OperatorRoute::MultiWord => wide += 1,
+                    Some(_) => {}
+                }
+            }
+        }
+        println!(
+            "{method:?}: {wide} multi-word, slowest {:.1} ms at {:?}, exact: {exact:?}",
+            slowest.0 * 1e3,
+            (slowest.1, slowest.2)
+        );
+    }
+}
+
+/// Profiling aid (not a check): 200 builds of L2-C0 `(30,15)`.
+#[test]
+#[ignore = "profiling aid"]
+fn profile_l2_c0_30_15() {
+    for _ in 0..200 {
+        std::hint::black_box(build(Method::L2 { r: 0, p: 0 }, 30, 15));
+    }
 }

@@ -7,6 +7,7 @@
 //! [`Tracked::err`] covers by doubling.
 
 use super::dd::Dd;
+use super::wide::Wide;
 
 /// A base arithmetic: `f64` or double-word, with its proven relative error per operation.
 pub(crate) trait Base: Copy {
@@ -29,6 +30,18 @@ pub(crate) trait Base: Copy {
     fn div(self, y: Self) -> Self;
     /// The nearest `f64` (round-to-nearest of the value, up to one more rounding).
     fn to_f64(self) -> f64;
+    /// `C(n, k)` (`0 <= k <= n <= MAX_BINOMIAL_N`) with its absolute error bound.
+    fn of_binom(n: usize, k: usize) -> (Self, f64) {
+        let (hi, lo) = binom_parts(n, k);
+        Self::of_parts(hi, lo)
+    }
+    /// `1 / C(n, k)` (`0 <= k <= n <= MAX_BINOMIAL_N`) with its absolute error bound (the
+    /// raw propagated bound of [`Tracked::div`]).
+    fn of_recip_binom(n: usize, k: usize) -> (Self, f64) {
+        let (b, e) = Self::of_binom(n, k);
+        let q = Tracked::<Self>::of(1.0).div(Tracked::from_parts(b, e));
+        (q.value(), q.bound())
+    }
 }
 
 impl Base for f64 {
@@ -106,6 +119,72 @@ impl Base for Dd {
     fn to_f64(self) -> f64 {
         self.hi + self.lo
     }
+    /// From a process-wide table, one row per `n` built on first use (the truncations'
+    /// coefficient functionals ask for `O(n^2)` of them per build, each a double-word
+    /// division).
+    fn of_recip_binom(n: usize, k: usize) -> (Self, f64) {
+        use std::sync::OnceLock;
+        static ROWS: [OnceLock<Vec<(Dd, f64)>>; cagd_core::MAX_BINOMIAL_N + 1] =
+            [const { OnceLock::new() }; cagd_core::MAX_BINOMIAL_N + 1];
+        let Some(row) = ROWS.get(n) else {
+            return (Dd::from_f64(0.0), f64::INFINITY);
+        };
+        let row = row.get_or_init(|| {
+            (0..=n)
+                .map(|k| {
+                    let (b, e) = Self::of_binom(n, k);
+                    let q = Tracked::<Self>::of(1.0).div(Tracked::from_parts(b, e));
+                    (q.value(), q.bound())
+                })
+                .collect()
+        });
+        row.get(k)
+            .copied()
+            .unwrap_or((Dd::from_f64(0.0), f64::INFINITY))
+    }
+}
+
+impl Base for Wide {
+    const U: f64 = Wide::U;
+    fn of(x: f64) -> Self {
+        Wide::from_f64(x)
+    }
+    fn of_u128(x: u128) -> (Self, f64) {
+        (Wide::from_u128(x), 0.0)
+    }
+    fn of_parts(hi: f64, lo: f64) -> (Self, f64) {
+        // As for double-word: exact below 2^106, relative error <= u^2 above (unused for
+        // binomials, which `of_binom` takes exactly).
+        let e = if hi < 2f64.powi(106) {
+            0.0
+        } else {
+            hi * 2f64.powi(-104)
+        };
+        (Wide::from_f64(hi).add(Wide::from_f64(lo)), e)
+    }
+    fn of_binom(n: usize, k: usize) -> (Self, f64) {
+        // Beyond the exact table (not reached: degrees are validated first) as the other
+        // bases do: `0`.
+        (
+            Wide::from_u128(cagd_core::try_binomial(n, k).unwrap_or(0)),
+            0.0,
+        )
+    }
+    fn add(self, y: Self) -> Self {
+        Wide::add(self, y)
+    }
+    fn sub(self, y: Self) -> Self {
+        Wide::add(self, y.neg())
+    }
+    fn mul(self, y: Self) -> Self {
+        Wide::mul(self, y)
+    }
+    fn div(self, y: Self) -> Self {
+        Wide::div(self, y)
+    }
+    fn to_f64(self) -> f64 {
+        Wide::to_f64(self)
+    }
 }
 
 /// `C(n, k)` as `(hi, lo)`: `hi` the nearest `f64`, `lo` the rest `C(n,k) - hi` rounded to
@@ -170,8 +249,24 @@ impl<B: Base> Tracked<B> {
             clippy::cast_sign_loss,
             reason = "0 <= k <= n <= 130"
         )]
-        let (hi, lo) = binom_parts(n as usize, k as usize);
-        let (v, e) = B::of_parts(hi, lo);
+        let (v, e) = B::of_binom(n as usize, k as usize);
+        Self { v, e }
+    }
+
+    /// `1 / C(n, k)` (an infinite error bound outside `0 <= k <= n`).
+    pub(crate) fn recip_binom(n: i64, k: i64) -> Self {
+        if n < 0 || k < 0 || k > n {
+            return Self {
+                v: B::of(0.0),
+                e: f64::INFINITY,
+            };
+        }
+        #[allow(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "0 <= k <= n <= 130"
+        )]
+        let (v, e) = B::of_recip_binom(n as usize, k as usize);
         Self { v, e }
     }
 

@@ -115,6 +115,10 @@ fn functionals<B: Base>(family: Family, nn: i64, first: i64, last: i64) -> Vec<R
         }
     }
     let width = idx(nn) + 1;
+    let symmetric = match family {
+        Family::Chebyshev => true,
+        Family::Jacobi { a, b } => a == b,
+    };
     (first..=last)
         .map(|k| {
             let kk = nn + k;
@@ -133,47 +137,100 @@ fn functionals<B: Base>(family: Family, nn: i64, first: i64, last: i64) -> Vec<R
                         .div(Tracked::binom(k + b, b));
                     (
                         (0..=kk)
-                            .map(|s| Tracked::of(1.0).div(Tracked::binom(kk + a + b, s + a)))
+                            .map(|s| Tracked::recip_binom(kk + a + b, s + a))
                             .collect(),
                         inv_h.div(Tracked::small(kk + a + b + 1)),
                     )
                 }
             };
             let d = Row::from_tracked(&d);
-            let mut acc = Row::zeros(width);
+            // A symmetric weight has `p_k(1-t) = (-1)^k p_k(t)`, so `phi_k(N-j) =
+            // (-1)^k phi_k(j)`: only the first half is computed, the rest mirrored (the
+            // mirrored error bounds hold for the mirrored exact entries; negation is exact
+            // in every base).
+            let half = if symmetric { width / 2 + 1 } else { width };
+            let mut acc = Row::zeros(half.min(width));
             for (l, cl) in c.iter().enumerate() {
                 axpy_window(&mut acc, *cl, &d, l);
             }
             let cols: Vec<Tracked<B>> = (0..=nn)
+                .take(acc.v.len())
                 .map(|j| factor.mul(Tracked::binom(nn, j)))
                 .collect();
-            scale_cols(&acc, &cols)
+            let mut row = scale_cols(&acc, &cols);
+            for j in row.v.len()..width {
+                let (v, e) = (row.v[width - 1 - j], row.e[width - 1 - j]);
+                row.v.push(if k % 2 == 0 { v } else { B::of(0.0).sub(v) });
+                row.e.push(e);
+            }
+            row
         })
         .collect()
 }
 
+/// The conversion coefficients `[k][s]`: the coefficient of `B_s^M` in `p_k`,
+/// `sum_l c_l C(M-k, s-l) / C(M, s)`, for `k = 0..=M`, `s = 0..=last`.
+fn conversion<B: Base>(family: Family, mm: i64, last: i64) -> Vec<Vec<Tracked<B>>> {
+    (0..=mm)
+        .map(|k| {
+            let c = coefficients::<B>(family, k);
+            let ci = integer_coefficients(family, k);
+            (0..=last)
+                .map(|s| {
+                    let coef = match ci.as_ref().and_then(|ci| elevated_exact(ci, mm - k, s)) {
+                        Some(x) => x,
+                        None => {
+                            let mut coef = zero::<B>();
+                            for (l, cl) in c.iter().enumerate() {
+                                coef = coef.fma(*cl, Tracked::binom(mm - k, s - to_i(l)));
+                            }
+                            coef
+                        }
+                    };
+                    coef.div(Tracked::binom(mm, s))
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// [`conversion`] in `f64` for every `s`, remembered per `(family, M)` for the process (a
+/// table of constants like the binomials': `O(M^2)` numbers, each an `i128` sum, which cost
+/// a third of an L2 build at `(30,15)` when recomputed).
+fn conversion_f64(family: Family, mm: i64) -> std::sync::Arc<Vec<Vec<Tracked<f64>>>> {
+    use std::collections::HashMap;
+    use std::sync::{Arc, OnceLock, RwLock};
+    type Memo = RwLock<HashMap<(i64, i64, i64), Arc<Vec<Vec<Tracked<f64>>>>>>;
+    static MEMO: OnceLock<Memo> = OnceLock::new();
+    let memo = MEMO.get_or_init(|| RwLock::new(HashMap::new()));
+    let key = match family {
+        Family::Chebyshev => (-1, -1, mm),
+        Family::Jacobi { a, b } => (a, b, mm),
+    };
+    if let Some(c) = memo.read().ok().and_then(|m| m.get(&key).cloned()) {
+        return c;
+    }
+    let c = Arc::new(conversion::<f64>(family, mm, mm));
+    if let Ok(mut m) = memo.write() {
+        m.insert(key, Arc::clone(&c));
+    }
+    c
+}
+
 /// `sum_{k<=M} p_k(coefficients in degree M) f_k`: the rows of `U` (degree `M`) from the
-/// kept coefficient functionals `f_0..f_M`.
+/// kept coefficient functionals `f_0..f_M` and the conversion coefficients `coefs[k][s]`.
 /// Only rows `s <= last` are computed (the others are left zero).
-fn back_to_bernstein<B: Base>(family: Family, mm: i64, last: i64, f: &[Row<B>]) -> Vec<Row<B>> {
+fn back_to_bernstein<B: Base>(
+    coefs: &[Vec<Tracked<B>>],
+    mm: i64,
+    last: i64,
+    f: &[Row<B>],
+) -> Vec<Row<B>> {
     let len = f.first().map_or(0, |r| r.v.len());
     let mut out: Vec<Row<B>> = vec![Row::zeros(len); idx(mm) + 1];
-    for k in 0..=mm {
-        let c = coefficients::<B>(family, k);
-        let ci = integer_coefficients(family, k);
-        for s in 0..=last {
-            let coef = match ci.as_ref().and_then(|ci| elevated_exact(ci, mm - k, s)) {
-                Some(x) => x,
-                None => {
-                    let mut coef = zero::<B>();
-                    for (l, cl) in c.iter().enumerate() {
-                        coef = coef.fma(*cl, Tracked::binom(mm - k, s - to_i(l)));
-                    }
-                    coef
-                }
-            };
-            let coef = coef.div(Tracked::binom(mm, s));
-            axpy(&mut out[idx(s)], coef, &f[idx(k)]);
+    for (ck, fk) in coefs.iter().zip(f) {
+        for (o, c) in out.iter_mut().zip(ck).take(idx(last) + 1) {
+            axpy(o, *c, fk);
         }
     }
     out
@@ -294,10 +351,33 @@ fn top_complement<B: Base>(
 /// `operator_build` bench: 7e-10 against 5e-10 at L2-C0 `(30,15)`). Saves the
 /// `f64` attempt where cancellation makes it hopeless (a performance choice only: the
 /// double-word route is proven on its own).
+/// The verdict is remembered per `(family, N, k, tol)` for the process (it is a constant of
+/// those, and its one `f64` functional cost 4 % of an L2 build at `(30,15)`).
 pub(crate) fn f64_hopeless(family: Family, nn: i64, k: i64, tol: f64) -> bool {
+    use std::collections::HashMap;
+    use std::sync::{OnceLock, RwLock};
+    type Memo = RwLock<HashMap<(i64, i64, i64, i64, u64), bool>>;
+    static MEMO: OnceLock<Memo> = OnceLock::new();
     if nn < 0 || k < 0 {
         return false;
     }
+    let memo = MEMO.get_or_init(|| RwLock::new(HashMap::new()));
+    let (fa, fb) = match family {
+        Family::Chebyshev => (-1, -1),
+        Family::Jacobi { a, b } => (a, b),
+    };
+    let key = (fa, fb, nn, k, tol.to_bits());
+    if let Some(v) = memo.read().ok().and_then(|m| m.get(&key).copied()) {
+        return v;
+    }
+    let v = f64_hopeless_uncached(family, nn, k, tol);
+    if let Ok(mut m) = memo.write() {
+        m.insert(key, v);
+    }
+    v
+}
+
+fn f64_hopeless_uncached(family: Family, nn: i64, k: i64, tol: f64) -> bool {
     let row = functionals::<f64>(family, nn, k, k).pop();
     row.is_some_and(|r| {
         let (v, e) = r.rounded();
@@ -309,6 +389,13 @@ pub(crate) fn f64_hopeless(family: Family, nn: i64, k: i64, tol: f64) -> bool {
 
 /// The operator `n -> m` with `(r, p)` ends and the interior by truncation in `family`;
 /// the bound terms (Chebyshev: `factor * ||f_k . P||`, `k > M`) when `factor` is given.
+///
+/// With `mixed`, the back conversion of the kept coefficients to Bernstein form
+/// ([`back_to_bernstein`]) runs in `f64` on the coefficient functionals rounded to `f64`
+/// (their errors carried): the alternating sums that need the base arithmetic are in the
+/// functionals, not in the conversion, whose proven error stays at the rounding level
+/// (`2e-15` of the inf-norm at the pairs up to degree 64 measured); the caller retries
+/// without it if the proven error is above the goal.
 pub(crate) fn truncated<B: Base>(
     family: Family,
     n: usize,
@@ -316,6 +403,7 @@ pub(crate) fn truncated<B: Base>(
     r: i32,
     p: i32,
     factor: Option<f64>,
+    mixed: bool,
 ) -> Rows<B> {
     let input = identity::<B>(n + 1);
     let (left, right) = end_points(n, m, r, p, &input);
@@ -343,7 +431,16 @@ pub(crate) fn truncated<B: Base>(
             // Coefficient functionals on P: f_k = sum_i phi_ki P^II_i (P^II = P when
             // r = p = -1).
             let mut f = on_points(phi, n, m, r, p, &left, &right);
-            let u = back_to_bernstein(family, mm, last_i - ri - 1, &f[..=idx(mm)]);
+            let u = if mixed {
+                let g: Vec<Row<f64>> = f[..=idx(mm)].iter().map(Row::to_f64_row).collect();
+                back_to_bernstein::<f64>(&conversion_f64(family, mm), mm, last_i - ri - 1, &g)
+                    .iter()
+                    .map(Row::from_f64_row)
+                    .collect()
+            } else {
+                let coefs = conversion::<B>(family, mm, last_i - ri - 1);
+                back_to_bernstein(&coefs, mm, last_i - ri - 1, &f[..=idx(mm)])
+            };
             (u, f.split_off(idx(mm) + 1))
         };
         // Q_i = U_{i-r-1} C(M, i-r-1) / C(m, i)   (14.5.16)
