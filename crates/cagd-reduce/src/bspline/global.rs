@@ -163,7 +163,7 @@ pub(crate) fn fit_to_budget(
     let mut work = 0usize;
     loop {
         let points = fit(src, m, &knots)?;
-        let bounds = span_bounds(src, m, &knots, &points)?;
+        let bounds = span_bounds(src, m, &knots, &points, budget)?;
         if bounds.iter().all(|x| x.bound <= budget) {
             return Ok((knots, points, bounds));
         }

@@ -5,11 +5,16 @@
 //! end points kept (`S(a) = C(a)`, `S(b) = C(b)`).
 //!
 //! Every knot of `S` is a break of `C`'s pieces or lies inside one, so on each span of `S`
-//! the integrand is a polynomial of degree `2 max(p, m)`; the `(p + 1)`-point Gauss–Legendre
-//! rule of each span integrates it exactly. The integral is therefore the squared norm of
-//! the residual of a weighted collocation system with one row per (span, node) — weight
-//! `sqrt(w_q h)` — and the fit is that system's least-squares solution, computed by
-//! banded Givens QR ([`banded_lsq`]). No normal equations are formed.
+//! the integrand `||C - S||^2 = ||C||^2 - 2 C.S + ||S||^2` is a polynomial; its part that
+//! depends on `S` has degree `p + m` (`m < p`), which the `k`-point Gauss–Legendre rule
+//! of each span, `k = ceil((p + m + 1) / 2)`, integrates exactly (the `||C||^2` part, of
+//! degree `2p`, is a constant of the minimisation and need not be). The integral is
+//! therefore, up to that constant, the squared norm of the residual of a weighted
+//! collocation system with one row per (span, node) — weight `sqrt(w_q h)` — and the fit
+//! is that system's least-squares solution, computed by banded Givens QR
+//! ([`banded_lsq`]). No normal equations are formed. (The `(p + 1)`-point rule, exact for
+//! the whole integrand, gives the same minimiser with up to twice the rows; it was used
+//! until issue 17.)
 //!
 //! NURBS are fitted in homogeneous coordinates. The points may also be *bundles* of
 //! `blocks` curves side by side (the rows of a tensor-product surface, fitted in one
@@ -22,9 +27,11 @@ use cagd_core::{
 };
 
 mod banded_lsq;
+mod node_bound;
 
 use crate::bezier::{hull_bound, max_norm};
 pub(crate) use banded_lsq::BandedLsq;
+use node_bound::NodeBound;
 
 /// The spline to approximate, as Bézier pieces in working coordinates.
 #[derive(Debug, Clone)]
@@ -130,10 +137,12 @@ pub(crate) fn fit(src: &Source, m: usize, knots: &[f64]) -> Result<Vec<f64>> {
     if n <= 2 {
         return Ok(out);
     }
-    let (nodes, weights) = gauss_legendre(p + 1)?;
+    // ceil((p + m + 1) / 2) nodes: exact for every term that depends on the fit.
+    let (nodes, weights) = gauss_legendre((p + m + 2) / 2)?;
     let mut lsq = BandedLsq::new(n - 2, m + 1, d);
     let (mut basis, mut scratch) = (vec![0.0; m + 1], vec![0.0; 2 * m + 2]);
     let (mut value, mut bern) = (vec![0.0; d], vec![0.0; p + 1]);
+    let mut row = Vec::with_capacity(m + 1);
     for s in m..n {
         let (a, b) = (knots[s], knots[s + 1]);
         if a >= b {
@@ -173,9 +182,12 @@ pub(crate) fn fit(src: &Source, m: usize, knots: &[f64]) -> Result<Vec<f64>> {
                 }
                 vals = &vals[..vals.len() - 1];
             }
-            let row: Vec<f64> = vals.iter().map(|v| sw * v).collect();
-            let rhs: Vec<f64> = value.iter().map(|v| sw * v).collect();
-            lsq.add_row(lo - 1, &row, &rhs);
+            row.clear();
+            row.extend(vals.iter().map(|v| sw * v));
+            for v in &mut value {
+                *v *= sw;
+            }
+            lsq.add_row(lo - 1, &row, &value);
         }
     }
     let x = lsq.solve()?;
@@ -197,15 +209,19 @@ pub(crate) struct SpanBound {
 
 /// The spans `[a, b]` of the degree-`m` spline `(knots, points)` (working coordinates of
 /// `src`) with a certified bound of `max ||C - S||` on each (Euclidean, model space): per
-/// span, the piece of `C` restricted to it minus `S` elevated to degree `p`, bounded by the
-/// refined convex hull ([`crate::bezier::hull_bound`], rounding included), the largest
-/// over the blocks; for NURBS by [`rational_bound`] (centred, in model space). A span on
-/// which a control weight of `S` is not positive gets an infinite bound.
+/// span, the piece of `C` restricted to it minus the piece of `S`, bounded by its values
+/// at Chebyshev–Lobatto nodes ([`node_bound`], rounding included, within
+/// [`node_bound::RATIO`] of the true maximum) and, where that bound is above `sharpen`
+/// while the largest node value is not, also by the refined convex hull of the difference
+/// with `S` elevated to degree `p` ([`crate::bezier::hull_bound`]), the smaller of the two;
+/// the largest over the blocks. For NURBS by [`rational_bound`] (centred, in model space).
+/// A span on which a control weight of `S` is not positive gets an infinite bound.
 pub(crate) fn span_bounds(
     src: &Source,
     m: usize,
     knots: &[f64],
     points: &[f64],
+    sharpen: f64,
 ) -> Result<Vec<SpanBound>> {
     let (p, d, blk) = (src.degree, src.pdim, src.block);
     let target = BSplineCurve::new(m, knots.to_vec(), points.to_vec(), d)?;
@@ -215,6 +231,9 @@ pub(crate) fn span_bounds(
     let (mut left, mut right) = (vec![0.0; (p + 1) * d], vec![0.0; (p + 1) * d]);
     let mut sub = Vec::with_capacity((p + 1) * d);
     let (mut sb, mut tb) = (vec![0.0; (p + 1) * blk], vec![0.0; (m + 1) * blk]);
+    let (mut qb, mut pb) = (vec![0.0; (m + 1) * blk], vec![0.0; (p + 1) * blk]);
+    let nodes = (!src.rational).then(|| NodeBound::cached(p, m));
+    let mut vals = Vec::new();
     let mut s = m;
     for piece in &pieces {
         let (a, b) = (piece.start, piece.end);
@@ -231,11 +250,20 @@ pub(crate) fn span_bounds(
                 .fold(f64::INFINITY, f64::min);
             rational_bound(&sub, piece.curve.points(), (d, blk, p), vmin)
         } else {
+            let nodes = nodes.as_ref().expect("built for polynomial input");
             let (mut eps, mut floor): (f64, f64) = (0.0, 0.0);
+            let span_points = &points[(s - m) * d..(s + 1) * d];
             for j in 0..d / blk {
                 copy_block(&sub, d, j, blk, &mut sb);
                 copy_block(piece.curve.points(), d, j, blk, &mut tb);
-                eps = eps.max(hull_bound(&sb, &tb, blk));
+                copy_block(span_points, d, j, blk, &mut qb);
+                let pmax = max_norm(block_of(src.piece(k), d, j, blk, &mut pb), blk);
+                let (lower, mut upper) =
+                    nodes.bound(&sb, &tb, blk, (pmax, max_norm(&qb, blk)), &mut vals);
+                if upper > sharpen && lower <= sharpen {
+                    upper = upper.min(hull_bound(&sb, &tb, blk));
+                }
+                eps = eps.max(upper);
                 floor = floor.max(2.0 * (p as f64 + 3.0) * f64::EPSILON * max_norm(&sb, blk));
             }
             (eps, floor)
@@ -302,6 +330,15 @@ fn rational_bound(
         return (f64::INFINITY, floor);
     }
     (centred_rational_bound(ha, hw, radius, wmin, vmin), floor)
+}
+
+/// [`copy_block`] into `to` unless the points are one block: the block's points.
+fn block_of<'a>(from: &'a [f64], d: usize, j: usize, blk: usize, to: &'a mut [f64]) -> &'a [f64] {
+    if d == blk {
+        return from;
+    }
+    copy_block(from, d, j, blk, to);
+    to
 }
 
 /// Copies coordinates `j * blk .. (j + 1) * blk` of every point of `from` (points of `d`
