@@ -21,9 +21,9 @@
 //! direction with one knot vector); the bound of a span is then the largest over the
 //! blocks, which bounds the surface by the partition of unity in the other direction.
 
-use cagd_core::kernel::{bernstein_all, subdivide};
 use cagd_core::{
-    BSplineCurve, ModelFrame, Result, basis_functions, centred_rational_bound, gauss_legendre,
+    BSplineCurve, ModelFrame, Result, basis_functions, binomial_f64, centred_rational_bound,
+    gauss_legendre,
 };
 
 mod banded_lsq;
@@ -88,27 +88,35 @@ impl Source {
     }
 
     /// The Bézier points of the source on `[a, b]` (inside piece `k`'s interval) in
-    /// `out`: piece `k` split at `b`, then its left part at `a` (two de Casteljau
-    /// subdivisions, `O(p^2)`; `left` and `right` are scratch of the piece's length).
-    fn restrict_into(
-        &self,
-        k: usize,
-        (a, b): (f64, f64),
-        (left, right): (&mut [f64], &mut [f64]),
-        out: &mut Vec<f64>,
-    ) {
+    /// `out`: piece `k` cut at `b` (its left part), then at `a` (the right part), each by
+    /// de Casteljau's triangle in place (`O(p^2)` convex combinations, no copies).
+    fn restrict_into(&self, k: usize, (a, b): (f64, f64), out: &mut Vec<f64>) {
         let (pa, pb) = (self.breaks[k], self.breaks[k + 1]);
         let (s0, s1) = ((a - pa) / (pb - pa), (b - pa) / (pb - pa));
+        let d = self.pdim;
         out.clear();
+        out.extend_from_slice(self.piece(k));
+        let len = out.len();
         if s1 < 1.0 {
-            subdivide(self.piece(k), self.pdim, s1, left, right);
-            out.extend_from_slice(left);
-        } else {
-            out.extend_from_slice(self.piece(k));
+            // Level r leaves b_0^r at point r: descending, point i takes the combination
+            // of points i - 1 and i of the level before.
+            let (u, t) = (1.0 - s1, s1);
+            for r in 1..=self.degree {
+                for j in (r * d..len).rev() {
+                    out[j] = u * out[j - d] + t * out[j];
+                }
+            }
         }
         if s0 > 0.0 {
-            subdivide(out, self.pdim, s0 / s1, left, right);
-            out.copy_from_slice(right);
+            // Level r leaves b_(p-r)^r at point p - r: ascending, point i takes points i
+            // and i + 1.
+            let t = s0 / s1;
+            let u = 1.0 - t;
+            for r in 1..=self.degree {
+                for j in 0..len - r * d {
+                    out[j] = u * out[j] + t * out[j + d];
+                }
+            }
         }
     }
 
@@ -143,6 +151,7 @@ pub(crate) fn fit(src: &Source, m: usize, knots: &[f64]) -> Result<Vec<f64>> {
     let (mut basis, mut scratch) = (vec![0.0; m + 1], vec![0.0; 2 * m + 2]);
     let (mut value, mut bern) = (vec![0.0; d], vec![0.0; p + 1]);
     let mut row = Vec::with_capacity(m + 1);
+    let binom: Vec<f64> = (0..=p).map(|i| binomial_f64(p, i)).collect();
     for s in m..n {
         let (a, b) = (knots[s], knots[s + 1]);
         if a >= b {
@@ -159,7 +168,7 @@ pub(crate) fn fit(src: &Source, m: usize, knots: &[f64]) -> Result<Vec<f64>> {
             // 70 % of a degree-30 fit). Evaluating a restriction of the piece at the exact
             // node instead would not see t's rounding, which at a parameter offset of 1e5
             // and spans of 1e-4 is 2e-7 of the span, and spoils fits of exact input.
-            bernstein_all(p, (t - pa) / (pb - pa), &mut bern);
+            bernstein_with(&binom, (t - pa) / (pb - pa), &mut bern);
             value.fill(0.0);
             for (bi, pt) in bern.iter().zip(src.piece(k).chunks_exact(d)) {
                 for (v, c) in value.iter_mut().zip(pt) {
@@ -195,6 +204,23 @@ pub(crate) fn fit(src: &Source, m: usize, knots: &[f64]) -> Result<Vec<f64>> {
     Ok(out)
 }
 
+/// The Bernstein values `B^p_i(t) = C(p, i) t^i (1 - t)^(p - i)` into `out` (`p + 1`
+/// values), `binom` the binomials `C(p, i)` (as `cagd_core::kernel::bernstein_all`, without
+/// looking the binomials up per value).
+fn bernstein_with(binom: &[f64], t: f64, out: &mut [f64]) {
+    let s = 1.0 - t;
+    let mut x = 1.0;
+    for (o, c) in out.iter_mut().zip(binom) {
+        *o = c * x;
+        x *= t;
+    }
+    let mut y = 1.0;
+    for o in out.iter_mut().rev() {
+        *o *= y;
+        y *= s;
+    }
+}
+
 /// One span of a fitted spline with its certified bound.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct SpanBound {
@@ -224,38 +250,43 @@ pub(crate) fn span_bounds(
     sharpen: f64,
 ) -> Result<Vec<SpanBound>> {
     let (p, d, blk) = (src.degree, src.pdim, src.block);
-    let target = BSplineCurve::new(m, knots.to_vec(), points.to_vec(), d)?;
-    let pieces = target.to_beziers()?;
     let n = points.len() / d;
-    let mut out = Vec::with_capacity(pieces.len());
-    let (mut left, mut right) = (vec![0.0; (p + 1) * d], vec![0.0; (p + 1) * d]);
+    if knots.len() != n + m + 1 {
+        return Err(cagd_core::Error::LengthMismatch {
+            what: "knots",
+            got: knots.len(),
+            expected: n + m + 1,
+        });
+    }
+    let mut out = Vec::with_capacity(n - m);
     let mut sub = Vec::with_capacity((p + 1) * d);
+    let (mut tgt, mut scratch) = (vec![0.0; (m + 1) * d], vec![0.0; (m + 1) * d]);
     let (mut sb, mut tb) = (vec![0.0; (p + 1) * blk], vec![0.0; (m + 1) * blk]);
     let (mut qb, mut pb) = (vec![0.0; (m + 1) * blk], vec![0.0; (p + 1) * blk]);
     let nodes = (!src.rational).then(|| NodeBound::cached(p, m));
     let mut vals = Vec::new();
-    let mut s = m;
-    for piece in &pieces {
-        let (a, b) = (piece.start, piece.end);
-        while s + 1 < n && knots[s + 1] <= a {
-            s += 1;
+    for s in m..n {
+        let (a, b) = (knots[s], knots[s + 1]);
+        if a >= b {
+            continue;
         }
+        span_bezier((knots, points, d, m), s, &mut tgt, &mut scratch);
         let k = src.piece_of(a, b);
-        src.restrict_into(k, (a, b), (&mut left, &mut right), &mut sub);
+        src.restrict_into(k, (a, b), &mut sub);
         let (bound, floor) = if src.rational {
             let span_points = &points[(s - m) * d..(s + 1) * d];
             let vmin = span_points
                 .chunks_exact(blk)
                 .map(|q| q[blk - 1])
                 .fold(f64::INFINITY, f64::min);
-            rational_bound(&sub, piece.curve.points(), (d, blk, p), vmin)
+            rational_bound(&sub, &tgt, (d, blk, p), vmin)
         } else {
             let nodes = nodes.as_ref().expect("built for polynomial input");
             let (mut eps, mut floor): (f64, f64) = (0.0, 0.0);
             let span_points = &points[(s - m) * d..(s + 1) * d];
             for j in 0..d / blk {
                 copy_block(&sub, d, j, blk, &mut sb);
-                copy_block(piece.curve.points(), d, j, blk, &mut tb);
+                copy_block(&tgt, d, j, blk, &mut tb);
                 copy_block(span_points, d, j, blk, &mut qb);
                 let pmax = max_norm(block_of(src.piece(k), d, j, blk, &mut pb), blk);
                 let (lower, mut upper) =
@@ -271,6 +302,36 @@ pub(crate) fn span_bounds(
         out.push(SpanBound { a, b, bound, floor });
     }
     Ok(out)
+}
+
+/// The Bézier points of span `s` (`knots[s] < knots[s + 1]`) of the degree-`m` spline
+/// `(knots, points)` of `d` coordinates in `out`: the blossom values `S(a^(m - k), b^k)`,
+/// `k = 0..=m`, each by `m` levels of de Boor's convex combinations of the points `s - m
+/// ..= s` (the extraction of [`BSplineCurve::to_beziers`], without its allocations).
+fn span_bezier(
+    (knots, points, d, m): (&[f64], &[f64], usize, usize),
+    s: usize,
+    out: &mut [f64],
+    work: &mut [f64],
+) {
+    let (a, b) = (knots[s], knots[s + 1]);
+    for k in 0..=m {
+        work.copy_from_slice(&points[(s - m) * d..(s + 1) * d]);
+        for r in 1..=m {
+            let u = if r <= m - k { a } else { b };
+            // Point i (of s - m ..= s) at level r, descending so that point i - 1 is
+            // still of level r - 1.
+            for i in (s - m + r..=s).rev() {
+                let (lo, hi) = (knots[i], knots[i + m + 1 - r]);
+                let alpha = (u - lo) / (hi - lo);
+                let j = (i + m - s) * d;
+                for c in 0..d {
+                    work[j + c] = (1.0 - alpha) * work[j + c - d] + alpha * work[j + c];
+                }
+            }
+        }
+        out[k * d..(k + 1) * d].copy_from_slice(&work[m * d..(m + 1) * d]);
+    }
 }
 
 /// `(bound, floor)` of one span of a rational bundle: `sub` the input's Bézier points on

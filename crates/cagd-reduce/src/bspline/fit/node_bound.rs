@@ -26,6 +26,12 @@ use cagd_core::binomial_f64;
 /// The secant factor the nodes are chosen for: `N ≈ 4.2 p`.
 pub(crate) const RATIO: f64 = 1.075;
 
+/// Nodes evaluated together (one register block of accumulators per coordinate).
+const LANES: usize = 4;
+
+/// Most coordinates of the blocked evaluation (more take the axpy route).
+const BLOCK_DIM: usize = 4;
+
 /// Angle margin added to `pi / (2N)` for the rounding of the `f64` nodes (`|theta^_j -
 /// theta_j|` is a few ulps of `theta_j`, far below it).
 const NODE_ANGLE_MARGIN: f64 = 1e-9;
@@ -35,7 +41,8 @@ const NODE_ANGLE_MARGIN: f64 = 1e-9;
 pub(crate) struct NodeBound {
     p: usize,
     m: usize,
-    /// Node count `N + 1`.
+    /// Node count `N + 1`, rounded up to a multiple of [`LANES`] (the extra columns of
+    /// `bp` and `bm` are zero).
     nodes: usize,
     /// `(p + 1) x (N + 1)`, row `i` the values `B^p_i(t_j)` over the nodes.
     bp: Vec<f64>,
@@ -80,10 +87,11 @@ impl NodeBound {
         let big_n = ((std::f64::consts::FRAC_PI_2 / half).ceil() as usize).max(p + 1);
         let angle = pf * (std::f64::consts::PI / (2.0 * big_n as f64) + NODE_ANGLE_MARGIN);
         let sec = (1.0 / angle.cos()) * (1.0 + 8.0 * f64::EPSILON);
-        let nodes = big_n + 1;
+        // Padded to whole blocks of LANES with zero columns (zero node values).
+        let nodes = (big_n + 1).div_ceil(LANES) * LANES;
         let (mut bp, mut bm) = (vec![0.0; (p + 1) * nodes], vec![0.0; (m + 1) * nodes]);
         let (mut rp, mut rm) = (Vec::with_capacity(p + 1), Vec::with_capacity(m + 1));
-        for j in 0..nodes {
+        for j in 0..=big_n {
             let t = node(j, big_n);
             rp.clear();
             rm.clear();
@@ -131,9 +139,63 @@ impl NodeBound {
         (pmax, qmax): (f64, f64),
         vals: &mut Vec<f64>,
     ) -> (f64, f64) {
-        let (p, m, nn) = (self.p, self.m, self.nodes);
+        let (p, m) = (self.p, self.m);
         debug_assert!(sub.len() == (p + 1) * dim && tgt.len() == (m + 1) * dim);
-        // Coordinate-major node values, each an axpy over the nodes per control point.
+        let lower = if dim <= BLOCK_DIM {
+            self.blocked_max(sub, tgt, dim)
+        } else {
+            self.axpy_max(sub, tgt, dim, vals)
+        }
+        .sqrt();
+        let eps = f64::EPSILON;
+        let (pf, mf, df) = (p as f64, m as f64, dim as f64);
+        let size = (pmax + qmax) * (1.0 + (df + 2.0) * eps);
+        let root = df.sqrt() * (1.0 + 2.0 * eps);
+        let inner = (4.0 * pf + 4.0 * mf + 8.0) * root * eps * size;
+        let outer = (3.0 * pf + 2.0 * mf + 4.0) * root * eps * size;
+        let b = (self.sec * (lower * (1.0 + (df + 3.0) * eps) + inner) + outer) * (1.0 + 4.0 * eps)
+            + f64::MIN_POSITIVE;
+        (lower, if b.is_nan() { f64::INFINITY } else { b })
+    }
+}
+
+impl NodeBound {
+    /// `max_j ||D(t_j)||^2`, [`LANES`] nodes at a time with the accumulators of every
+    /// coordinate in registers (`dim <= BLOCK_DIM`); each node value is the same sum, in
+    /// the same order, as in [`Self::axpy_max`].
+    fn blocked_max(&self, sub: &[f64], tgt: &[f64], dim: usize) -> f64 {
+        let nn = self.nodes;
+        let mut best: f64 = 0.0;
+        for j0 in (0..nn).step_by(LANES) {
+            let mut acc = [[0.0f64; LANES]; BLOCK_DIM];
+            for (row, x) in self.bp.chunks_exact(nn).zip(sub.chunks_exact(dim)) {
+                let r: &[f64; LANES] = row[j0..j0 + LANES].try_into().expect("a block");
+                for (a, c) in acc.iter_mut().zip(x) {
+                    for l in 0..LANES {
+                        a[l] += r[l] * c;
+                    }
+                }
+            }
+            for (row, x) in self.bm.chunks_exact(nn).zip(tgt.chunks_exact(dim)) {
+                let r: &[f64; LANES] = row[j0..j0 + LANES].try_into().expect("a block");
+                for (a, c) in acc.iter_mut().zip(x) {
+                    for l in 0..LANES {
+                        a[l] -= r[l] * c;
+                    }
+                }
+            }
+            for l in 0..LANES {
+                let sq: f64 = acc[..dim].iter().map(|a| a[l] * a[l]).sum();
+                best = best.max(sq);
+            }
+        }
+        best
+    }
+
+    /// `max_j ||D(t_j)||^2` by coordinate-major node values in `vals`, one axpy over the
+    /// nodes per control point and coordinate (any `dim`).
+    fn axpy_max(&self, sub: &[f64], tgt: &[f64], dim: usize, vals: &mut Vec<f64>) -> f64 {
+        let nn = self.nodes;
         vals.clear();
         vals.resize(dim * nn, 0.0);
         for (row, x) in self.bp.chunks_exact(nn).zip(sub.chunks_exact(dim)) {
@@ -159,16 +221,7 @@ impl NodeBound {
                 *a += b * b;
             }
         }
-        let lower = first.iter().copied().fold(0.0, f64::max).sqrt();
-        let eps = f64::EPSILON;
-        let (pf, mf, df) = (p as f64, m as f64, dim as f64);
-        let size = (pmax + qmax) * (1.0 + (df + 2.0) * eps);
-        let root = df.sqrt() * (1.0 + 2.0 * eps);
-        let inner = (4.0 * pf + 4.0 * mf + 8.0) * root * eps * size;
-        let outer = (3.0 * pf + 2.0 * mf + 4.0) * root * eps * size;
-        let b = (self.sec * (lower * (1.0 + (df + 3.0) * eps) + inner) + outer) * (1.0 + 4.0 * eps)
-            + f64::MIN_POSITIVE;
-        (lower, if b.is_nan() { f64::INFINITY } else { b })
+        first.iter().copied().fold(0.0, f64::max)
     }
 }
 
