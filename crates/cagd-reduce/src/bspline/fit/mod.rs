@@ -52,8 +52,20 @@ impl Source {
     /// The pieces of the polynomial spline `work` whose points are bundles of curves with
     /// `block` coordinates each (the last one a weight when `rational`).
     pub(crate) fn new(work: &BSplineCurve, block: usize, rational: bool) -> Result<Self> {
-        let segs = work.to_beziers()?;
         let (p, pdim) = (work.degree(), work.dim());
+        let knots = work.knots();
+        if knots.len() == 2 * p + 2 && knots[0] == knots[p] && knots[p + 1] == knots[2 * p + 1] {
+            // One clamped span (a Bézier curve as a spline): its points are the piece.
+            return Ok(Self {
+                degree: p,
+                block,
+                pdim,
+                rational,
+                breaks: vec![knots[p], knots[p + 1]],
+                points: work.points().to_vec(),
+            });
+        }
+        let segs = work.to_beziers()?;
         let mut breaks = Vec::with_capacity(segs.len() + 1);
         let mut points = Vec::with_capacity(segs.len() * (p + 1) * pdim);
         for s in &segs {
@@ -89,34 +101,30 @@ impl Source {
 
     /// The Bézier points of the source on `[a, b]` (inside piece `k`'s interval) in
     /// `out`: piece `k` cut at `b` (its left part), then at `a` (the right part), each by
-    /// de Casteljau's triangle in place (`O(p^2)` convex combinations, no copies).
+    /// de Casteljau's triangle in place ([`right_part`], `O(p^2)` convex combinations).
     fn restrict_into(&self, k: usize, (a, b): (f64, f64), out: &mut Vec<f64>) {
         let (pa, pb) = (self.breaks[k], self.breaks[k + 1]);
         let (s0, s1) = ((a - pa) / (pb - pa), (b - pa) / (pb - pa));
         let d = self.pdim;
         out.clear();
-        out.extend_from_slice(self.piece(k));
-        let len = out.len();
         if s1 < 1.0 {
-            // Level r leaves b_0^r at point r: descending, point i takes the combination
-            // of points i - 1 and i of the level before.
-            let (u, t) = (1.0 - s1, s1);
-            for r in 1..=self.degree {
-                for j in (r * d..len).rev() {
-                    out[j] = u * out[j - d] + t * out[j];
+            // The left part at s1 is the reversed right part of the reversed piece at
+            // 1 - s1.
+            for q in self.piece(k).chunks_exact(d).rev() {
+                out.extend_from_slice(q);
+            }
+            right_part(out, d, 1.0 - s1);
+            let np = out.len() / d;
+            for i in 0..np / 2 {
+                for c in 0..d {
+                    out.swap(i * d + c, (np - 1 - i) * d + c);
                 }
             }
+        } else {
+            out.extend_from_slice(self.piece(k));
         }
         if s0 > 0.0 {
-            // Level r leaves b_(p-r)^r at point p - r: ascending, point i takes points i
-            // and i + 1.
-            let t = s0 / s1;
-            let u = 1.0 - t;
-            for r in 1..=self.degree {
-                for j in 0..len - r * d {
-                    out[j] = u * out[j] + t * out[j + d];
-                }
-            }
+            right_part(out, d, s0 / s1);
         }
     }
 
@@ -204,6 +212,22 @@ pub(crate) fn fit(src: &Source, m: usize, knots: &[f64]) -> Result<Vec<f64>> {
     Ok(out)
 }
 
+/// Replaces the Bézier points `x` (`dim` coordinates each) by those of the curve's part on
+/// `[t, 1]`, by de Casteljau's triangle in place: level `r` leaves `b_i^r` at point `i`
+/// (point `i` combines points `i` and `i + 1` of the level before, ascending), so after
+/// the last level point `i` is `b_i^(n - i)`.
+fn right_part(x: &mut [f64], dim: usize, t: f64) {
+    let u = 1.0 - t;
+    let len = x.len();
+    for r in (dim..len).step_by(dim) {
+        let level = &mut x[..len - r + dim];
+        let n = level.len() - dim;
+        for j in 0..n {
+            level[j] = u * level[j] + t * level[j + dim];
+        }
+    }
+}
+
 /// The Bernstein values `B^p_i(t) = C(p, i) t^i (1 - t)^(p - i)` into `out` (`p + 1`
 /// values), `binom` the binomials `C(p, i)` (as `cagd_core::kernel::bernstein_all`, without
 /// looking the binomials up per value).
@@ -242,13 +266,17 @@ pub(crate) struct SpanBound {
 /// with `S` elevated to degree `p` ([`crate::bezier::hull_bound`]), the smaller of the two;
 /// the largest over the blocks. For NURBS by [`rational_bound`] (centred, in model space).
 /// A span on which a control weight of `S` is not positive gets an infinite bound.
+/// `attained` receives per span a value the error attains up to rounding (the largest
+/// node value; the bound itself where a span has no node bound): no sharper bound of the
+/// span can be below it.
 pub(crate) fn span_bounds(
     src: &Source,
     m: usize,
-    knots: &[f64],
-    points: &[f64],
+    (knots, points): (&[f64], &[f64]),
     sharpen: f64,
+    attained: &mut Vec<f64>,
 ) -> Result<Vec<SpanBound>> {
+    attained.clear();
     let (p, d, blk) = (src.degree, src.pdim, src.block);
     let n = points.len() / d;
     if knots.len() != n + m + 1 {
@@ -273,16 +301,17 @@ pub(crate) fn span_bounds(
         span_bezier((knots, points, d, m), s, &mut tgt, &mut scratch);
         let k = src.piece_of(a, b);
         src.restrict_into(k, (a, b), &mut sub);
-        let (bound, floor) = if src.rational {
+        let (bound, floor, lower) = if src.rational {
             let span_points = &points[(s - m) * d..(s + 1) * d];
             let vmin = span_points
                 .chunks_exact(blk)
                 .map(|q| q[blk - 1])
                 .fold(f64::INFINITY, f64::min);
-            rational_bound(&sub, &tgt, (d, blk, p), vmin)
+            let (bound, floor) = rational_bound(&sub, &tgt, (d, blk, p), vmin);
+            (bound, floor, bound)
         } else {
             let nodes = nodes.as_ref().expect("built for polynomial input");
-            let (mut eps, mut floor): (f64, f64) = (0.0, 0.0);
+            let (mut eps, mut floor, mut seen): (f64, f64, f64) = (0.0, 0.0, 0.0);
             let span_points = &points[(s - m) * d..(s + 1) * d];
             for j in 0..d / blk {
                 copy_block(&sub, d, j, blk, &mut sb);
@@ -291,17 +320,52 @@ pub(crate) fn span_bounds(
                 let pmax = max_norm(block_of(src.piece(k), d, j, blk, &mut pb), blk);
                 let (lower, mut upper) =
                     nodes.bound(&sb, &tb, blk, (pmax, max_norm(&qb, blk)), &mut vals);
-                if upper > sharpen && lower <= sharpen {
+                if upper > sharpen {
+                    // Over the budget: the refined hull, which the split count of an
+                    // offending span follows (its size), and which keeps a span whose
+                    // node maximum is within the budget from being split for the factor.
                     upper = upper.min(hull_bound(&sb, &tb, blk));
                 }
                 eps = eps.max(upper);
+                seen = seen.max(lower);
                 floor = floor.max(2.0 * (p as f64 + 3.0) * f64::EPSILON * max_norm(&sb, blk));
             }
-            (eps, floor)
+            (eps, floor, seen.min(eps))
         };
         out.push(SpanBound { a, b, bound, floor });
+        attained.push(lower);
     }
     Ok(out)
+}
+
+/// The refined-hull bound ([`crate::bezier::hull_bound`]) of `max ||C - S||` on the span
+/// `[a, b]` of the polynomial fit `(knots, points)` of degree `m` (`a` a knot; the largest
+/// over the blocks): the sharper bound a knot removal asks for where the node bound of
+/// [`span_bounds`] leaves it no room. `+inf` for rational input (its bound has no node
+/// route to sharpen).
+pub(crate) fn hull_span_bound(
+    src: &Source,
+    m: usize,
+    (knots, points): (&[f64], &[f64]),
+    (a, b): (f64, f64),
+) -> f64 {
+    let (p, d, blk) = (src.degree, src.pdim, src.block);
+    if src.rational {
+        return f64::INFINITY;
+    }
+    let s = knots.partition_point(|x| *x <= a) - 1;
+    let (mut tgt, mut work) = (vec![0.0; (m + 1) * d], vec![0.0; (m + 1) * d]);
+    span_bezier((knots, points, d, m), s, &mut tgt, &mut work);
+    let mut sub = Vec::with_capacity((p + 1) * d);
+    src.restrict_into(src.piece_of(a, b), (a, b), &mut sub);
+    let (mut sb, mut tb) = (vec![0.0; (p + 1) * blk], vec![0.0; (m + 1) * blk]);
+    let mut worst: f64 = 0.0;
+    for j in 0..d / blk {
+        copy_block(&sub, d, j, blk, &mut sb);
+        copy_block(&tgt, d, j, blk, &mut tb);
+        worst = worst.max(hull_bound(&sb, &tb, blk));
+    }
+    worst
 }
 
 /// The Bézier points of span `s` (`knots[s] < knots[s + 1]`) of the degree-`m` spline
