@@ -12,10 +12,10 @@
 
 use cagd_core::{BSplineCurve, Error, Result, knot_multiplicity};
 
-use super::fit::{Source, SpanBound, fit, span_bounds};
+use super::fit::{Source, SpanBound, fit, hull_span_bound, span_bounds};
 use super::grading::{GRADE, grading_breaks};
 use super::knots::order_at;
-use super::knots::{LocalBounds, Raw};
+use super::knots::{LocalBounds, Raw, Sharpen};
 use super::measure::spline_max_deviation;
 use super::options::{BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy};
 
@@ -156,14 +156,26 @@ fn splits(
 pub(crate) fn fit_to_budget(
     src: &Source,
     m: usize,
+    knots: Vec<f64>,
+    budget: f64,
+) -> Result<(Vec<f64>, Vec<f64>, Vec<SpanBound>)> {
+    fit_to_budget_attained(src, m, knots, budget, &mut Vec::new())
+}
+
+/// [`fit_to_budget`], with per span of the result a value the error attains in `attained`
+/// (see [`span_bounds`]).
+fn fit_to_budget_attained(
+    src: &Source,
+    m: usize,
     mut knots: Vec<f64>,
     budget: f64,
+    attained: &mut Vec<f64>,
 ) -> Result<(Vec<f64>, Vec<f64>, Vec<SpanBound>)> {
     let mut rounds = 0;
     let mut work = 0usize;
     loop {
         let points = fit(src, m, &knots)?;
-        let bounds = span_bounds(src, m, &knots, &points)?;
+        let bounds = span_bounds(src, m, (&knots, &points), budget, attained)?;
         if bounds.iter().all(|x| x.bound <= budget) {
             return Ok((knots, points, bounds));
         }
@@ -239,15 +251,26 @@ pub(crate) fn reduce_global(
         rational,
     )?;
     let knots = initial_knots(curve.knots(), p, &src, m, k)?;
-    let (knots, points, bounds) = fit_to_budget(&src, m, knots, FIT_SHARE * tol)?;
-    let fitted = model_curve(m, knots, &points, curve.dim(), rational)?;
+    let mut attained = Vec::new();
+    let (knots, points, bounds) =
+        fit_to_budget_attained(&src, m, knots, FIT_SHARE * tol, &mut attained)?;
+    let fitted = model_curve(m, knots.clone(), &points, curve.dim(), rational)?;
     let pieces = bounds.len();
     let segment_bound = bounds.iter().map(|x| x.bound).fold(0.0, f64::max);
     let mut breaks: Vec<f64> = bounds.iter().map(|x| x.a).collect();
     breaks.push(bounds[pieces - 1].b);
     let mut local = LocalBounds::new(breaks, bounds.iter().map(|x| x.bound).collect());
     let mut raw = Raw::new(&fitted);
-    local.remove_greedily(&mut raw, tol)?;
+    // Knot removal with the spans' bounds sharpened by the refined hull where the node
+    // bound alone would refuse a removal the sharper bound might allow.
+    let mut hull =
+        |i: usize| hull_span_bound(&src, m, (&knots, &points), (bounds[i].a, bounds[i].b));
+    let mut sharpen = Sharpen::new(
+        bounds.iter().map(|x| x.bound).collect(),
+        attained,
+        &mut hull,
+    );
+    local.remove_greedily_with(&mut raw, tol, Some(&mut sharpen))?;
     let curve_out = raw.into_curve()?;
     let max_error = if opts.measure {
         Some(spline_max_deviation(curve, &curve_out)?)
@@ -261,7 +284,12 @@ pub(crate) fn reduce_global(
             continuity.push((t, order_at(curve.knots(), p, k, t)?.min(m - 1)));
         }
     }
-    let spans_out = curve_out.to_beziers()?.len();
+    // The non-empty knot spans of the (clamped) domain: the Bézier pieces.
+    let (ko, mo) = (curve_out.knots(), curve_out.degree());
+    let spans_out = ko[mo..ko.len() - mo]
+        .windows(2)
+        .filter(|w| w[0] < w[1])
+        .count();
     Ok(BSplineReduction {
         report: BSplineReport {
             strategy: BSplineStrategy::GlobalFit,

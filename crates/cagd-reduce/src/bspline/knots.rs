@@ -61,6 +61,20 @@ impl LocalBounds {
     /// and its certificate involve, so each removal costs `O(p^2)` plus a splice instead of
     /// `O(n)` allocations.
     pub(crate) fn try_remove_one(&mut self, c: &mut Raw, v: f64, tol: f64) -> Result<bool> {
+        self.try_remove_one_with(c, v, tol, None)
+    }
+
+    /// [`Self::try_remove_one`], with the spans' bounds sharpened on demand: when the
+    /// removal would fit within the bounds `sharpen` could give at best (its `lower`
+    /// values) but not within the current ones, the touched spans get their sharper
+    /// bound and the removal is judged again.
+    fn try_remove_one_with(
+        &mut self,
+        c: &mut Raw,
+        v: f64,
+        tol: f64,
+        mut sharpen: Option<&mut Sharpen<'_>>,
+    ) -> Result<bool> {
         let (m, n) = (c.degree, c.n_points());
         let s = knot_multiplicity(&c.knots, v);
         let (d0, d1) = (c.knots[m], c.knots[n]);
@@ -74,8 +88,12 @@ impl LocalBounds {
             c.knots[(r + m + 1 - s).min(c.knots.len() - 1)],
         );
         let span = self.range(a, b);
-        let worst = self.err[span.clone()].iter().copied().fold(0.0, f64::max);
-        let avail = tol - worst;
+        let mut worst = self.err[span.clone()].iter().copied().fold(0.0, f64::max);
+        let best = match sharpen.as_deref() {
+            Some(sh) => sh.best(&self.err, span.clone()),
+            None => worst,
+        };
+        let avail = tol - best;
         if avail <= 0.0 {
             return Ok(false);
         }
@@ -88,9 +106,24 @@ impl LocalBounds {
         if out.removed == 0 {
             return Ok(false);
         }
+        if out.error_bound > tol - worst {
+            let Some(sh) = sharpen.as_deref_mut() else {
+                return Ok(false);
+            };
+            sh.sharpen(&mut self.err, span.clone());
+            worst = self.err[span.clone()].iter().copied().fold(0.0, f64::max);
+            if out.error_bound > tol - worst {
+                return Ok(false);
+            }
+        }
         c.splice(lo, hi, &out.curve);
-        for e in &mut self.err[span] {
+        for e in &mut self.err[span.clone()] {
             *e += out.error_bound;
+        }
+        if let Some(sh) = sharpen {
+            for x in &mut sh.charged[span] {
+                *x += out.error_bound;
+            }
         }
         Ok(true)
     }
@@ -118,12 +151,23 @@ impl LocalBounds {
     /// removal touches keeps its accumulated bound `<= tol`, until a pass removes nothing
     /// (at most [`MAX_PASSES`]; each pass costs `O(knots * points)`).
     pub(crate) fn remove_greedily(&mut self, c: &mut Raw, tol: f64) -> Result<()> {
+        self.remove_greedily_with(c, tol, None)
+    }
+
+    /// [`Self::remove_greedily`] with the spans' bounds sharpened on demand (see
+    /// [`Self::try_remove_one_with`]).
+    pub(crate) fn remove_greedily_with(
+        &mut self,
+        c: &mut Raw,
+        tol: f64,
+        mut sharpen: Option<&mut Sharpen<'_>>,
+    ) -> Result<()> {
         for _ in 0..MAX_PASSES {
             let mut removed_any = false;
             let mut values = c.knots.clone();
             values.dedup();
             for v in values {
-                while self.try_remove_one(c, v, tol)? {
+                while self.try_remove_one_with(c, v, tol, sharpen.as_deref_mut())? {
                     removed_any = true;
                 }
             }
@@ -132,6 +176,68 @@ impl LocalBounds {
             }
         }
         Ok(())
+    }
+}
+
+/// Sharper bounds of the spans of a [`LocalBounds`], computed only where a knot removal
+/// needs them (the global fit's spans carry a node bound within 1.075x of their error;
+/// the refined hull is tighter and costs several times more).
+pub(crate) struct Sharpen<'a> {
+    /// Per span: its bound without the removals' charges.
+    base: Vec<f64>,
+    /// Per span: a value the error attains (no bound can be below it).
+    lower: Vec<f64>,
+    /// Per span: the removals' charges so far.
+    charged: Vec<f64>,
+    done: Vec<bool>,
+    /// The sharper bound of span `i`.
+    bound: &'a mut dyn FnMut(usize) -> f64,
+}
+
+impl<'a> Sharpen<'a> {
+    /// Spans with bounds `base` (as in the [`LocalBounds`], no charges yet) and attained
+    /// values `lower`, sharpened by `bound`.
+    pub(crate) fn new(
+        base: Vec<f64>,
+        lower: Vec<f64>,
+        bound: &'a mut dyn FnMut(usize) -> f64,
+    ) -> Self {
+        let n = base.len();
+        Self {
+            base,
+            lower,
+            charged: vec![0.0; n],
+            done: vec![false; n],
+            bound,
+        }
+    }
+
+    /// The largest bound over `span` that sharpening could give at best.
+    fn best(&self, err: &[f64], span: std::ops::Range<usize>) -> f64 {
+        span.map(|i| {
+            if self.done[i] {
+                err[i]
+            } else {
+                self.lower[i] + self.charged[i]
+            }
+        })
+        .fold(0.0, f64::max)
+    }
+
+    /// Replaces the bound of every span of `span` not sharpened yet by its sharper bound
+    /// (when smaller) plus its charges.
+    fn sharpen(&mut self, err: &mut [f64], span: std::ops::Range<usize>) {
+        for i in span {
+            if self.done[i] {
+                continue;
+            }
+            self.done[i] = true;
+            let b = (self.bound)(i);
+            if b < self.base[i] {
+                self.base[i] = b;
+                err[i] = (b + self.charged[i]) * (1.0 + 2.0 * f64::EPSILON);
+            }
+        }
     }
 }
 
@@ -290,4 +396,56 @@ pub(crate) fn order_at(knots: &[f64], p: usize, k: usize, t: f64) -> Result<usiz
         });
     }
     Ok(k.min(p - s))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A cubic spline with one interior knot whose removal costs `e > 0`, and bounds of
+    /// `0.9 tol` on both spans with `tol = 2 e`: the plain removal refuses (no room), the
+    /// sharpened one asks the sharper bound of exactly the touched spans, accepts, and
+    /// charges the removal on top of the sharpened bounds.
+    #[test]
+    fn sharpening_on_demand_allows_a_removal_the_node_bounds_refuse() {
+        let knots = vec![0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0, 1.0];
+        let pts = vec![0.0, 0.0, 1.0, 2.0, 2.0, -1.0, 3.0, 1.5, 4.0, 0.0];
+        let c = BSplineCurve::new(3, knots, pts, 2).unwrap();
+        let e = c.remove_knot(0.5, 1, 1e9).unwrap().error_bound;
+        assert!(e > 1e-6, "{e}");
+        let tol = 2.0 * e;
+        let fresh = || LocalBounds::new(vec![0.0, 0.5, 1.0], vec![0.9 * tol; 2]);
+
+        let (mut plain, mut raw) = (fresh(), Raw::new(&c));
+        assert!(!plain.try_remove_one(&mut raw, 0.5, tol).unwrap());
+
+        let mut asked = Vec::new();
+        let mut sharper = |i: usize| {
+            asked.push(i);
+            0.1 * tol
+        };
+        let mut sh = Sharpen::new(vec![0.9 * tol; 2], vec![0.05 * tol; 2], &mut sharper);
+        let (mut local, mut raw) = (fresh(), Raw::new(&c));
+        assert!(
+            local
+                .try_remove_one_with(&mut raw, 0.5, tol, Some(&mut sh))
+                .unwrap()
+        );
+        assert_eq!(raw.into_curve().unwrap().knots().len(), 8);
+        for b in local.spans() {
+            assert!(*b >= 0.1 * tol + e && *b <= tol, "{b} vs {e} {tol}");
+        }
+        assert_eq!(asked, vec![0, 1]);
+
+        // A sharper bound that is no sharper: refused, the bounds unchanged.
+        let mut same = |_: usize| 0.9 * tol;
+        let mut sh = Sharpen::new(vec![0.9 * tol; 2], vec![0.05 * tol; 2], &mut same);
+        let (mut local, mut raw) = (fresh(), Raw::new(&c));
+        assert!(
+            !local
+                .try_remove_one_with(&mut raw, 0.5, tol, Some(&mut sh))
+                .unwrap()
+        );
+        assert!(local.spans().iter().all(|b| *b == 0.9 * tol));
+    }
 }

@@ -19,8 +19,10 @@ use crate::Method;
 /// 2. **Fit**: the spline of that space nearest to the input in the parameter L2 norm with
 ///    the end points kept (exact Gauss–Legendre quadrature, banded Givens QR; NURBS in
 ///    homogeneous coordinates).
-/// 3. **Certify and refine**: every span gets a certified bound (input piece minus fit,
-///    refined convex hull); spans above their share of the tolerance are split
+/// 3. **Certify and refine**: every span gets a certified bound (input piece minus fit, its
+///    values at Chebyshev–Lobatto nodes times the Ehlich–Zeller factor, at most 1.075× the
+///    error; the refined convex hull where that is above the share, and for NURBS); spans
+///    above their share of the tolerance are split
 ///    (`ceil((bound / budget)^(1/(m+1)))` parts, simple knots) and the fit is repeated.
 /// 4. **Knot removal** (Tiller's certified removal, Piegl & Tiller's local bookkeeping):
 ///    greedy passes remove knot copies while every span a removal touches keeps its

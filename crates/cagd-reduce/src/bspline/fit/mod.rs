@@ -5,26 +5,33 @@
 //! end points kept (`S(a) = C(a)`, `S(b) = C(b)`).
 //!
 //! Every knot of `S` is a break of `C`'s pieces or lies inside one, so on each span of `S`
-//! the integrand is a polynomial of degree `2 max(p, m)`; the `(p + 1)`-point Gauss–Legendre
-//! rule of each span integrates it exactly. The integral is therefore the squared norm of
-//! the residual of a weighted collocation system with one row per (span, node) — weight
-//! `sqrt(w_q h)` — and the fit is that system's least-squares solution, computed by
-//! banded Givens QR ([`banded_lsq`]). No normal equations are formed.
+//! the integrand `||C - S||^2 = ||C||^2 - 2 C.S + ||S||^2` is a polynomial; its part that
+//! depends on `S` has degree `p + m` (`m < p`), which the `k`-point Gauss–Legendre rule
+//! of each span, `k = ceil((p + m + 1) / 2)`, integrates exactly (the `||C||^2` part, of
+//! degree `2p`, is a constant of the minimisation and need not be). The integral is
+//! therefore, up to that constant, the squared norm of the residual of a weighted
+//! collocation system with one row per (span, node) — weight `sqrt(w_q h)` — and the fit
+//! is that system's least-squares solution, computed by banded Givens QR
+//! ([`banded_lsq`]). No normal equations are formed. (The `(p + 1)`-point rule, exact for
+//! the whole integrand, gives the same minimiser with up to twice the rows; it was used
+//! until issue 17.)
 //!
 //! NURBS are fitted in homogeneous coordinates. The points may also be *bundles* of
 //! `blocks` curves side by side (the rows of a tensor-product surface, fitted in one
 //! direction with one knot vector); the bound of a span is then the largest over the
 //! blocks, which bounds the surface by the partition of unity in the other direction.
 
-use cagd_core::kernel::{bernstein_all, subdivide};
 use cagd_core::{
-    BSplineCurve, ModelFrame, Result, basis_functions, centred_rational_bound, gauss_legendre,
+    BSplineCurve, ModelFrame, Result, basis_functions, binomial_f64, centred_rational_bound,
+    gauss_legendre,
 };
 
 mod banded_lsq;
+mod node_bound;
 
 use crate::bezier::{hull_bound, max_norm};
 pub(crate) use banded_lsq::BandedLsq;
+use node_bound::NodeBound;
 
 /// The spline to approximate, as Bézier pieces in working coordinates.
 #[derive(Debug, Clone)]
@@ -45,8 +52,20 @@ impl Source {
     /// The pieces of the polynomial spline `work` whose points are bundles of curves with
     /// `block` coordinates each (the last one a weight when `rational`).
     pub(crate) fn new(work: &BSplineCurve, block: usize, rational: bool) -> Result<Self> {
-        let segs = work.to_beziers()?;
         let (p, pdim) = (work.degree(), work.dim());
+        let knots = work.knots();
+        if knots.len() == 2 * p + 2 && knots[0] == knots[p] && knots[p + 1] == knots[2 * p + 1] {
+            // One clamped span (a Bézier curve as a spline): its points are the piece.
+            return Ok(Self {
+                degree: p,
+                block,
+                pdim,
+                rational,
+                breaks: vec![knots[p], knots[p + 1]],
+                points: work.points().to_vec(),
+            });
+        }
+        let segs = work.to_beziers()?;
         let mut breaks = Vec::with_capacity(segs.len() + 1);
         let mut points = Vec::with_capacity(segs.len() * (p + 1) * pdim);
         for s in &segs {
@@ -81,27 +100,31 @@ impl Source {
     }
 
     /// The Bézier points of the source on `[a, b]` (inside piece `k`'s interval) in
-    /// `out`: piece `k` split at `b`, then its left part at `a` (two de Casteljau
-    /// subdivisions, `O(p^2)`; `left` and `right` are scratch of the piece's length).
-    fn restrict_into(
-        &self,
-        k: usize,
-        (a, b): (f64, f64),
-        (left, right): (&mut [f64], &mut [f64]),
-        out: &mut Vec<f64>,
-    ) {
+    /// `out`: piece `k` cut at `b` (its left part), then at `a` (the right part), each by
+    /// de Casteljau's triangle in place ([`right_part`], `O(p^2)` convex combinations).
+    fn restrict_into(&self, k: usize, (a, b): (f64, f64), out: &mut Vec<f64>) {
         let (pa, pb) = (self.breaks[k], self.breaks[k + 1]);
         let (s0, s1) = ((a - pa) / (pb - pa), (b - pa) / (pb - pa));
+        let d = self.pdim;
         out.clear();
         if s1 < 1.0 {
-            subdivide(self.piece(k), self.pdim, s1, left, right);
-            out.extend_from_slice(left);
+            // The left part at s1 is the reversed right part of the reversed piece at
+            // 1 - s1.
+            for q in self.piece(k).chunks_exact(d).rev() {
+                out.extend_from_slice(q);
+            }
+            right_part(out, d, 1.0 - s1);
+            let np = out.len() / d;
+            for i in 0..np / 2 {
+                for c in 0..d {
+                    out.swap(i * d + c, (np - 1 - i) * d + c);
+                }
+            }
         } else {
             out.extend_from_slice(self.piece(k));
         }
         if s0 > 0.0 {
-            subdivide(out, self.pdim, s0 / s1, left, right);
-            out.copy_from_slice(right);
+            right_part(out, d, s0 / s1);
         }
     }
 
@@ -130,10 +153,13 @@ pub(crate) fn fit(src: &Source, m: usize, knots: &[f64]) -> Result<Vec<f64>> {
     if n <= 2 {
         return Ok(out);
     }
-    let (nodes, weights) = gauss_legendre(p + 1)?;
+    // ceil((p + m + 1) / 2) nodes: exact for every term that depends on the fit.
+    let (nodes, weights) = gauss_legendre((p + m + 2) / 2)?;
     let mut lsq = BandedLsq::new(n - 2, m + 1, d);
     let (mut basis, mut scratch) = (vec![0.0; m + 1], vec![0.0; 2 * m + 2]);
     let (mut value, mut bern) = (vec![0.0; d], vec![0.0; p + 1]);
+    let mut row = Vec::with_capacity(m + 1);
+    let binom: Vec<f64> = (0..=p).map(|i| binomial_f64(p, i)).collect();
     for s in m..n {
         let (a, b) = (knots[s], knots[s + 1]);
         if a >= b {
@@ -150,7 +176,7 @@ pub(crate) fn fit(src: &Source, m: usize, knots: &[f64]) -> Result<Vec<f64>> {
             // 70 % of a degree-30 fit). Evaluating a restriction of the piece at the exact
             // node instead would not see t's rounding, which at a parameter offset of 1e5
             // and spans of 1e-4 is 2e-7 of the span, and spoils fits of exact input.
-            bernstein_all(p, (t - pa) / (pb - pa), &mut bern);
+            bernstein_with(&binom, (t - pa) / (pb - pa), &mut bern);
             value.fill(0.0);
             for (bi, pt) in bern.iter().zip(src.piece(k).chunks_exact(d)) {
                 for (v, c) in value.iter_mut().zip(pt) {
@@ -173,14 +199,50 @@ pub(crate) fn fit(src: &Source, m: usize, knots: &[f64]) -> Result<Vec<f64>> {
                 }
                 vals = &vals[..vals.len() - 1];
             }
-            let row: Vec<f64> = vals.iter().map(|v| sw * v).collect();
-            let rhs: Vec<f64> = value.iter().map(|v| sw * v).collect();
-            lsq.add_row(lo - 1, &row, &rhs);
+            row.clear();
+            row.extend(vals.iter().map(|v| sw * v));
+            for v in &mut value {
+                *v *= sw;
+            }
+            lsq.add_row(lo - 1, &row, &value);
         }
     }
     let x = lsq.solve()?;
     out[d..(n - 1) * d].copy_from_slice(&x);
     Ok(out)
+}
+
+/// Replaces the Bézier points `x` (`dim` coordinates each) by those of the curve's part on
+/// `[t, 1]`, by de Casteljau's triangle in place: level `r` leaves `b_i^r` at point `i`
+/// (point `i` combines points `i` and `i + 1` of the level before, ascending), so after
+/// the last level point `i` is `b_i^(n - i)`.
+fn right_part(x: &mut [f64], dim: usize, t: f64) {
+    let u = 1.0 - t;
+    let len = x.len();
+    for r in (dim..len).step_by(dim) {
+        let level = &mut x[..len - r + dim];
+        let n = level.len() - dim;
+        for j in 0..n {
+            level[j] = u * level[j] + t * level[j + dim];
+        }
+    }
+}
+
+/// The Bernstein values `B^p_i(t) = C(p, i) t^i (1 - t)^(p - i)` into `out` (`p + 1`
+/// values), `binom` the binomials `C(p, i)` (as `cagd_core::kernel::bernstein_all`, without
+/// looking the binomials up per value).
+fn bernstein_with(binom: &[f64], t: f64, out: &mut [f64]) {
+    let s = 1.0 - t;
+    let mut x = 1.0;
+    for (o, c) in out.iter_mut().zip(binom) {
+        *o = c * x;
+        x *= t;
+    }
+    let mut y = 1.0;
+    for o in out.iter_mut().rev() {
+        *o *= y;
+        y *= s;
+    }
 }
 
 /// One span of a fitted spline with its certified bound.
@@ -197,52 +259,143 @@ pub(crate) struct SpanBound {
 
 /// The spans `[a, b]` of the degree-`m` spline `(knots, points)` (working coordinates of
 /// `src`) with a certified bound of `max ||C - S||` on each (Euclidean, model space): per
-/// span, the piece of `C` restricted to it minus `S` elevated to degree `p`, bounded by the
-/// refined convex hull ([`crate::bezier::hull_bound`], rounding included), the largest
-/// over the blocks; for NURBS by [`rational_bound`] (centred, in model space). A span on
-/// which a control weight of `S` is not positive gets an infinite bound.
+/// span, the piece of `C` restricted to it minus the piece of `S`, bounded by its values
+/// at Chebyshev–Lobatto nodes ([`node_bound`], rounding included, within
+/// [`node_bound::RATIO`] of the true maximum) and, where that bound is above `sharpen`
+/// while the largest node value is not, also by the refined convex hull of the difference
+/// with `S` elevated to degree `p` ([`crate::bezier::hull_bound`]), the smaller of the two;
+/// the largest over the blocks. For NURBS by [`rational_bound`] (centred, in model space).
+/// A span on which a control weight of `S` is not positive gets an infinite bound.
+/// `attained` receives per span a value the error attains up to rounding (the largest
+/// node value; the bound itself where a span has no node bound): no sharper bound of the
+/// span can be below it.
 pub(crate) fn span_bounds(
     src: &Source,
     m: usize,
-    knots: &[f64],
-    points: &[f64],
+    (knots, points): (&[f64], &[f64]),
+    sharpen: f64,
+    attained: &mut Vec<f64>,
 ) -> Result<Vec<SpanBound>> {
+    attained.clear();
     let (p, d, blk) = (src.degree, src.pdim, src.block);
-    let target = BSplineCurve::new(m, knots.to_vec(), points.to_vec(), d)?;
-    let pieces = target.to_beziers()?;
     let n = points.len() / d;
-    let mut out = Vec::with_capacity(pieces.len());
-    let (mut left, mut right) = (vec![0.0; (p + 1) * d], vec![0.0; (p + 1) * d]);
+    if knots.len() != n + m + 1 {
+        return Err(cagd_core::Error::LengthMismatch {
+            what: "knots",
+            got: knots.len(),
+            expected: n + m + 1,
+        });
+    }
+    let mut out = Vec::with_capacity(n - m);
     let mut sub = Vec::with_capacity((p + 1) * d);
+    let (mut tgt, mut scratch) = (vec![0.0; (m + 1) * d], vec![0.0; (m + 1) * d]);
     let (mut sb, mut tb) = (vec![0.0; (p + 1) * blk], vec![0.0; (m + 1) * blk]);
-    let mut s = m;
-    for piece in &pieces {
-        let (a, b) = (piece.start, piece.end);
-        while s + 1 < n && knots[s + 1] <= a {
-            s += 1;
+    let (mut qb, mut pb) = (vec![0.0; (m + 1) * blk], vec![0.0; (p + 1) * blk]);
+    let nodes = (!src.rational).then(|| NodeBound::cached(p, m));
+    let mut vals = Vec::new();
+    for s in m..n {
+        let (a, b) = (knots[s], knots[s + 1]);
+        if a >= b {
+            continue;
         }
+        span_bezier((knots, points, d, m), s, &mut tgt, &mut scratch);
         let k = src.piece_of(a, b);
-        src.restrict_into(k, (a, b), (&mut left, &mut right), &mut sub);
-        let (bound, floor) = if src.rational {
+        src.restrict_into(k, (a, b), &mut sub);
+        let (bound, floor, lower) = if src.rational {
             let span_points = &points[(s - m) * d..(s + 1) * d];
             let vmin = span_points
                 .chunks_exact(blk)
                 .map(|q| q[blk - 1])
                 .fold(f64::INFINITY, f64::min);
-            rational_bound(&sub, piece.curve.points(), (d, blk, p), vmin)
+            let (bound, floor) = rational_bound(&sub, &tgt, (d, blk, p), vmin);
+            (bound, floor, bound)
         } else {
-            let (mut eps, mut floor): (f64, f64) = (0.0, 0.0);
+            let nodes = nodes.as_ref().expect("built for polynomial input");
+            let (mut eps, mut floor, mut seen): (f64, f64, f64) = (0.0, 0.0, 0.0);
+            let span_points = &points[(s - m) * d..(s + 1) * d];
             for j in 0..d / blk {
                 copy_block(&sub, d, j, blk, &mut sb);
-                copy_block(piece.curve.points(), d, j, blk, &mut tb);
-                eps = eps.max(hull_bound(&sb, &tb, blk));
+                copy_block(&tgt, d, j, blk, &mut tb);
+                copy_block(span_points, d, j, blk, &mut qb);
+                let pmax = max_norm(block_of(src.piece(k), d, j, blk, &mut pb), blk);
+                let (lower, mut upper) =
+                    nodes.bound(&sb, &tb, blk, (pmax, max_norm(&qb, blk)), &mut vals);
+                if upper > sharpen {
+                    // Over the budget: the refined hull, which the split count of an
+                    // offending span follows (its size), and which keeps a span whose
+                    // node maximum is within the budget from being split for the factor.
+                    upper = upper.min(hull_bound(&sb, &tb, blk));
+                }
+                eps = eps.max(upper);
+                seen = seen.max(lower);
                 floor = floor.max(2.0 * (p as f64 + 3.0) * f64::EPSILON * max_norm(&sb, blk));
             }
-            (eps, floor)
+            (eps, floor, seen.min(eps))
         };
         out.push(SpanBound { a, b, bound, floor });
+        attained.push(lower);
     }
     Ok(out)
+}
+
+/// The refined-hull bound ([`crate::bezier::hull_bound`]) of `max ||C - S||` on the span
+/// `[a, b]` of the polynomial fit `(knots, points)` of degree `m` (`a` a knot; the largest
+/// over the blocks): the sharper bound a knot removal asks for where the node bound of
+/// [`span_bounds`] leaves it no room. `+inf` for rational input (its bound has no node
+/// route to sharpen).
+pub(crate) fn hull_span_bound(
+    src: &Source,
+    m: usize,
+    (knots, points): (&[f64], &[f64]),
+    (a, b): (f64, f64),
+) -> f64 {
+    let (p, d, blk) = (src.degree, src.pdim, src.block);
+    if src.rational {
+        return f64::INFINITY;
+    }
+    let s = knots.partition_point(|x| *x <= a) - 1;
+    let (mut tgt, mut work) = (vec![0.0; (m + 1) * d], vec![0.0; (m + 1) * d]);
+    span_bezier((knots, points, d, m), s, &mut tgt, &mut work);
+    let mut sub = Vec::with_capacity((p + 1) * d);
+    src.restrict_into(src.piece_of(a, b), (a, b), &mut sub);
+    let (mut sb, mut tb) = (vec![0.0; (p + 1) * blk], vec![0.0; (m + 1) * blk]);
+    let mut worst: f64 = 0.0;
+    for j in 0..d / blk {
+        copy_block(&sub, d, j, blk, &mut sb);
+        copy_block(&tgt, d, j, blk, &mut tb);
+        worst = worst.max(hull_bound(&sb, &tb, blk));
+    }
+    worst
+}
+
+/// The Bézier points of span `s` (`knots[s] < knots[s + 1]`) of the degree-`m` spline
+/// `(knots, points)` of `d` coordinates in `out`: the blossom values `S(a^(m - k), b^k)`,
+/// `k = 0..=m`, each by `m` levels of de Boor's convex combinations of the points `s - m
+/// ..= s` (the extraction of [`BSplineCurve::to_beziers`], without its allocations).
+fn span_bezier(
+    (knots, points, d, m): (&[f64], &[f64], usize, usize),
+    s: usize,
+    out: &mut [f64],
+    work: &mut [f64],
+) {
+    let (a, b) = (knots[s], knots[s + 1]);
+    for k in 0..=m {
+        work.copy_from_slice(&points[(s - m) * d..(s + 1) * d]);
+        for r in 1..=m {
+            let u = if r <= m - k { a } else { b };
+            // Point i (of s - m ..= s) at level r, descending so that point i - 1 is
+            // still of level r - 1.
+            for i in (s - m + r..=s).rev() {
+                let (lo, hi) = (knots[i], knots[i + m + 1 - r]);
+                let alpha = (u - lo) / (hi - lo);
+                let j = (i + m - s) * d;
+                for c in 0..d {
+                    work[j + c] = (1.0 - alpha) * work[j + c - d] + alpha * work[j + c];
+                }
+            }
+        }
+        out[k * d..(k + 1) * d].copy_from_slice(&work[m * d..(m + 1) * d]);
+    }
 }
 
 /// `(bound, floor)` of one span of a rational bundle: `sub` the input's Bézier points on
@@ -302,6 +455,15 @@ fn rational_bound(
         return (f64::INFINITY, floor);
     }
     (centred_rational_bound(ha, hw, radius, wmin, vmin), floor)
+}
+
+/// [`copy_block`] into `to` unless the points are one block: the block's points.
+fn block_of<'a>(from: &'a [f64], d: usize, j: usize, blk: usize, to: &'a mut [f64]) -> &'a [f64] {
+    if d == blk {
+        return from;
+    }
+    copy_block(from, d, j, blk, to);
+    to
 }
 
 /// Copies coordinates `j * blk .. (j + 1) * blk` of every point of `from` (points of `d`

@@ -88,7 +88,7 @@ fn reproduces_a_spline_of_the_target_space_and_bounds_cover_samples() {
     let src = Source::new(&c, 2, false).unwrap();
     let fitted = fit(&src, 3, &knots).unwrap();
     let s = BSplineCurve::new(3, knots.clone(), fitted.clone(), 2).unwrap();
-    for sb in span_bounds(&src, 3, &knots, &fitted).unwrap() {
+    for sb in span_bounds(&src, 3, (&knots, &fitted), f64::INFINITY, &mut Vec::new()).unwrap() {
         let mut worst: f64 = 0.0;
         for i in 0..=200 {
             let t = sb.a + (sb.b - sb.a) * f64::from(i) / 200.0;
