@@ -1802,7 +1802,7 @@ CagdStatus cagd_bspline_to_beziers(const struct CagdBSpline *spline,
  * - `CAGD_ERR_CONDITION_NOT_MET`: `CAGD_SPLINE_FIT`, `CAGD_SPLINE_SEGMENTS`: the
  *   tolerance cannot be met (below the rounding level of the curve, or more than `2^20`
  *   spans, or for the fit more than `2^23` span coordinates fitted over the refinement
- *   rounds, each span counted with 24 more and, above degree 7, `(p + 1)^2 / 64` times,
+ *   rounds, each span counted with 24 more per curve of the bundle and, above degree 7, `(p + 1)^2 / 64` times,
  *   needed; for the segments more than `2^20` segment reductions, or a `C^k` joint of two
  *   reduced NURBS pieces whose knot removal would make a control weight non-positive);
  *   `CAGD_SPLINE_PIEGL_TILLER_1995`: the curve is not reducible within the
@@ -2110,7 +2110,7 @@ CagdStatus cagd_bsplinesurface_reduce(const struct CagdBSplineSurface *surface,
  * - `CAGD_ERR_BAD_KNOTS` (fit): a knot line of multiplicity `p + 1`.
  * - `CAGD_ERR_CONDITION_NOT_MET` (fit): the tolerance is below the rounding level, or
  *   the refinement of a direction needs more than `2^23` span coordinates fitted over
- *   its rounds, each span counted with 24 more and, above degree 7, `(p + 1)^2 / 64`
+ *   its rounds, each span counted with 24 more per curve of the bundle and, above degree 7, `(p + 1)^2 / 64`
  *   times (bounded work: about a second).
  * - `CAGD_ERR_NO_CONVERGENCE` (segments): level 6 is not enough.
  * - `CAGD_ERR_SINGULAR`: a least-squares system of the fit is singular (degenerate

@@ -110,7 +110,7 @@ fn spans(s: &BSplineCurve) -> usize {
 /// - `CAGD_ERR_CONDITION_NOT_MET`: `CAGD_SPLINE_FIT`, `CAGD_SPLINE_SEGMENTS`: the
 ///   tolerance cannot be met (below the rounding level of the curve, or more than `2^20`
 ///   spans, or for the fit more than `2^23` span coordinates fitted over the refinement
-///   rounds, each span counted with 24 more and, above degree 7, `(p + 1)^2 / 64` times,
+///   rounds, each span counted with 24 more per curve of the bundle and, above degree 7, `(p + 1)^2 / 64` times,
 ///   needed; for the segments more than `2^20` segment reductions, or a `C^k` joint of two
 ///   reduced NURBS pieces whose knot removal would make a control weight non-positive);
 ///   `CAGD_SPLINE_PIEGL_TILLER_1995`: the curve is not reducible within the

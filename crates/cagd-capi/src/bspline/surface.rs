@@ -397,7 +397,7 @@ pub unsafe extern "C" fn cagd_bsplinesurface_reduce(
 /// - `CAGD_ERR_BAD_KNOTS` (fit): a knot line of multiplicity `p + 1`.
 /// - `CAGD_ERR_CONDITION_NOT_MET` (fit): the tolerance is below the rounding level, or
 ///   the refinement of a direction needs more than `2^23` span coordinates fitted over
-///   its rounds, each span counted with 24 more and, above degree 7, `(p + 1)^2 / 64`
+///   its rounds, each span counted with 24 more per curve of the bundle and, above degree 7, `(p + 1)^2 / 64`
 ///   times (bounded work: about a second).
 /// - `CAGD_ERR_NO_CONVERGENCE` (segments): level 6 is not enough.
 /// - `CAGD_ERR_SINGULAR`: a least-squares system of the fit is singular (degenerate

@@ -1,10 +1,12 @@
 //! Measured errors between WSGB curves, on their exact difference curve.
 
+use num_bigint::BigInt;
 use num_rational::BigRational;
+use num_traits::Zero;
 
 use cagd_core::{
-    BezierCurve, Error, Result, WsgbCurve, curve_distance, round_exact_points, to_exact_points,
-    wsgb_elevate_exact, wsgb_to_bezier_exact,
+    BezierCurve, Error, Result, WsgbCurve, binomial, curve_distance, round_exact_points,
+    to_exact_points, wsgb_to_bezier_exact,
 };
 
 /// `max_k |x_k|`.
@@ -12,28 +14,48 @@ pub(super) fn norm_inf(x: &[f64]) -> f64 {
     x.iter().fold(0.0f64, |a, v| a.max(v.abs()))
 }
 
-/// The exact difference `p - q` (q elevated to p's degree and order) as a Bézier curve,
-/// rounded once.
+/// The exact difference `p - q` (q elevated to p's degree) as a Bézier curve, rounded once.
+///
+/// Both curves are converted exactly to Bézier form and `q` is elevated in one
+/// multi-degree step, `b_i = sum_j C(m, j) C(n - m, i - j) / C(n, i) q_j` (the same exact
+/// numbers as elevating the WSGB form one degree at a time, at a fraction of the cost:
+/// issue 18, a degree-3 piece measured against degree 49 took 0.1 s through 46 WSGB
+/// elevations).
 pub(crate) fn difference_bezier(p: &WsgbCurve, q: &WsgbCurve) -> Result<BezierCurve> {
-    let dim = p.dim();
-    let mut qe = to_exact_points(q.points());
-    let mut lq = q.order();
-    for k in q.degree() + 1..=p.degree() {
-        let lk = if k == p.degree() {
-            p.order()
-        } else {
-            lq.min(cagd_core::wsgb_max_l(k))
-        };
-        qe = wsgb_elevate_exact(&qe, dim, lq, lk)?;
-        lq = lk;
+    let pb = wsgb_to_bezier_exact(&to_exact_points(p.points()), p.dim(), p.order())?;
+    difference_exact(&pb, p.dim(), q)
+}
+
+/// The exact difference `p - q` of the exact Bézier points `pb` and the WSGB curve `q`
+/// (elevated to their degree), rounded once.
+fn difference_exact(pb: &[BigRational], dim: usize, q: &WsgbCurve) -> Result<BezierCurve> {
+    let qb = wsgb_to_bezier_exact(&to_exact_points(q.points()), dim, q.order())?;
+    let qe = bezier_elevate_to(&qb, dim, pb.len() / dim - 1);
+    let diff: Vec<BigRational> = pb.iter().zip(&qe).map(|(a, b)| a - b).collect();
+    BezierCurve::new(round_exact_points(&diff), dim)
+}
+
+/// Exact Bézier elevation of the points `b` (degree `m`) to degree `n >= m` in one step.
+fn bezier_elevate_to(b: &[BigRational], dim: usize, n: usize) -> Vec<BigRational> {
+    let m = b.len() / dim - 1;
+    if n <= m {
+        return b.to_vec();
     }
-    let diff: Vec<BigRational> = to_exact_points(p.points())
-        .iter()
-        .zip(&qe)
-        .map(|(a, b)| a - b)
-        .collect();
-    let b = wsgb_to_bezier_exact(&diff, dim, p.order())?;
-    BezierCurve::new(round_exact_points(&b), dim)
+    let big = |x: u128| BigInt::from(x);
+    let mut out = Vec::with_capacity((n + 1) * dim);
+    for i in 0..=n {
+        let den = big(binomial(n, i));
+        let lo = i.saturating_sub(n - m);
+        let mut acc = vec![BigRational::zero(); dim];
+        for j in lo..=m.min(i) {
+            let w = BigRational::new(big(binomial(m, j) * binomial(n - m, i - j)), den.clone());
+            for (a, x) in acc.iter_mut().zip(&b[j * dim..(j + 1) * dim]) {
+                *a += &w * x;
+            }
+        }
+        out.extend(acc);
+    }
+    out
 }
 
 /// [`measure`] as options, when asked for.
@@ -52,10 +74,20 @@ pub(crate) fn measured(
 /// Measured `max_u ||p(u) - q(u)||` (Euclidean) and `max_u max_k |p_k(u) - q_k(u)|`, on the
 /// exact difference curve (so accurate relative to the error itself).
 pub(crate) fn measure(p: &WsgbCurve, q: &WsgbCurve) -> Result<(f64, f64)> {
-    let diff = difference_bezier(p, q)?;
+    distances(&difference_bezier(p, q)?)
+}
+
+/// [`measure`] of the WSGB curve `q` against a polynomial Bézier curve `p` of degree at
+/// least `q`'s (a subdivided piece of a reduction to a tolerance), exactly as above.
+pub(crate) fn measure_bezier(p: &BezierCurve, q: &WsgbCurve) -> Result<(f64, f64)> {
+    distances(&difference_exact(&to_exact_points(p.points()), p.dim(), q)?)
+}
+
+/// Euclidean and max-abs maxima of the difference curve `diff` (its distance to 0).
+fn distances(diff: &BezierCurve) -> Result<(f64, f64)> {
     let dim = diff.dim();
     let zero = BezierCurve::new(vec![0.0; dim], dim)?;
-    let e2 = curve_distance(&diff, &zero)?;
+    let e2 = curve_distance(diff, &zero)?;
     let zero1 = BezierCurve::new(vec![0.0], 1)?;
     let mut einf = 0.0f64;
     for d in 0..dim {

@@ -47,6 +47,8 @@ mod report;
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
+mod tests_fuzz;
+#[cfg(test)]
 mod tests_paper;
 mod tolerance;
 mod uniform;

@@ -18,13 +18,13 @@ pub(super) fn reduce_via_bezier(
     method: Method,
     measure: bool,
 ) -> Result<WsgbReduction> {
-    let mut red =
-        reduce_wsgb_via_bezier(curve, |b| reduce_with(b, &ReduceOptions::new(method, m)))?;
-    if !measure {
-        red.report.max_error = None;
-        red.report.max_error_inf = None;
-    }
-    Ok(red)
+    // Measured only when asked: the measurement (exact difference curve) costs more than
+    // the reduction; a reduction to a tolerance measures only the pieces it keeps.
+    via_bezier(
+        curve,
+        |b| reduce_with(b, &ReduceOptions::new(method, m)),
+        measure,
+    )
 }
 
 /// Reduces a WSGB curve with any Bézier reduction `reduce` (e.g. a non-linear one such as
@@ -50,35 +50,64 @@ fn via_bezier(
     measure: bool,
 ) -> Result<WsgbReduction> {
     let bez = curve.to_bezier()?;
-    let red = reduce(&bez)?;
+    let mut red = from_bezier_form(&bez, curve.order(), reduce)?;
+    let (max_error, max_error_inf) = measured(curve, &red.curve, measure)?;
+    red.report.max_error = max_error;
+    red.report.max_error_inf = max_error_inf;
+    Ok(red)
+}
+
+/// The Bézier `method` applied to `bez`, the Bézier form of a WSGB(n, `l`) curve, the
+/// result converted exactly to WSGB(m, L') (not measured). Used by the reduction to a
+/// tolerance on its subdivided pieces, which it keeps in Bézier form (no exact conversion
+/// of the source per piece tried).
+///
+/// # Errors
+/// As [`reduce_via_bezier`].
+pub(super) fn reduce_bezier_form(
+    bez: &BezierCurve,
+    l: usize,
+    m: usize,
+    method: Method,
+) -> Result<WsgbReduction> {
+    from_bezier_form(bez, l, |b| reduce_with(b, &ReduceOptions::new(method, m)))
+}
+
+/// `reduce` on the Bézier form `bez` of a WSGB(n, `l`) curve, its result converted back to
+/// WSGB(m, L'), with the bound (see the module docs); the measured errors are left `None`.
+fn from_bezier_form(
+    bez: &BezierCurve,
+    l_from: usize,
+    reduce: impl FnOnce(&BezierCurve) -> Result<Reduction>,
+) -> Result<WsgbReduction> {
+    let red = reduce(bez)?;
     let m = red.curve.degree();
-    if m >= curve.degree() {
+    if m >= bez.degree() {
         return Err(Error::BadDegreePair {
-            from: curve.degree(),
+            from: bez.degree(),
             to: m,
             why: "the Bézier reduction did not lower the degree",
         });
     }
     let method = red.report.method;
-    let l = curve.order().min(wsgb_max_l(m));
+    let l = l_from.min(wsgb_max_l(m));
     let reduced = WsgbCurve::from_bezier(&red.curve, l)?;
-    let dim = curve.dim() as f64;
+    let dim = bez.dim() as f64;
     let allowance = 2.0
         * f64::EPSILON
         * dim.sqrt()
         * (norm_inf(bez.points()) + norm_inf(red.curve.points()) + norm_inf(reduced.points()));
     let bound = red.report.error_bound.unwrap_or(f64::INFINITY) + allowance;
-    let (max_error, max_error_inf) = measured(curve, &reduced, measure)?;
     Ok(WsgbReduction {
         report: WsgbReport {
             method: WsgbMethod::Bezier(method),
-            degree_from: curve.degree(),
+            degree_from: bez.degree(),
             degree_to: m,
-            order_from: curve.order(),
+            order_from: l_from,
             order_to: l,
             error_bound: bound * (1.0 + 4.0 * f64::EPSILON),
-            max_error,
-            max_error_inf,
+            max_error: None,
+            max_error_inf: None,
             steps: Vec::new(),
             bezier: Some(red.report),
         },

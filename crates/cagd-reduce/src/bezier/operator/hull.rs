@@ -34,21 +34,43 @@ pub(crate) fn refined_hull_bound(d: &[f64], dim: usize, depth: usize) -> f64 {
     }
     let mut lower = norm(&d[..dim]).max(norm(&d[n * dim..]));
     let mut upper: f64 = 0.0;
-    let mut stack = vec![(d.to_vec(), 0usize)];
-    while let Some((piece, level)) = stack.pop() {
-        let h = hull(&piece, dim);
-        if h <= lower || level == depth {
-            upper = upper.max(h);
-            continue;
-        }
-        let (mut left, mut right) = (vec![0.0; piece.len()], vec![0.0; piece.len()]);
-        subdivide(&piece, dim, 0.5, &mut left, &mut right);
-        lower = lower.max(norm(&right[..dim]));
-        stack.push((left, level + 1));
-        stack.push((right, level + 1));
-    }
+    // One scratch buffer for the whole refinement: two children per level (the left child
+    // waits while the right one's subtree is refined), no allocation per piece (issue 18:
+    // the fit's span bounds spent most of their time allocating pieces).
+    let mut scratch = vec![0.0; 2 * depth * d.len()];
+    visit(d, dim, depth, &mut scratch, (&mut lower, &mut upper));
     let eps = f64::EPSILON;
     upper.max(lower) + ((depth * n + dim + 4) as f64) * eps * top
+}
+
+/// Refines `piece` (depth-first, right child first): a piece whose hull is within `lower`
+/// (the largest curve point seen) or at the last level counts its hull into `upper`; the
+/// others are split at the midpoint into the first two slots of `scratch`.
+fn visit(
+    piece: &[f64],
+    dim: usize,
+    levels_left: usize,
+    scratch: &mut [f64],
+    (lower, upper): (&mut f64, &mut f64),
+) {
+    let h = hull(piece, dim);
+    if h <= *lower || levels_left == 0 {
+        *upper = upper.max(h);
+        return;
+    }
+    let len = piece.len();
+    let (mine, rest) = scratch.split_at_mut(2 * len);
+    let (left, right) = mine.split_at_mut(len);
+    subdivide(piece, dim, 0.5, left, right);
+    *lower = lower.max(norm(&right[..dim]));
+    visit(
+        right,
+        dim,
+        levels_left - 1,
+        rest,
+        (&mut *lower, &mut *upper),
+    );
+    visit(left, dim, levels_left - 1, rest, (lower, upper));
 }
 
 #[cfg(test)]

@@ -284,3 +284,5 @@ fn homogeneous_net(s: &BSplineSurface) -> Vec<f64> {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_fuzz;
