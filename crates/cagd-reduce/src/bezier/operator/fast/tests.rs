@@ -184,6 +184,23 @@ fn multi_word_route_matches_the_exact_oracle() {
     }
 }
 
+/// The pairs that fell back to the exact rationals at degree 64 (seconds each: the C fuzz
+/// run's slow calls) now take the 256-bit route within the goal (the route's accuracy
+/// against the oracle: `multi_word_route_matches_the_exact_oracle` and the ignored sweep
+/// to degree 64).
+#[test]
+fn no_exact_fallback_at_degree_64() {
+    for (method, n, m) in [
+        (Method::Perturb, 64, 32),
+        (Method::Eck, 64, 10),
+        (Method::GeneralizedInverse, 64, 60),
+    ] {
+        let op = crate::build_operator(method, n, m, false).unwrap();
+        assert_eq!(op.route(), OperatorRoute::MultiWord, "{method:?} {n}->{m}");
+        assert!(op.construction_error() <= TOLERANCE * op.norm_inf());
+    }
+}
+
 #[test]
 fn every_method_has_a_fast_route_and_the_exact_one_on_request() {
     for method in methods() {
