@@ -279,7 +279,7 @@ mod tests {
                 .sum::<f64>()
                 .sqrt()
         };
-        let k = 4000;
+        let k = 1000;
         let (mut best, mut at) = (0.0f64, 0.0);
         for i in 0..=k {
             let t = f64::from(i) / f64::from(k);
