@@ -4944,8 +4944,8 @@ CagdStatus cagd_report_patch(const struct CagdReport *report,
  *   there).
  * - `CAGD_ERR_CONDITION_NOT_MET`: the tolerance is below the rounding level of the curve
  *   or needs more than `2^20` spans, or too much work (bounded work: more than `2^19`
- *   spans fitted over the refinement rounds, a span above degree 7 counted
- *   `(max(p, target) + 1)^2 / 64` times and in more than 3D `ceil((dim + 1) / 4)` times;
+ *   spans fitted over the refinement rounds, a span counted `(p + target + 1)^2 / 16`
+ *   times (at least once) and in more than 3D `ceil((dim + 1) / 4)` times;
  *   equal weights reduced below `p`: as `cagd_bspline_reduce`'s global fit).
  * - `CAGD_ERR_SINGULAR`: the least-squares system is rank-deficient (not expected).
  * - `CAGD_ERR_NON_FINITE`: the sampled error is not finite.

@@ -192,7 +192,7 @@ fn assert_pieces_within_bounds(c: &WsgbCurve, r: &WsgbPiecewise) {
 fn degree_49_to_tolerance_answers_or_refuses() {
     let c = WsgbCurve::new(DEGREE_49.to_vec(), 3, 0).unwrap();
     let method = WsgbMethod::Bezier(Method::L2 { r: 0, p: 0 });
-    match reduce_wsgb_to_tolerance(&c, 3, method, 3.5721469036319198e-07) {
+    match reduce_wsgb_to_tolerance(&c, 3, method, 3.57214690363192e-07) {
         Ok(r) => assert_pieces_within_bounds(&c, &r),
         Err(e) => assert!(matches!(e, Error::NoConvergence { .. }), "{e:?}"),
     }

@@ -40,5 +40,4 @@ pub use uniform::{Merge, UniformReduction, reduce_uniform_bspline};
 
 // For the rational -> polynomial conversion (`crate::rational_to_polynomial`).
 pub(crate) use fit::{BandedLsq, SpanBound};
-pub(crate) use global::degree_cost;
 pub(crate) use knots::{LocalBounds, Raw, order_at};

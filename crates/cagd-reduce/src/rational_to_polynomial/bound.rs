@@ -57,27 +57,58 @@ pub(crate) fn ratio_bound(d: &[f64], w: &[f64], dim: usize) -> f64 {
     if wmin0 - wslack <= 0.0 {
         return f64::INFINITY;
     }
-    let at = |dp: &[f64], wv: f64| norm(dp) / wv;
-    let mut lower = at(&d[..dim], w[0]).max(at(&d[nd * dim..], w[nw]));
+    let mut lower = (norm(&d[..dim]) / w[0]).max(norm(&d[nd * dim..]) / w[nw]);
     let mut upper: f64 = 0.0;
-    let mut stack = vec![(d.to_vec(), w.to_vec(), 0usize)];
-    while let Some((dp, wp, level)) = stack.pop() {
-        let (h, wl) = hull(&dp, &wp, dim);
-        let r = h / wl;
-        if r <= lower || level == DEPTH {
-            upper = upper.max((h + dslack) / (wl - wslack));
-            continue;
-        }
-        let (mut dl, mut dr) = (vec![0.0; dp.len()], vec![0.0; dp.len()]);
-        let (mut wl_, mut wr) = (vec![0.0; wp.len()], vec![0.0; wp.len()]);
-        subdivide(&dp, dim, 0.5, &mut dl, &mut dr);
-        subdivide(&wp, 1, 0.5, &mut wl_, &mut wr);
-        lower = lower.max(at(&dr[..dim], wr[0]));
-        stack.push((dl, wl_, level + 1));
-        stack.push((dr, wr, level + 1));
-    }
+    // One scratch buffer for the refinement (two children per level, the left one waiting
+    // while the right one's subtree is refined), no allocation per piece (issue 18: the
+    // span bounds of the NURBS fit spent most of their time allocating pieces).
+    let mut scratch = vec![0.0; 2 * DEPTH * (d.len() + w.len())];
+    let mut st = RatioState {
+        dim,
+        slack: (dslack, wslack),
+        lower: &mut lower,
+        upper: &mut upper,
+    };
+    ratio_visit((d, w), DEPTH, &mut scratch, &mut st);
     // Every sub-piece, split or not, went into `upper`.
     upper * (1.0 + 4.0 * eps)
+}
+
+/// The running state of [`ratio_bound`]'s refinement.
+struct RatioState<'a> {
+    dim: usize,
+    slack: (f64, f64),
+    lower: &'a mut f64,
+    upper: &'a mut f64,
+}
+
+/// Refines the piece `(dp, wp)` depth-first, right child first (see [`ratio_bound`]): a
+/// piece whose hull ratio is within the largest ratio seen at a curve point, or at the last
+/// level, counts its slackened hull ratio into `upper`; the others are split at the
+/// midpoint into the first slots of `scratch`.
+fn ratio_visit(
+    (dp, wp): (&[f64], &[f64]),
+    levels_left: usize,
+    scratch: &mut [f64],
+    st: &mut RatioState<'_>,
+) {
+    let dim = st.dim;
+    let (h, wl) = hull(dp, wp, dim);
+    if h / wl <= *st.lower || levels_left == 0 {
+        let (dslack, wslack) = st.slack;
+        *st.upper = st.upper.max((h + dslack) / (wl - wslack));
+        return;
+    }
+    let (nd, nw) = (dp.len(), wp.len());
+    let (mine, rest) = scratch.split_at_mut(2 * (nd + nw));
+    let (dl, mine) = mine.split_at_mut(nd);
+    let (dr, mine) = mine.split_at_mut(nd);
+    let (wl_, wr) = mine.split_at_mut(nw);
+    subdivide(dp, dim, 0.5, dl, dr);
+    subdivide(wp, 1, 0.5, wl_, wr);
+    *st.lower = st.lower.max(norm(&dr[..dim]) / wr[0]);
+    ratio_visit((dr, wr), levels_left - 1, rest, st);
+    ratio_visit((dl, wl_), levels_left - 1, rest, st);
 }
 
 /// The Bernstein product of a scalar tensor polynomial `f` of degrees `(a, b)` and a

@@ -43,6 +43,8 @@ mod surface_fit;
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
+mod tests_fuzz;
+#[cfg(test)]
 mod tests_surface;
 
 pub use curve::{PolynomialReduction, PolynomialReport, rational_to_polynomial};
