@@ -17,7 +17,7 @@ use cagd_core::{
 /// curves' knots, every piece is sampled (`8 (p_a + p_b) + 64` intervals, fewer when the
 /// pieces together would exceed [`SPLINE_MEASURE_NODE_BUDGET`] points, a budget divided by
 /// `(p_a + p_b + 2) / 16` above degrees 7 + 7: a point costs `O(p_a + p_b)`), and on the
-/// [`SPLINE_MEASURED_PIECES`] pieces of largest sampled distance [`max_distance_1d`]
+/// [`SPLINE_MEASURED_PIECES`] pieces of largest sampled distance [`cagd_core::max_distance_1d`]
 /// refines the sampled maxima by Brent's method (SPEC-reduce §0 "sampled"; the bounded
 /// two passes are ADDED). Never below the sampled maximum. The samples are the same
 /// fractions of every pair's interval, so each pair's two pieces are restricted to it (de

@@ -37,12 +37,14 @@ pub const MAX_SUBDIVISION_LEVEL: usize = 8;
 pub const MAX_TOLERANCE_PIECES: usize = 1 << (2 * MAX_SUBDIVISION_LEVEL);
 
 /// Most work of one patch reduction to a tolerance, summed over its rounds (ADDED; bounded
-/// work, issue 18): `2^27` units, a piece counted by [`tensor_piece_cost`] /
-/// [`tri_piece_cost`] (measured 3-11 ns per unit in a release build, so well under a second
-/// of a round's reductions and subdivisions). A round that would pass it is not started: the
-/// reduction is refused with [`cagd_core::Error::NoConvergence`] and the bound reached. At
-/// low degree the piece cap comes first (`65 536` bicubic pieces are `2^24.6` units); a
-/// degree-36 triangle stops at level 3 instead of subdividing to level 8 for minutes.
+/// work, issue 18): `2^27` units, a tensor cell of degrees `(p, q)` in `d` coordinates
+/// counted `d (p + 1)(q + 1)(p + q + 2)`, a degree-`n` triangular piece
+/// `d ((n + 1)(n + 2)^2 / 2 + (n + 1)^4 / 12)` (measured 3-11 ns per unit in a release
+/// build, so well under a second of a round's reductions and subdivisions). A round that
+/// would pass it is not started: the reduction is refused with
+/// [`cagd_core::Error::NoConvergence`] and the bound reached. At low degree the piece cap
+/// comes first (`65 536` bicubic pieces are `2^24.6` units); a degree-36 triangle in 3-D
+/// stops at level 3 instead of subdividing to level 8 for minutes.
 pub const MAX_PATCH_TOLERANCE_WORK: usize = 1 << 27;
 
 /// The work units of reducing one `(p, q)` tensor cell in `dim` coordinates and of
