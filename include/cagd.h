@@ -2115,6 +2115,8 @@ CagdStatus cagd_bsplinesurface_reduce(const struct CagdBSplineSurface *surface,
  * - `CAGD_ERR_NO_CONVERGENCE` (segments): level 6 is not enough.
  * - `CAGD_ERR_SINGULAR`: a least-squares system of the fit is singular (degenerate
  *   knots or data).
+ * - `CAGD_ERR_NON_FINITE`: a computed point overflows f64 (knot insertion or the
+ *   reduction of coordinates near the limits of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -2767,6 +2769,9 @@ CagdStatus cagd_tripatch_to_three_rects(const struct CagdTriPatch *patch,
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: the patch is not square.
  * - `CAGD_ERR_INVALID_ARGUMENT`: `tol` not finite `> 0`, or a pointer misaligned.
  * - `CAGD_ERR_NOT_DEGENERATE`: the relative residual is above `tol` (the message gives it).
+ * - `CAGD_ERR_NON_FINITE`: a point of the triangle overflows f64 (a rational patch: its
+ *   homogeneous point divided by a reduced weight near zero; coordinates near the limits
+ *   of f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety

@@ -402,6 +402,8 @@ pub unsafe extern "C" fn cagd_bsplinesurface_reduce(
 /// - `CAGD_ERR_NO_CONVERGENCE` (segments): level 6 is not enough.
 /// - `CAGD_ERR_SINGULAR`: a least-squares system of the fit is singular (degenerate
 ///   knots or data).
+/// - `CAGD_ERR_NON_FINITE`: a computed point overflows f64 (knot insertion or the
+///   reduction of coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

@@ -216,6 +216,9 @@ pub unsafe extern "C" fn cagd_tripatch_to_three_rects(
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`: the patch is not square.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `tol` not finite `> 0`, or a pointer misaligned.
 /// - `CAGD_ERR_NOT_DEGENERATE`: the relative residual is above `tol` (the message gives it).
+/// - `CAGD_ERR_NON_FINITE`: a point of the triangle overflows f64 (a rational patch: its
+///   homogeneous point divided by a reduced weight near zero; coordinates near the limits
+///   of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
