@@ -3698,7 +3698,9 @@ CagdStatus cagd_bezier_reduce(const double *points,
  * Implicitizes a planar Bézier curve (polynomial or rational, degree `1..=16`):
  * `f(x, y) = det F(x, y)` of SPEC-convert eqs. 15.8.2–15.8.5, sign convention
  * `det F = (-1)^(n(n+1)/2) Res_t(W x - X, W y - Y)`. Cost: about 0.1 ms at degree 5,
- * 10 ms at degree 10 (exact big-integer arithmetic).
+ * 10 ms at degree 10 (exact big-integer arithmetic); up to seconds at degree 16 when the
+ * coordinates and weights span hundreds of binades (a subnormal beside a value near
+ * `1e308`: the exact integers carry the whole exponent range).
  *
  * Parameters:
  * - `curve` (in): a curve with `dim == 2`.
