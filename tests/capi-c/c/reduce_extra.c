@@ -193,6 +193,21 @@ int cagd_ctest_reduce_extra_bad_input(void) {
     CHECK(needed == 8 && a[0] == -7.0);
     o.r = 1; /* r + p + 1 = 2 > 1 */
     CHECK_STATUS(cagd_reduce_operator(&o, 3, a, 8, &needed), CAGD_ERR_TOO_MANY_CONSTRAINTS);
+    {
+        /* A G1 perturbation with l2 near the double range overflows its matrix (C ABI fuzz
+           run, seed 107, session 0xa082dda606e6766c): refused, nothing written. */
+        CagdReduceOptions g;
+        double big[24];
+        size_t k;
+        CHECK_OK(cagd_reduce_options_init(&g));
+        g.method = CAGD_METHOD_PERTURB_G1;
+        g.target = 3;
+        g.l1 = 0.0;
+        g.l2 = 1e308;
+        for (k = 0; k < 24; ++k) big[k] = -7.0;
+        CHECK_STATUS(cagd_reduce_operator(&g, 5, big, 24, &needed), CAGD_ERR_NON_FINITE);
+        for (k = 0; k < 24; ++k) CHECK(big[k] == -7.0);
+    }
     o.struct_size = 1;
     CHECK_STATUS(cagd_reduce_operator(&o, 3, a, 8, &needed), CAGD_ERR_INVALID_ARGUMENT);
     /* method params: NULLs, and not available for a patch report */
