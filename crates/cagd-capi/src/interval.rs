@@ -297,6 +297,9 @@ pub unsafe extern "C" fn cagd_intervaltri_contains(
 ///   SPEC-convert I.2; reported, never hidden).
 /// - `CAGD_ERR_LP_FAILED`: the LP solver failed or panicked (caught).
 /// - `CAGD_ERR_NOT_CERTIFIED`: the containment could not be certified after repair.
+/// - `CAGD_ERR_CONDITION_NOT_MET`: the LPs are beyond the work cap
+///   (`MAX_INTERVAL_LP_WORK`: `tri_count(N) tri_count(target)^2 dim <= 2^23`, about a
+///   second of simplex; e.g. a 3-D 20 -> 10 is answered, a 1-D 58 -> 14 refused).
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
 /// - `CAGD_ERR_NON_FINITE`: an intermediate or result value overflows f64 (coordinates near the limits of f64).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.

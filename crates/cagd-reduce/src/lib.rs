@@ -247,8 +247,9 @@ pub use bspline::{
 pub use cagd_core::{Error, Result};
 pub use interval::{
     AnalyticOptimum, DEFAULT_SAMPLE_GRID, IntervalOptions, IntervalReduction, IntervalReport,
-    IntervalTriPatch, MAX_ANALYTIC_BASES, MAX_INTERVAL_DEGREE, reduce_interval_triangle,
-    reduce_interval_triangle_analytic, triangle_elevation_matrix, triangle_elevation_matrix_exact,
+    IntervalTriPatch, MAX_ANALYTIC_BASES, MAX_INTERVAL_DEGREE, MAX_INTERVAL_LP_WORK,
+    reduce_interval_triangle, reduce_interval_triangle_analytic, triangle_elevation_matrix,
+    triangle_elevation_matrix_exact,
 };
 pub use patch::{
     MAX_PATCH_TOLERANCE_WORK, MAX_SUBDIVISION_LEVEL, MAX_TOLERANCE_PIECES,

@@ -32,5 +32,13 @@ pub use report::{IntervalOptions, IntervalReduction, IntervalReport};
 /// [`reduce_interval_triangle`]).
 pub const MAX_INTERVAL_DEGREE: usize = cagd_core::MAX_DEGREE;
 
+/// Most work of one [`reduce_interval_triangle`], in units of `rows x variables^2` of its
+/// LPs summed over the coordinates: `tri_count(N) tri_count(m)^2 d` at most `2^23` (ADDED;
+/// bounded work, issue 18). Measured 50-300 ns per unit with `microlp` (the dense
+/// elevation rows make its sparse factorisations slow), so a second or two at the cap:
+/// a 3-D 20 -> 10 (3.0e6 units, 0.2-0.4 s) is answered, a 1-D 58 -> 14 (2.5e7 units,
+/// 7.3 s in the C ABI fuzz run) is refused with [`cagd_core::Error::ConditionNotMet`].
+pub const MAX_INTERVAL_LP_WORK: usize = 1 << 23;
+
 /// The default sampling grid `K` of [`IntervalOptions::sample_grid`] (1 035 points).
 pub const DEFAULT_SAMPLE_GRID: usize = 44;

@@ -4,6 +4,7 @@
 
 use cagd_core::tri_count;
 
+use super::MAX_INTERVAL_LP_WORK;
 use super::certify::{Containment, Side, containment_degree_of};
 use super::elevation::IntElevation;
 use super::lp::{Lp, Sense, solve_min};
@@ -55,6 +56,8 @@ const CROSSING_TOL: f64 = 1e-11;
 /// [`Error::LpSolverFailed`] (solver failure or caught panic), [`Error::NotCertified`];
 /// [`Error::NonFinite`] when the LP objective overflows or a reduced box is wider than
 /// `f64` can represent (the value is the objective or the width).
+/// [`Error::ConditionNotMet`] when the LPs would pass [`super::MAX_INTERVAL_LP_WORK`]
+/// (`tri_count(N) tri_count(m)^2 dim > 2^23`).
 ///
 /// ```
 /// use cagd_reduce::{IntervalOptions, IntervalTriPatch, reduce_interval_triangle};
@@ -81,6 +84,17 @@ pub fn reduce_interval_triangle(
         });
     }
     let big = containment_degree_of(n, opts.containment_degree)?;
+    let work = tri_count(big)
+        .saturating_mul(tri_count(m).pow(2))
+        .saturating_mul(d);
+    if work > MAX_INTERVAL_LP_WORK {
+        return Err(Error::ConditionNotMet {
+            eq: "I.2",
+            why: "the LPs are beyond the work cap (MAX_INTERVAL_LP_WORK: tri_count(N) \
+                  tri_count(m)^2 dim <= 2^23, about a second of simplex): use a lower \
+                  target degree or fewer coordinates per call",
+        });
+    }
     let eo = IntElevation::new(m, big)?;
     let ei = IntElevation::new(n, big)?;
     let a = eo.to_f64();

@@ -565,3 +565,24 @@ fn boxes_near_the_largest_double_give_a_finite_report_or_a_named_error() {
         ),
     }
 }
+
+/// The C ABI fuzz run's 7.3 s call (seed 107, session 0x7643e3568e5d464a): a 1-D degree-58
+/// interval triangle to degree 14 (LPs of 1 770 rows x 120 variables, 2.5e7 units) is refused
+/// by the work cap before any LP; the same patch to degree 4 (1 770 x 15, 4.0e5 units) is
+/// answered and certified.
+#[test]
+fn lps_beyond_the_work_cap_are_refused_by_name() {
+    let n = 58;
+    let lo: Vec<f64> = (0..tri_count(n))
+        .map(|i| ((i * 37) % 11) as f64 * 0.1)
+        .collect();
+    let hi: Vec<f64> = lo.iter().map(|x| x + 0.5).collect();
+    let p = IntervalTriPatch::new(lo, hi, n, 1).unwrap();
+    match reduce_interval_triangle(&p, &IntervalOptions::new(14)) {
+        Err(Error::ConditionNotMet { eq: "I.2", why }) => assert!(why.contains("work cap")),
+        other => panic!("expected the work cap, got {:?}", other.map(|r| r.report)),
+    }
+    assert!(tri_count(n) * tri_count(4).pow(2) <= MAX_INTERVAL_LP_WORK);
+    let r = reduce_interval_triangle(&p, &IntervalOptions::new(4)).unwrap();
+    assert!(r.patch.contains(&p, None).unwrap());
+}
