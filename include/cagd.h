@@ -1858,6 +1858,9 @@ CagdStatus cagd_bspline_reduce(const struct CagdBSpline *spline,
  *   for the pair `(n, target)`.
  * - `CAGD_ERR_CONDITION_NOT_MET`: the exact merge finds joints that do not meet.
  * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a NURBS is not positive.
+ * - `CAGD_ERR_MULTIPLICITY`: the reduced knot vector would carry a knot of multiplicity
+ *   above `target + 1` (an input with a knot of multiplicity above `target + 1`, e.g.
+ *   merged Bézier pieces, whose multiplicities the uniform route keeps).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety
@@ -3368,6 +3371,8 @@ CagdStatus cagd_curve_eval_many(const struct CagdCurve *curve,
  * - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
  * - `CAGD_ERR_NON_FINITE`: a point of the result overflows f64 (a rational curve's
  *   homogeneous points `w_i P_i` beyond f64).
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: an elevated weight rounds above the largest double
+ *   (weights within a rounding of `DBL_MAX`).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety

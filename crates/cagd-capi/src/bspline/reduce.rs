@@ -199,6 +199,9 @@ pub unsafe extern "C" fn cagd_bspline_reduce(
 ///   for the pair `(n, target)`.
 /// - `CAGD_ERR_CONDITION_NOT_MET`: the exact merge finds joints that do not meet.
 /// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a reduced weight of a NURBS is not positive.
+/// - `CAGD_ERR_MULTIPLICITY`: the reduced knot vector would carry a knot of multiplicity
+///   above `target + 1` (an input with a knot of multiplicity above `target + 1`, e.g.
+///   merged Bézier pieces, whose multiplicities the uniform route keeps).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety

@@ -129,6 +129,8 @@ pub unsafe extern "C" fn cagd_curve_eval_many(
 /// - `CAGD_ERR_INVALID_ARGUMENT`: a pointer is misaligned.
 /// - `CAGD_ERR_NON_FINITE`: a point of the result overflows f64 (a rational curve's
 ///   homogeneous points `w_i P_i` beyond f64).
+/// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: an elevated weight rounds above the largest double
+///   (weights within a rounding of `DBL_MAX`).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///
 /// # Safety
