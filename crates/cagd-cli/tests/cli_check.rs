@@ -117,3 +117,32 @@ fn unreadable_files_exit_2() {
     let o = cagd(&["check"], "");
     assert_eq!(o.status.code(), Some(2));
 }
+
+/// An empty path argument (the CLI fuzzer's case 3271, seed 2026112723: `cagd intersect ""
+/// F`) is refused with a line that names the field, not `cagd: : No such file ...`.
+#[test]
+fn empty_paths_are_named() {
+    for args in [
+        &["check", ""][..],
+        &["intersect", "", ""][..],
+        &["reduce", "--to", "1", "-i", ""][..],
+    ] {
+        let o = cagd(args, "");
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(
+            err.contains("input file: the path is empty"),
+            "{args:?}: {err}"
+        );
+        assert!(!err.starts_with("cagd: :"), "{args:?}: {err}");
+    }
+    let line = r#"{"type":"bezier","points":[[0,0],[1,2],[2,0]]}"#;
+    // An output that cannot be written is an I/O failure: exit 1, the line names it.
+    let o = cagd(&["reduce", "--to", "1", "-o", ""], line);
+    assert_eq!(o.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.starts_with("cagd: output file: the path is empty"),
+        "{err}"
+    );
+}

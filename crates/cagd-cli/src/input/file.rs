@@ -17,6 +17,10 @@ pub(crate) fn read_input(path: Option<&Path>) -> Result<String, String> {
 
 /// The whole text of the file `p`, refused above the size limit; errors name the file.
 pub(crate) fn read_file(p: &Path) -> Result<String, String> {
+    if p.as_os_str().is_empty() {
+        // An empty argument would give the message an empty field name (`cagd: : ...`).
+        return Err("input file: the path is empty".to_string());
+    }
     let name = p.display();
     let file = std::fs::File::open(p).map_err(|e| format!("{name}: {e}"))?;
     let mut bytes = Vec::new();

@@ -8,6 +8,7 @@ use serde_json::Value;
 /// Writes `text` to `path` or stdout; the error names the file.
 pub(crate) fn write_output(path: Option<&Path>, text: &str) -> Result<(), String> {
     match path {
+        Some(p) if p.as_os_str().is_empty() => Err("output file: the path is empty".to_string()),
         Some(p) => std::fs::write(p, text).map_err(|e| format!("{}: {e}", p.display())),
         None => crate::console::out(format_args!("{text}")).map_err(|e| format!("stdout: {e}")),
     }
