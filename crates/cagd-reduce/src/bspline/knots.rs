@@ -355,21 +355,24 @@ pub(crate) fn merge_pieces<'a>(
     }
     let max_gap = gaps.iter().copied().fold(0.0, f64::max);
     let merged = BSplineCurve::from_beziers(&segs, &breaks, 0, max_gap * 1.5 + f64::MIN_POSITIVE)?;
+    // The constants of the model-space conversion, once (per joint they made the merge
+    // quadratic in the pieces: a 2^20-piece `segments` result ran for minutes, CLI fuzz).
+    let model = input.weights().map(|w| {
+        let wmin = w.iter().copied().fold(f64::INFINITY, f64::min);
+        let vmin = merged
+            .weights()
+            .map_or(1.0, |v| v.iter().copied().fold(f64::INFINITY, f64::min));
+        // The radius covers the pieces' points too: the changed curve is a piece.
+        let pmax = segs
+            .iter()
+            .map(|c| max_norm(c.points(), c.dim()))
+            .fold(max_norm(input.points(), input.dim()), f64::max);
+        (pmax, wmin, vmin)
+    });
     let to_model = |g: f64| -> f64 {
-        match input.weights() {
+        match model {
             None => g,
-            Some(w) => {
-                let wmin = w.iter().copied().fold(f64::INFINITY, f64::min);
-                let vmin = merged
-                    .weights()
-                    .map_or(1.0, |v| v.iter().copied().fold(f64::INFINITY, f64::min));
-                // The radius covers the pieces' points too: the changed curve is a piece.
-                let pmax = segs
-                    .iter()
-                    .map(|c| max_norm(c.points(), c.dim()))
-                    .fold(max_norm(input.points(), input.dim()), f64::max);
-                euclidean_from_homogeneous(g, pmax, wmin, vmin)
-            }
+            Some((pmax, wmin, vmin)) => euclidean_from_homogeneous(g, pmax, wmin, vmin),
         }
     };
     for (j, g) in gaps.iter().enumerate() {
