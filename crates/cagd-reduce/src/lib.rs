@@ -236,13 +236,13 @@ pub use bezier::{
     subdivision_levels,
 };
 pub use bspline::{
-    BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy, MAX_SEGMENT_REDUCTIONS,
-    MAX_SURFACE_LEVEL, MAX_SURFACE_PATCHES, Merge, SPLINE_MEASURE_NODE_BUDGET,
-    SPLINE_MEASURED_PIECES, SURFACE_MEASURE_NODE_BUDGET, SURFACE_MEASURED_CELLS, SurfaceFitOptions,
-    SurfaceFitReduction, SurfaceOptions, SurfaceReduction, UniformReduction, reduce_bspline,
-    reduce_bspline_piegl_tiller, reduce_bspline_surface, reduce_bspline_surface_fit,
-    reduce_bspline_surface_to_tolerance, reduce_uniform_bspline, spline_max_deviation,
-    surface_max_deviation,
+    BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy, MAX_GREEDY_REMOVAL_KNOTS,
+    MAX_SEGMENT_REDUCTIONS, MAX_SURFACE_LEVEL, MAX_SURFACE_PATCHES, Merge,
+    SPLINE_MEASURE_NODE_BUDGET, SPLINE_MEASURED_PIECES, SURFACE_MEASURE_NODE_BUDGET,
+    SURFACE_MEASURED_CELLS, SurfaceFitOptions, SurfaceFitReduction, SurfaceOptions,
+    SurfaceReduction, UniformReduction, reduce_bspline, reduce_bspline_piegl_tiller,
+    reduce_bspline_surface, reduce_bspline_surface_fit, reduce_bspline_surface_to_tolerance,
+    reduce_uniform_bspline, spline_max_deviation, surface_max_deviation,
 };
 pub use cagd_core::{Error, Result};
 pub use interval::{

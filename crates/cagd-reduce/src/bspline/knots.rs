@@ -256,6 +256,11 @@ pub(crate) struct Raw {
 }
 
 impl Raw {
+    /// The number of knots (with multiplicity).
+    pub(crate) fn knot_count(&self) -> usize {
+        self.knots.len()
+    }
+
     pub(crate) fn new(c: &BSplineCurve) -> Self {
         Self {
             degree: c.degree(),

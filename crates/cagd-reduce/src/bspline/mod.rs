@@ -30,7 +30,7 @@ pub use measure::{
 pub use options::{BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy};
 pub use piegl_tiller::reduce_bspline_piegl_tiller;
 pub use reduce::reduce_bspline;
-pub use segments::MAX_SEGMENT_REDUCTIONS;
+pub use segments::{MAX_GREEDY_REMOVAL_KNOTS, MAX_SEGMENT_REDUCTIONS};
 pub use surface::{
     MAX_SURFACE_LEVEL, MAX_SURFACE_PATCHES, SurfaceFitOptions, SurfaceFitReduction, SurfaceOptions,
     SurfaceReduction, reduce_bspline_surface, reduce_bspline_surface_fit,
