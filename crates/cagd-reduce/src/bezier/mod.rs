@@ -37,4 +37,4 @@ pub use tolerance::{
 };
 pub use wn_table::perturbation_error_factor;
 
-pub(crate) use operator::{exact_operator, hull_bound, max_norm};
+pub(crate) use operator::{exact_operator, hull_bound, lobatto_node, max_norm};

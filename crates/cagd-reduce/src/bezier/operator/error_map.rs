@@ -119,8 +119,9 @@ impl BoundMap {
     }
 }
 
-/// The node `t_j = sin^2(j pi / (2N))` (`t_0 = 0`, `t_N = 1` exactly).
-fn node(j: usize, big_n: usize) -> f64 {
+/// The node `t_j = sin^2(j pi / (2N))` (`t_0 = 0`, `t_N = 1` exactly); shared with the
+/// B-spline fit's span bounds (`bspline/fit/node_bound.rs`).
+pub(crate) fn node(j: usize, big_n: usize) -> f64 {
     if j == big_n {
         return 1.0;
     }

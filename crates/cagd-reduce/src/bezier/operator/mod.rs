@@ -28,7 +28,7 @@ use one_step::{residual_term, step};
 
 pub use chebyshev::{ChebyshevTerms, constrained_chebyshev_terms};
 pub(crate) use error_basis::ErrorBasis;
-pub(crate) use error_map::BoundMap;
+pub(crate) use error_map::{BoundMap, node as lobatto_node};
 pub use fast::OperatorRoute;
 pub use one_step::eck_lambdas;
 

@@ -21,6 +21,7 @@
 use std::cell::RefCell;
 use std::rc::Rc;
 
+use crate::bezier::lobatto_node;
 use cagd_core::binomial_f64;
 
 /// The secant factor the nodes are chosen for: `N ≈ 4.2 p`.
@@ -92,7 +93,7 @@ impl NodeBound {
         let (mut bp, mut bm) = (vec![0.0; (p + 1) * nodes], vec![0.0; (m + 1) * nodes]);
         let (mut rp, mut rm) = (Vec::with_capacity(p + 1), Vec::with_capacity(m + 1));
         for j in 0..=big_n {
-            let t = node(j, big_n);
+            let t = lobatto_node(j, big_n);
             rp.clear();
             rm.clear();
             push_bernstein(p, t, &mut rp);
@@ -241,32 +242,11 @@ fn push_bernstein(n: usize, t: f64, out: &mut Vec<f64>) {
     }
 }
 
-/// The node `t_j = sin^2(j pi / (2N))` (`t_0 = 0`, `t_N = 1` exactly).
-fn node(j: usize, big_n: usize) -> f64 {
-    if j == big_n {
-        return 1.0;
-    }
-    let s = (j as f64 * std::f64::consts::PI / (2.0 * big_n as f64)).sin();
-    s * s
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use cagd_core::BezierCurve;
-
-    /// Deterministic pseudo-random values in `[-1, 1]`.
-    fn values(len: usize, seed: u64) -> Vec<f64> {
-        let mut s = 0x9E37_79B9_7F4A_7C15 ^ seed;
-        (0..len)
-            .map(|_| {
-                s ^= s << 13;
-                s ^= s >> 7;
-                s ^= s << 17;
-                (s >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-            })
-            .collect()
-    }
+    use cagd_testkit::bench::random_input as values;
 
     /// The densely sampled `max_t ||a(t) - b(t)||` with a golden-section polish around the
     /// best sample (independent of the nodes: de Casteljau evaluation).
