@@ -196,7 +196,8 @@ pub fn max_distance_1d(
     Ok(refine_sampled_maxima(&f, &g, dim, lo, hi, &d2))
 }
 
-/// The second half of [`max_distance_1d`] for callers that sampled already:
+/// The second half of [`max_distance_1d`] (ADDED, as that function: SPEC-reduce §0
+/// "sampled" maximum, refined) for callers that sampled already:
 /// `max_{t in [lo, hi]} ||f(t) - g(t)||` from the finite squared distances `d2` at the
 /// `n + 1 = d2.len()` equally spaced samples `t_i = lo + (hi - lo) i / n` (`t_n = hi`),
 /// every sampled local maximum refined by Brent's method inside its two neighbouring
