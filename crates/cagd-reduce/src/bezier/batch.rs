@@ -10,7 +10,7 @@ use cagd_core::{Error, Result};
 use cagd_core::all_finite;
 
 use super::bound::{BoundLevel, safe_amax};
-use super::lanes::{self, BoundMaps, CurveNorms};
+use super::lanes::{self, BoundMaps, CurveNorms, NodeMaps};
 use super::operator::Operator;
 
 impl Operator {
@@ -106,7 +106,18 @@ pub fn reduce_batch_with_bounds(
     let maps = BoundMaps {
         a: map.transposed(),
         g: basis.coef.transposed(),
-        v: bm.samples.transposed(),
+        v: match &bm.split {
+            Some((even, odd)) => NodeMaps::Split(
+                even.transposed().0,
+                odd.transposed().0,
+                even.cols(),
+                even.rows(),
+            ),
+            None => {
+                let (vt, nodes) = bm.samples.transposed();
+                NodeMaps::Full(vt, nodes)
+            }
+        },
     };
     let (per_in, per_out) = (map.cols() * dim, map.rows() * dim);
     let block = map.block_curves(dim);

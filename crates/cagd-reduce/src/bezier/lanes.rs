@@ -390,8 +390,18 @@ pub(crate) struct BoundMaps<'a> {
     pub(crate) a: (&'a [f64], usize),
     /// `G^T` and `r` (`r = 0`: no error space; every node value is zero).
     pub(crate) g: (&'a [f64], usize),
-    /// `V^T` and `N + 1`.
-    pub(crate) v: (&'a [f64], usize),
+    /// The node values: `V^T` and `N + 1`, or the symmetric split's halves.
+    pub(crate) v: NodeMaps<'a>,
+}
+
+/// The node map of a batch with bounds (see `operator/error_map.rs`).
+pub(crate) enum NodeMaps<'a> {
+    /// `V^T` and its number of rows (nodes).
+    Full(&'a [f64], usize),
+    /// The symmetric split: `V_e^T`, `V_o^T` (transposed, `r_e x rows` and `r_o x
+    /// rows`), `r_e` and the number of rows (node pairs `t_j`, `1 - t_j`); the node values
+    /// are `e_j + o_j` and `e_j - o_j`.
+    Split(&'a [f64], &'a [f64], usize, usize),
 }
 
 /// Per curve of a batch with bounds: the largest node value norm `max_j ||(V G P)_j||`,
@@ -480,12 +490,16 @@ pub(crate) fn with_norms_generic<const F: bool, const L: usize>(
     scratch: &mut Vec<f64>,
     tr: impl Fn(Quad, Quad, Quad, Quad) -> [Quad; 4],
 ) {
-    let ((at, rows), (gt, rank), (vt, nodes)) = (maps.a, maps.g, maps.v);
+    let ((at, rows), (gt, rank)) = (maps.a, maps.g);
+    let (nodes, halves) = match maps.v {
+        NodeMaps::Full(_, nodes) => (nodes, 1),
+        NodeMaps::Split(_, _, _, pairs) => (pairs, 2),
+    };
     if rows == 0 || dim == 0 {
         return;
     }
     let cols = at.len() / rows;
-    let (lin, lout, lc, lv) = (cols * dim, rows * dim, rank * dim, nodes * dim);
+    let (lin, lout, lc, lv) = (cols * dim, rows * dim, rank * dim, halves * nodes * dim);
     if lin == 0 {
         return;
     }
@@ -523,8 +537,19 @@ pub(crate) fn with_norms_generic<const F: bool, const L: usize>(
             [0.0; L]
         } else {
             tiles::<F, L>(gt, rank, cols, dim, t, c);
-            tiles::<F, L>(vt, nodes, rank, dim, c, vv);
-            max_point_norm::<F, L>(vv, dim)
+            match maps.v {
+                NodeMaps::Full(vt, _) => {
+                    tiles::<F, L>(vt, nodes, rank, dim, c, vv);
+                    max_point_norm::<F, L>(vv, dim)
+                }
+                NodeMaps::Split(vet, vot, re, _) => {
+                    let (ce, co) = c.split_at(re * dim);
+                    let (e, o) = vv.split_at_mut(nodes * dim);
+                    tiles::<F, L>(vet, nodes, re, dim, ce, e);
+                    tiles::<F, L>(vot, nodes, rank - re, dim, co, o);
+                    max_pair_point_norm::<F, L>(e, o, dim)
+                }
+            }
         };
         let pmax = max_point_norm::<F, L>(t, dim);
         let amax = t.iter().fold([0.0f64; L], |m, x| {
@@ -562,6 +587,34 @@ fn max_point_norm<const F: bool, const L: usize>(x: &[[f64; L]], dim: usize) -> 
         for l in 0..L {
             bad[l] |= q[l].is_nan();
             best[l] = best[l].max(q[l]);
+        }
+    }
+    std::array::from_fn(|l| if bad[l] { f64::NAN } else { best[l].sqrt() })
+}
+
+/// Per lane, `max_j max(||e_j + o_j||, ||e_j - o_j||)` over the points `e_j`, `o_j`
+/// (`dim` vectors each; the symmetric split's node values); NaN in a lane where a squared
+/// norm is NaN.
+#[inline(always)]
+fn max_pair_point_norm<const F: bool, const L: usize>(
+    e: &[[f64; L]],
+    o: &[[f64; L]],
+    dim: usize,
+) -> [f64; L] {
+    let mut best = [0.0f64; L];
+    let mut bad = [false; L];
+    for (pe, po) in e.chunks_exact(dim).zip(o.chunks_exact(dim)) {
+        let (mut qp, mut qm) = ([0.0f64; L], [0.0f64; L]);
+        for (ve, vo) in pe.iter().zip(po) {
+            for l in 0..L {
+                let (p, m) = (ve[l] + vo[l], ve[l] - vo[l]);
+                qp[l] = madd::<F>(p, p, qp[l]);
+                qm[l] = madd::<F>(m, m, qm[l]);
+            }
+        }
+        for l in 0..L {
+            bad[l] |= qp[l].is_nan() || qm[l].is_nan();
+            best[l] = best[l].max(qp[l]).max(qm[l]);
         }
     }
     std::array::from_fn(|l| if bad[l] { f64::NAN } else { best[l].sqrt() })
@@ -744,6 +797,72 @@ mod tests {
     }
 
     #[test]
+    fn split_node_norms_equal_the_mirrored_definition() {
+        // The split's node values e +- o, against the full map [Ve Vo; Ve -Vo] applied by
+        // the reference, for every split of the columns (empty parts included).
+        let (rows, cols, rank, pairs) = (4, 9, 5, 7);
+        let mk = |r: usize, c: usize, s: f64| -> Vec<f64> {
+            (0..r * c).map(|i| (i as f64 * s).sin()).collect()
+        };
+        let (a, g, v) = (
+            mk(rows, cols, 0.37),
+            mk(rank, cols, 0.53),
+            mk(pairs, rank, 0.71),
+        );
+        let (at, gt) = (transpose(&a, rows, cols), transpose(&g, rank, cols));
+        let mut scratch = Vec::new();
+        for re in 0..=rank {
+            let part = |range: std::ops::Range<usize>| -> Vec<f64> {
+                let w = range.len();
+                let p: Vec<f64> = (0..pairs)
+                    .flat_map(|j| v[j * rank..(j + 1) * rank][range.clone()].to_vec())
+                    .collect();
+                transpose(&p, pairs, w)
+            };
+            let (vet, vot) = (part(0..re), part(re..rank));
+            let full: Vec<f64> = (0..2 * pairs)
+                .flat_map(|j| {
+                    let row = &v[(j % pairs) * rank..(j % pairs + 1) * rank];
+                    let s = |k: usize| if j >= pairs && k >= re { -1.0 } else { 1.0 };
+                    row.iter()
+                        .enumerate()
+                        .map(move |(k, x)| s(k) * x)
+                        .collect::<Vec<_>>()
+                })
+                .collect();
+            let maps = BoundMaps {
+                a: (&at, rows),
+                g: (&gt, rank),
+                v: NodeMaps::Split(&vet, &vot, re, pairs),
+            };
+            for dim in [1, 3, 5] {
+                for curves in [1, 4, 9] {
+                    let input: Vec<f64> = (0..curves * cols * dim)
+                        .map(|i| (i as f64 * 1.7).cos() * 3.0)
+                        .collect();
+                    let mut out = vec![0.0; curves * rows * dim];
+                    let mut norms = vec![CurveNorms::default(); curves];
+                    apply_with_norms(&maps, dim, &input, &mut out, &mut norms, &mut scratch);
+                    for (cv, nrm) in input.chunks_exact(cols * dim).zip(&norms) {
+                        let coef = reference::<false>(&g, rank, cols, cv, dim);
+                        let vals = reference::<false>(&full, 2 * pairs, rank, &coef, dim);
+                        let norm = |x: &[f64]| x.iter().map(|y| y * y).sum::<f64>().sqrt();
+                        let smax = vals.chunks_exact(dim).map(norm).fold(0.0, f64::max);
+                        assert!(
+                            (nrm.smax - smax).abs() <= 1e-13 * smax.max(1.0),
+                            "re {re} dim {dim} curves {curves}: {nrm:?} {smax}"
+                        );
+                    }
+                    let mut bad = input.clone();
+                    bad[cols * dim * (curves - 1)] = f64::NAN;
+                    apply_with_norms(&maps, dim, &bad, &mut out, &mut norms, &mut scratch);
+                    assert!(norms[curves - 1].smax.is_nan() || rank == 0);
+                }
+            }
+        }
+    }
+
+    #[test]
     fn norms_equal_their_definitions_and_the_reduction_is_apply_bit_for_bit() {
         let (rows, cols, rank, nodes) = (5, 9, 4, 23);
         let mk = |r: usize, c: usize, s: f64| -> Vec<f64> {
@@ -762,7 +881,7 @@ mod tests {
         let maps = BoundMaps {
             a: (&at, rows),
             g: (&gt, rank),
-            v: (&vt, nodes),
+            v: NodeMaps::Full(&vt, nodes),
         };
         let mut scratch = Vec::new();
         for dim in [1, 2, 3, 4, 7] {

@@ -9,7 +9,7 @@ mod nodes;
 
 use cagd_core::Result;
 
-pub(crate) use nodes::max_value_norm;
+pub(crate) use nodes::{max_pair_norm, max_value_norm};
 
 use super::operator::{BoundMap, Operator, check_len, hull_bound, max_norm};
 
@@ -113,7 +113,13 @@ impl Operator {
             &mut heap
         };
         basis.coef.apply_loop(points, dim, coef);
-        let smax = max_value_norm(bm.samples.matrix(), basis.rank, coef, dim);
+        let smax = match &bm.split {
+            Some((even, odd)) => {
+                let (ce, co) = coef.split_at(even.cols() * dim);
+                max_pair_norm((even.matrix(), ce), (odd.matrix(), co), dim)
+            }
+            None => max_value_norm(bm.samples.matrix(), basis.rank, coef, dim),
+        };
         self.curve_bound(bm, points, dim, smax)
     }
 

@@ -12,6 +12,19 @@
 //! reorthogonalisation on the columns of `R`, stopped when every remaining column is at
 //! rounding level, and its residual `R - U G` is measured and carried into the bound
 //! (`rho`), so a method that is not a projection only loosens the bound.
+//!
+//! The symmetric split (goes beyond the seed): for a method symmetric under reversal
+//! (`A J_n = J_m A`, `J` the reversal of the points: L2 with equal end orders, the
+//! generalized inverse, the Chebyshev family, ...) `R` commutes with `J`, so its range is
+//! the sum of its even part (`J u = u`, curves with `phi(1 - t) = phi(t)`) and its odd part
+//! (`J u = -u`, `phi(1 - t) = -phi(t)`), of dimensions `ceil((n+1)/2) - ceil((m+1)/2)` and
+//! `floor((n+1)/2) - floor((m+1)/2)` (`A` maps the even / odd points onto the even / odd
+//! points of degree `m`, as `A E = I`). The basis is then taken part by part (two
+//! Gram–Schmidt runs on half-length vectors: a quarter of the work) and its columns made
+//! exactly even / odd by mirroring, so that the node maps need only the nodes of
+//! `[0, 1/2]` (`error_map.rs`). Nothing else is assumed: `G = U^T R` and the residual `rho`
+//! are computed from the actual `R` as before, so a method that is only nearly symmetric
+//! only loosens the bound.
 
 use nalgebra::DMatrix;
 
@@ -33,7 +46,15 @@ pub(crate) struct ErrorBasis {
     /// A true bound of the row sums of `|R - U G|` for the exact `R = I - E A` (measured,
     /// with the rounding of its measurement and of `R`'s computation; see [`Self::new`]).
     pub(crate) rho: f64,
+    /// `Some(r_e)` for the symmetric split: columns `0..r_e` of `U` are exactly even
+    /// (`U_(n-i)k = U_ik`), the others exactly odd (`U_(n-i)k = -U_ik`).
+    pub(crate) even: Option<usize>,
 }
+
+/// Largest reversal asymmetry `max_i sum_j |A_ij - A_(m-i)(n-j)|`, per unit of `1 +
+/// ||A||_inf`, for which the symmetric split is taken (operators built to `1e-12`
+/// relative; a larger asymmetry would show in `rho`, never break the bound).
+const SYMMETRY_TOLERANCE: f64 = 1e-12;
 
 impl ErrorBasis {
     /// The basis for the `f64` operator `a` (`(m+1) x (n+1)`, row-major), whose row sums
@@ -48,7 +69,17 @@ impl ErrorBasis {
     pub(crate) fn new(a: &[f64], n: usize, m: usize, op_norm: f64) -> Self {
         let n1 = n + 1;
         let r_mat = residual_matrix(a, n, m);
-        let (u, rank) = orthonormal_range(&r_mat, n1, n - m);
+        let top = (0..n1)
+            .map(|j| (0..n1).map(|i| r_mat[i * n1 + j].powi(2)).sum::<f64>())
+            .fold(0.0, f64::max)
+            .sqrt();
+        let (u, rank, even) = if reversal_asymmetry(a, n, m) <= SYMMETRY_TOLERANCE * (1.0 + op_norm)
+        {
+            symmetric_range(&r_mat, n, m, top)
+        } else {
+            let (u, rank) = orthonormal_range(&r_mat, n1, n1, n - m, top);
+            (u, rank, None)
+        };
         // G = U^T R, row-major r x n1.
         // G = U^T R and U G through the GEMM kernel (the rounding bounds below hold for
         // any order of the sums).
@@ -86,8 +117,85 @@ impl ErrorBasis {
             coef: LinearMap::new(rank, n1, g),
             gsum,
             rho,
+            even,
         }
     }
+}
+
+/// `max_i sum_j |A_ij - A_(m-i)(n-j)|` for the row-major `(m+1) x (n+1)` matrix `a`.
+fn reversal_asymmetry(a: &[f64], n: usize, m: usize) -> f64 {
+    let n1 = n + 1;
+    (0..=m)
+        .map(|i| {
+            (0..n1)
+                .map(|j| (a[i * n1 + j] - a[(m - i) * n1 + (n - j)]).abs())
+                .sum::<f64>()
+        })
+        .fold(0.0, f64::max)
+}
+
+/// The basis of the range of `r` (`(n+1) x (n+1)`, row-major, commuting with the reversal
+/// up to rounding) as `r_e` exactly even columns followed by exactly odd ones: returns `U`
+/// (row-major `(n+1) x rank`), `rank` and `Some(r_e)`.
+///
+/// An even vector `v` is held as its half `w` (`w_i = sqrt 2 v_i` for `i < n - i`, `w_i =
+/// v_i` in the middle), an odd one as `w_i = sqrt 2 v_i` (`i < n - i`; its middle is zero),
+/// so that `||w|| = ||v||`; the spanning vectors are the halves of the even part of `R
+/// (e_j + e_(n-j)) / 2` and of the odd part of `R (e_j - e_(n-j)) / 2` (for `R J = J R`
+/// the other columns repeat them up to sign). After the Gram–Schmidt runs each basis vector
+/// is unfolded by mirroring its half, so the parity is exact whatever the rounding.
+fn symmetric_range(r: &[f64], n: usize, m: usize, top: f64) -> (Vec<f64>, usize, Option<usize>) {
+    let n1 = n + 1;
+    let (half_e, half_o) = (n / 2 + 1, n1 / 2);
+    let (exp_e, exp_o) = (half_e - (m / 2 + 1), half_o - (m + 1) / 2);
+    let s2 = std::f64::consts::SQRT_2;
+    let at = |i: usize, j: usize| r[i * n1 + j];
+    // Column j of the folded matrices, row i of the half (row-major, square).
+    let fold = |sign: f64, half: usize| -> Vec<f64> {
+        let mut out = vec![0.0; half * half];
+        for i in 0..half {
+            for j in 0..half {
+                let col = |ii: usize| {
+                    if j == n - j {
+                        at(ii, j)
+                    } else {
+                        0.5 * (at(ii, j) + sign * at(ii, n - j))
+                    }
+                };
+                out[i * half + j] = if i == n - i {
+                    col(i)
+                } else {
+                    (col(i) + sign * col(n - i)) / s2
+                };
+            }
+        }
+        out
+    };
+    let (ue, re) = orthonormal_range(&fold(1.0, half_e), half_e, half_e, exp_e, top);
+    let (uo, ro) = orthonormal_range(&fold(-1.0, half_o), half_o, half_o, exp_o, top);
+    let rank = re + ro;
+    let mut u = vec![0.0; n1 * rank];
+    for i in 0..half_e {
+        let mirror = n - i;
+        for k in 0..re {
+            let w = ue[i * re + k];
+            if i == mirror {
+                u[i * rank + k] = w;
+            } else {
+                u[i * rank + k] = w / s2;
+                u[mirror * rank + k] = w / s2;
+            }
+        }
+    }
+    for i in 0..half_o {
+        let mirror = n - i;
+        for k in 0..ro {
+            let v = uo[i * ro + k] / s2;
+            u[i * rank + re + k] = v;
+            u[mirror * rank + re + k] = -v;
+        }
+    }
+    (u, rank, Some(re))
 }
 
 /// `R^ = I - E A` in `f64`, row-major `(n+1) x (n+1)`, with the elevation coefficients
@@ -114,22 +222,28 @@ fn residual_matrix(a: &[f64], n: usize, m: usize) -> Vec<f64> {
     out
 }
 
-/// An orthonormal basis of the range of the square matrix `r` (`n1 x n1`, row-major) by
+/// An orthonormal basis of the range of the matrix `r` (`len x cols`, row-major) by
 /// pivoted modified Gram–Schmidt, each new vector orthogonalised twice: returns `U`
-/// row-major `n1 x rank` and `rank`. Columns stop being taken when the largest remaining
-/// column norm is below `8 n1 eps` of the largest initial one, or, once `expected`
-/// columns are taken (the rank in exact arithmetic), below `1e-11` of it (what is left
-/// is rounding of `R` itself and goes into the measured residual).
-fn orthonormal_range(r: &[f64], n1: usize, expected: usize) -> (Vec<f64>, usize) {
+/// row-major `len x rank` and `rank`. Columns stop being taken when the largest remaining
+/// column norm is below `8 len eps` of `top` (the largest column norm of the whole `R`),
+/// or, once `expected` columns are taken (the rank in exact arithmetic), below `1e-11` of
+/// it (what is left is rounding of `R` itself and goes into the measured residual).
+fn orthonormal_range(
+    r: &[f64],
+    len: usize,
+    cols_n: usize,
+    expected: usize,
+    top: f64,
+) -> (Vec<f64>, usize) {
+    let n1 = len;
     // Columns of R as contiguous vectors (the remainders after projection).
-    let mut cols: Vec<Vec<f64>> = (0..n1)
-        .map(|j| (0..n1).map(|i| r[i * n1 + j]).collect())
+    let mut cols: Vec<Vec<f64>> = (0..cols_n)
+        .map(|j| (0..n1).map(|i| r[i * cols_n + j]).collect())
         .collect();
     let norm2 = |v: &[f64]| v.iter().map(|x| x * x).sum::<f64>();
-    let top = cols.iter().map(|c| norm2(c)).fold(0.0, f64::max).sqrt();
     let stop = 8.0 * n1 as f64 * f64::EPSILON * top;
     let mut basis: Vec<Vec<f64>> = Vec::new();
-    while basis.len() < n1 {
+    while basis.len() < n1.min(cols_n) {
         let (best, size) = cols
             .iter()
             .enumerate()
@@ -190,6 +304,20 @@ mod tests {
                 };
                 let b = ErrorBasis::new(op.matrix(), n, m, op.norm_inf());
                 assert_eq!(b.rank, n - m, "{method:?} ({n},{m})");
+                // Every method here is symmetric under reversal: the split is taken, with
+                // the parts' sizes of exact arithmetic and exactly mirrored columns.
+                let re = b.even.expect("symmetric split");
+                assert_eq!(
+                    re,
+                    (n + 1).div_ceil(2) - (m + 1).div_ceil(2),
+                    "{method:?} ({n},{m})"
+                );
+                for i in 0..=n {
+                    for k in 0..b.rank {
+                        let sign = if k < re { 1.0 } else { -1.0 };
+                        assert_eq!(b.u[(n - i) * b.rank + k], sign * b.u[i * b.rank + k]);
+                    }
+                }
                 println!(
                     "{method:?} ({n},{m}): rho {:e}, |A| {}",
                     b.rho,
@@ -208,6 +336,50 @@ mod tests {
                         let want = f64::from(u8::from(k == l));
                         assert!((d - want).abs() < 1e-13, "{method:?} ({n},{m}) {k} {l}");
                     }
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod split_tests {
+    use super::super::operator;
+    use super::*;
+    use crate::Method;
+
+    /// A method that is not symmetric under reversal (different end orders) takes the
+    /// general route, and its residual is as small.
+    #[test]
+    fn asymmetric_methods_take_the_general_route() {
+        for (n, m) in [(10, 5), (15, 10)] {
+            let op = operator(Method::L2 { r: 1, p: 0 }, n, m).unwrap();
+            let b = ErrorBasis::new(op.matrix(), n, m, op.norm_inf());
+            assert!(b.even.is_none());
+            assert_eq!(b.rank, n - m);
+            assert!(b.rho <= 1e-12 * (1.0 + op.norm_inf()), "rho {:e}", b.rho);
+        }
+    }
+
+    /// The split and the general route span the same space: the split's `U U^T` projects
+    /// the general route's basis onto itself.
+    #[test]
+    fn split_spans_the_general_range() {
+        for (n, m) in [(4, 3), (5, 4), (10, 5), (20, 10), (31, 16)] {
+            let op = operator(Method::L2 { r: 0, p: 0 }, n, m).unwrap();
+            let n1 = n + 1;
+            let r_mat = residual_matrix(op.matrix(), n, m);
+            let (ug, rg) = orthonormal_range(&r_mat, n1, n1, n - m, 1.0);
+            let b = ErrorBasis::new(op.matrix(), n, m, op.norm_inf());
+            assert!(b.even.is_some());
+            for k in 0..rg {
+                let v: Vec<f64> = (0..n1).map(|i| ug[i * rg + k]).collect();
+                let coef: Vec<f64> = (0..b.rank)
+                    .map(|l| (0..n1).map(|i| b.u[i * b.rank + l] * v[i]).sum())
+                    .collect();
+                for i in 0..n1 {
+                    let p: f64 = (0..b.rank).map(|l| b.u[i * b.rank + l] * coef[l]).sum();
+                    assert!((p - v[i]).abs() < 1e-13, "({n},{m}) {k} {i}");
                 }
             }
         }

@@ -13,6 +13,13 @@
 //! sec(n pi / (2N)) max_j ||D(t_j)||`. The node values are themselves curve values, so the
 //! bound is within `sec(n pi / (2N))` of the true maximum, whatever the curve: `N` is
 //! chosen from the ratio a level asks (1.25 fast, 1.075 tight).
+//!
+//! With the basis' symmetric split (`error_basis.rs`: `phi_k(1 - t) = +-phi_k(t)` exactly)
+//! `N` is odd and only the nodes `t_j`, `j = 0 ..= (N - 1) / 2`, of `[0, 1/2)` are
+//! evaluated: `D(t_j) = e_j + o_j` and `D(1 - t_j) = e_j - o_j` with `e = V_e c_e`, `o =
+//! V_o c_o` (the even and the odd columns), so `V`'s work halves. The mirrored points `1 -
+//! t^_j` (exact reals, never rounded) are within the same angle of the ideal nodes `t_(N -
+//! j)` as `t^_j` of `t_j`, so the Ehlich–Zeller argument holds on the union as it is.
 
 use nalgebra::DMatrix;
 
@@ -26,8 +33,12 @@ const NODE_ANGLE_MARGIN: f64 = 1e-9;
 /// The node values map of one level and the constants of its bound.
 #[derive(Debug, Clone)]
 pub(crate) struct BoundMap {
-    /// `V`, `(N+1) x r`: `V_jk = phi_k(t_j)`.
+    /// `V`, `(N+1) x r`: `V_jk = phi_k(t_j)`; with the symmetric split only the rows
+    /// `j <= (N - 1) / 2`.
     pub(crate) samples: LinearMap,
+    /// With the symmetric split: `V_e` (the even columns of `samples`) and `V_o` (the odd
+    /// ones) as maps of their own.
+    pub(crate) split: Option<(LinearMap, LinearMap)>,
     /// `sec(n (pi / (2N) + margin))`, rounded up.
     pub(crate) sec: f64,
     /// Rounding allowance inside the secant factor, per unit of `max_j ||P_j||`.
@@ -45,8 +56,11 @@ impl BoundMap {
     /// Bernstein values at the `f64` nodes are within `(3n + 3) eps` of themselves
     /// (binomial, powers, products), so `V^` is within `(4n + 5) eps u_k` of the exact
     /// `phi_k(t^_j)`; `c^ = fl(G P)` within `(n + 1) eps g_k pmax` of `c`; `fl(V^ c^)` within
-    /// `r eps sum_k |V^_jk| ||c^_k||`. So `||D~(t^_j)|| <= ||s^_j|| (1 + (dim + 3) eps) +
-    /// inner pmax` with `inner = 2 eps ((r + n + 1) vg + (4n + 5) ug)`, `vg = max_j sum_k
+    /// `r eps sum_k |V^_jk| ||c^_k||` (with the split: `fl(V_e c_e) +- fl(V_o c_o)`, the
+    /// two sums within `r eps sum_k |V^_jk| ||c^_k||` together, the `+-` one more rounding
+    /// of the value, counted in the relative factor). So `||D~(t^_j)|| <= ||s^_j|| (1 +
+    /// (dim + 4) eps) + inner pmax` (the norm's `dim` roundings, its square root, the `+-`,
+    /// and a margin) with `inner = 2 eps ((r + n + 1) vg + (4n + 5) ug)`, `vg = max_j sum_k
     /// |V^_jk| g_k`, `ug = sum_k u_k g_k` (2: margin for second-order terms). The true
     /// error curve `P - E fl(A P)` differs from `D~ = U G P` by the basis residual
     /// (`rho pmax`) and `E (fl(A P) - A P)` (`(n + 1) eps op_norm pmax`, `E` convex):
@@ -60,14 +74,23 @@ impl BoundMap {
             clippy::cast_possible_truncation,
             reason = "n <= 64 and ratio >= 1.075 give N < 300"
         )]
-        let big_n = ((std::f64::consts::FRAC_PI_2 / half).ceil() as usize).max(n + 1);
+        let mut big_n = ((std::f64::consts::FRAC_PI_2 / half).ceil() as usize).max(n + 1);
+        // The split evaluates (N + 1) / 2 nodes for N odd, N / 2 + 1 for N even: an odd N
+        // is the better bound for the same work.
+        let rows = match basis.even {
+            Some(_) => {
+                big_n |= 1;
+                big_n.div_ceil(2)
+            }
+            None => big_n + 1,
+        };
         let angle = nf * (std::f64::consts::PI / (2.0 * big_n as f64) + NODE_ANGLE_MARGIN);
         let sec = (1.0 / angle.cos()) * (1.0 + 8.0 * f64::EPSILON);
         let binom: Vec<f64> = (0..=n).map(|i| cagd_core::binomial_f64(n, i)).collect();
         let (mut tp, mut sp) = (vec![1.0; n + 1], vec![1.0; n + 1]);
         // The Bernstein values at the nodes, then V = B U through the GEMM kernel.
-        let mut bern = DMatrix::zeros(big_n + 1, n + 1);
-        for j in 0..=big_n {
+        let mut bern = DMatrix::zeros(rows, n + 1);
+        for j in 0..rows {
             let t = node(j, big_n);
             let s = 1.0 - t;
             for i in 1..=n {
@@ -79,7 +102,7 @@ impl BoundMap {
             }
         }
         let vm = bern * DMatrix::from_row_slice(n + 1, r, &basis.u);
-        let v: Vec<f64> = (0..=big_n)
+        let v: Vec<f64> = (0..rows)
             .flat_map(|j| (0..r).map(move |k| (j, k)))
             .map(|(j, k)| vm[(j, k)])
             .collect();
@@ -98,8 +121,20 @@ impl BoundMap {
         let eps = f64::EPSILON;
         let inner = 2.0 * eps * ((r as f64 + nf + 1.0) * vg + (4.0 * nf + 5.0) * ug);
         let outer = basis.rho + 2.0 * (nf + 1.0) * eps * op_norm;
+        let split = basis.even.map(|re| {
+            let part = |cols: std::ops::Range<usize>| {
+                let w = cols.len();
+                let a = v
+                    .chunks_exact(r.max(1))
+                    .flat_map(|row| row[cols.clone()].iter().copied())
+                    .collect();
+                LinearMap::new(rows, w, a)
+            };
+            (part(0..re), part(re..r))
+        });
         Self {
-            samples: LinearMap::new(big_n + 1, r, v),
+            samples: LinearMap::new(rows, r, v),
+            split,
             sec,
             inner,
             outer,
@@ -111,7 +146,7 @@ impl BoundMap {
     pub(crate) fn finish(&self, smax: f64, pmax: f64, dim: usize) -> f64 {
         let eps = f64::EPSILON;
         let pmax = pmax * (1.0 + (dim as f64 + 2.0) * eps);
-        let b = (self.sec * (smax * (1.0 + (dim as f64 + 3.0) * eps) + self.inner * pmax)
+        let b = (self.sec * (smax * (1.0 + (dim as f64 + 4.0) * eps) + self.inner * pmax)
             + self.outer * pmax)
             * (1.0 + 4.0 * eps)
             + f64::MIN_POSITIVE;
