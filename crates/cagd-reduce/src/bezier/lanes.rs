@@ -552,15 +552,7 @@ pub(crate) fn with_norms_generic<const F: bool, const L: usize>(
             }
         };
         let pmax = max_point_norm::<F, L>(t, dim);
-        let amax = t.iter().fold([0.0f64; L], |m, x| {
-            std::array::from_fn(|l| {
-                if x[l].abs() > m[l] || x[l].is_nan() {
-                    x[l].abs()
-                } else {
-                    m[l]
-                }
-            })
-        });
+        let amax = max_abs::<L>(t);
         for (l, n) in nrm.iter_mut().enumerate() {
             *n = CurveNorms {
                 smax: smax[l],
@@ -575,8 +567,7 @@ pub(crate) fn with_norms_generic<const F: bool, const L: usize>(
 /// where a squared norm is NaN (never skipped).
 #[inline(always)]
 fn max_point_norm<const F: bool, const L: usize>(x: &[[f64; L]], dim: usize) -> [f64; L] {
-    let mut best = [0.0f64; L];
-    let mut bad = [false; L];
+    let (mut best, mut nan) = ([0.0f64; L], [0.0f64; L]);
     for p in x.chunks_exact(dim) {
         let mut q = [0.0f64; L];
         for v in p {
@@ -585,11 +576,32 @@ fn max_point_norm<const F: bool, const L: usize>(x: &[[f64; L]], dim: usize) -> 
             }
         }
         for l in 0..L {
-            bad[l] |= q[l].is_nan();
-            best[l] = best[l].max(q[l]);
+            best[l] = if q[l] > best[l] { q[l] } else { best[l] };
+            nan[l] = if q[l].is_nan() { 1.0 } else { nan[l] };
         }
     }
-    std::array::from_fn(|l| if bad[l] { f64::NAN } else { best[l].sqrt() })
+    std::array::from_fn(|l| {
+        if nan[l] != 0.0 {
+            f64::NAN
+        } else {
+            best[l].sqrt()
+        }
+    })
+}
+
+/// Per lane, `max |x|` over the vectors `x` (NaN in a lane holding a NaN): selects only,
+/// so that the loop runs on whole vectors.
+#[inline(always)]
+fn max_abs<const L: usize>(x: &[[f64; L]]) -> [f64; L] {
+    let (mut m, mut nan) = ([0.0f64; L], [0.0f64; L]);
+    for v in x {
+        for l in 0..L {
+            let a = v[l].abs();
+            m[l] = if a > m[l] { a } else { m[l] };
+            nan[l] = if a.is_nan() { 1.0 } else { nan[l] };
+        }
+    }
+    std::array::from_fn(|l| if nan[l] != 0.0 { f64::NAN } else { m[l] })
 }
 
 /// Per lane, `max_j max(||e_j + o_j||, ||e_j - o_j||)` over the points `e_j`, `o_j`
@@ -601,8 +613,7 @@ fn max_pair_point_norm<const F: bool, const L: usize>(
     o: &[[f64; L]],
     dim: usize,
 ) -> [f64; L] {
-    let mut best = [0.0f64; L];
-    let mut bad = [false; L];
+    let (mut best, mut nan) = ([0.0f64; L], [0.0f64; L]);
     for (pe, po) in e.chunks_exact(dim).zip(o.chunks_exact(dim)) {
         let (mut qp, mut qm) = ([0.0f64; L], [0.0f64; L]);
         for (ve, vo) in pe.iter().zip(po) {
@@ -612,12 +623,24 @@ fn max_pair_point_norm<const F: bool, const L: usize>(
                 qm[l] = madd::<F>(m, m, qm[l]);
             }
         }
+        // Selects only (whole-vector max and NaN flag): `qp + qm` is NaN iff either is.
         for l in 0..L {
-            bad[l] |= qp[l].is_nan() || qm[l].is_nan();
-            best[l] = best[l].max(qp[l]).max(qm[l]);
+            let q = if qp[l] > qm[l] { qp[l] } else { qm[l] };
+            best[l] = if q > best[l] { q } else { best[l] };
+            nan[l] = if (qp[l] + qm[l]).is_nan() {
+                1.0
+            } else {
+                nan[l]
+            };
         }
     }
-    std::array::from_fn(|l| if bad[l] { f64::NAN } else { best[l].sqrt() })
+    std::array::from_fn(|l| {
+        if nan[l] != 0.0 {
+            f64::NAN
+        } else {
+            best[l].sqrt()
+        }
+    })
 }
 
 #[cfg(test)]
