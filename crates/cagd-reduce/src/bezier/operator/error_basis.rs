@@ -83,14 +83,14 @@ impl ErrorBasis {
         // G = U^T R, row-major r x n1.
         // G = U^T R and U G through the GEMM kernel (the rounding bounds below hold for
         // any order of the sums).
-        let rm = DMatrix::from_row_slice(n1, n1, &r_mat);
-        let um = DMatrix::from_row_slice(n1, rank, &u);
-        let gm = um.transpose() * &rm;
-        let ugm = &um * &gm;
-        let g: Vec<f64> = (0..rank)
-            .flat_map(|k| (0..n1).map(move |j| (k, j)))
-            .map(|(k, j)| gm[(k, j)])
-            .collect();
+        // Row-major data read as column-major is the transpose: `R^T` and `U^T` need no
+        // copy, `G^T = R^T U` is `G` row-major and `G^T U^T` is `U G` row-major.
+        let rt = DMatrix::from_column_slice(n1, n1, &r_mat);
+        let ut = DMatrix::from_column_slice(rank, n1, &u);
+        let gt = rt * ut.transpose();
+        let ugm = &gt * &ut;
+        let g: Vec<f64> = gt.as_slice().to_vec();
+        let ugm = ugm.as_slice();
         let gsum: Vec<f64> = g
             .chunks_exact(n1)
             .map(|row| row.iter().map(|x| x.abs()).sum())
@@ -100,7 +100,7 @@ impl ErrorBasis {
             let urow = &u[i * rank..(i + 1) * rank];
             let mut row = 0.0;
             for j in 0..n1 {
-                row += (r_mat[i * n1 + j] - ugm[(i, j)]).abs();
+                row += (r_mat[i * n1 + j] - ugm[i * n1 + j]).abs();
             }
             measured = measured.max(row);
             ug = ug.max(urow.iter().zip(&gsum).map(|(x, s)| x.abs() * s).sum());
@@ -200,14 +200,33 @@ fn symmetric_range(r: &[f64], n: usize, m: usize, top: f64) -> (Vec<f64>, usize,
 
 /// `R^ = I - E A` in `f64`, row-major `(n+1) x (n+1)`, with the elevation coefficients
 /// `E_il = C(m,l) C(n-m,i-l) / C(n,i)` computed once (each within `3 eps` of itself: the
-/// binomials are exact in `u128`, then two roundings and a quotient).
+/// binomials are exact in `u128`, then two roundings and a quotient). When every
+/// `C(n, i)` is below `2^53` (`n <= 55`) the binomials are exact in `f64` as well and the
+/// products `C(m,l) C(n-m,i-l) <= C(n,i)` too (Vandermonde), so the coefficient is the
+/// same quotient of the same two numbers, from three small tables instead of a `u128`
+/// product and two conversions per entry.
 fn residual_matrix(a: &[f64], n: usize, m: usize) -> Vec<f64> {
     let (n1, r) = (n + 1, n - m);
     let mut out = vec![0.0; n1 * n1];
+    let exact_f64 = cagd_core::binomial(n, n / 2) < 1u128 << 53;
+    let table =
+        |k: usize| -> Vec<f64> { (0..=k).map(|i| cagd_core::binomial(k, i) as f64).collect() };
+    let (bm, br, bn) = if exact_f64 {
+        (table(m), table(r), table(n))
+    } else {
+        (Vec::new(), Vec::new(), Vec::new())
+    };
     for i in 0..n1 {
         let band = i.saturating_sub(r)..=i.min(m);
         let coef: Vec<(usize, f64)> = band
-            .map(|l| (l, cagd_core::kernel::elevation_coefficient(m, r, i, l)))
+            .map(|l| {
+                let e = if exact_f64 {
+                    bm[l] * br[i - l] / bn[i]
+                } else {
+                    cagd_core::kernel::elevation_coefficient(m, r, i, l)
+                };
+                (l, e)
+            })
             .collect();
         let row = &mut out[i * n1..(i + 1) * n1];
         for (l, e) in &coef {
@@ -347,6 +366,34 @@ mod split_tests {
     use super::super::operator;
     use super::*;
     use crate::Method;
+
+    /// The residual matrix from the `f64` binomial tables equals the one from the `u128`
+    /// elevation coefficients bit for bit (the same quotient of the same numbers).
+    #[test]
+    fn residual_matrix_tables_equal_the_exact_coefficients() {
+        for (n, m) in [(4, 3), (10, 5), (30, 15), (55, 20), (56, 30), (64, 32)] {
+            let a: Vec<f64> = (0..(m + 1) * (n + 1))
+                .map(|i| (i as f64 * 0.37).sin())
+                .collect();
+            let got = residual_matrix(&a, n, m);
+            let (n1, r) = (n + 1, n - m);
+            for i in 0..n1 {
+                for j in 0..n1 {
+                    let mut x = 0.0;
+                    for l in i.saturating_sub(r)..=i.min(m) {
+                        let e = cagd_core::kernel::elevation_coefficient(m, r, i, l);
+                        x += e * a[l * n1 + j];
+                    }
+                    let want = f64::from(u8::from(i == j)) - x;
+                    assert_eq!(
+                        got[i * n1 + j].to_bits(),
+                        want.to_bits(),
+                        "({n},{m}) {i} {j}"
+                    );
+                }
+            }
+        }
+    }
 
     /// A method that is not symmetric under reversal (different end orders) takes the
     /// general route, and its residual is as small.

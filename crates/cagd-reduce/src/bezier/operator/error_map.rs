@@ -88,24 +88,30 @@ impl BoundMap {
         let sec = (1.0 / angle.cos()) * (1.0 + 8.0 * f64::EPSILON);
         let binom: Vec<f64> = (0..=n).map(|i| cagd_core::binomial_f64(n, i)).collect();
         let (mut tp, mut sp) = (vec![1.0; n + 1], vec![1.0; n + 1]);
-        // The Bernstein values at the nodes, then V = B U through the GEMM kernel.
-        let mut bern = DMatrix::zeros(rows, n + 1);
-        for j in 0..rows {
+        // The Bernstein values at the nodes (`B^T`, column `j` for node `j`), then `V^T =
+        // U^T B^T` through the GEMM kernel: column-major, so `V` row-major.
+        let mut bern_t = vec![0.0; rows * (n + 1)];
+        for (j, col) in bern_t.chunks_exact_mut(n + 1).enumerate() {
             let t = node(j, big_n);
             let s = 1.0 - t;
-            for i in 1..=n {
-                tp[i] = tp[i - 1] * t;
-                sp[i] = sp[i - 1] * s;
+            let (mut pt, mut ps) = (1.0, 1.0);
+            for (x, y) in tp.iter_mut().zip(sp.iter_mut()) {
+                (*x, *y) = (pt, ps);
+                pt *= t;
+                ps *= s;
             }
-            for i in 0..=n {
-                bern[(j, i)] = binom[i] * tp[i] * sp[n - i];
+            // b_i = C(n,i) t^i s^(n-i), the same products in the same order as before.
+            for ((b, c), (x, y)) in col
+                .iter_mut()
+                .zip(&binom)
+                .zip(tp.iter().zip(sp.iter().rev()))
+            {
+                *b = c * x * y;
             }
         }
-        let vm = bern * DMatrix::from_row_slice(n + 1, r, &basis.u);
-        let v: Vec<f64> = (0..rows)
-            .flat_map(|j| (0..r).map(move |k| (j, k)))
-            .map(|(j, k)| vm[(j, k)])
-            .collect();
+        let vt = DMatrix::from_column_slice(r, n + 1, &basis.u)
+            * DMatrix::from_column_slice(n + 1, rows, &bern_t);
+        let v: Vec<f64> = vt.as_slice().to_vec();
         let umax: Vec<f64> = (0..r)
             .map(|k| {
                 (0..=n)
