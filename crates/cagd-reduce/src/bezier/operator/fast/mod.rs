@@ -57,13 +57,14 @@ pub(crate) struct Built {
 
 /// The rows and terms of `method` in base arithmetic `B` (`None` for a method without a
 /// fast route: none today, kept for methods added later); `mixed`: the truncations' back
-/// conversion in `f64` (see [`truncated`]).
+/// conversion in `f64` (see [`truncated`]), and Farin's steps in their split form (see
+/// `steps::step`).
 fn rows_of<B: Base>(method: Method, n: usize, m: usize, mixed: bool) -> Option<Rows<B>> {
     if method == Method::Eck {
         return Some(eck(n, m, mixed));
     }
     if method.is_one_degree() {
-        return Some(steps::stepwise(method, n, m));
+        return Some(steps::stepwise(method, n, m, mixed));
     }
     let cheb = |r: i32, p: i32| {
         let factor = super::chebyshev::bound_factor_up(r, p);
@@ -211,7 +212,7 @@ pub(crate) fn build(method: Method, n: usize, m: usize) -> Option<Built> {
     }
     // Double-word with the back conversion in `f64` first (for a truncation), then all in
     // double-word.
-    let tries: &[bool] = if truncation_of(method).is_some() {
+    let tries: &[bool] = if truncation_of(method).is_some() || method == Method::Farin {
         &[true, false]
     } else {
         &[false]
@@ -221,7 +222,11 @@ pub(crate) fn build(method: Method, n: usize, m: usize) -> Option<Built> {
         // The mixed route only at the rounding level (`strict`): the error-curve basis of
         // the bounds (`error_basis.rs`) finds its rank at that level, and a less accurate
         // operator would only loosen the bounds.
-        let tol = if mixed { strict } else { TOLERANCE };
+        let tol = if mixed && truncation_of(method).is_some() {
+            strict
+        } else {
+            TOLERANCE
+        };
         if let Some(b) = finish(&rows, &terms, OperatorRoute::DoubleWord, tol) {
             return Some(b);
         }

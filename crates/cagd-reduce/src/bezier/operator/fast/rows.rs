@@ -92,17 +92,21 @@ impl<B: Base> Row<B> {
         }
     }
 
-    /// The entries rounded to `f64` and a rigorous bound of `sum_c |val_c - exact_c|` (the
-    /// final rounding and the rounding of the error computation included, as
-    /// [`Tracked::err`]).
+    /// The entries rounded to `f64` and a rigorous bound of `sum_c |val_c - exact_c|`: the
+    /// final rounding (`B::TO_F64 |val|`, with a margin for `|val|` against `|v|`; none in
+    /// `f64`) and the rounding of the error computation itself, a relative
+    /// `(1 + 2u)^D - 1` after a chain of `D` operations on the (non-negative) error terms,
+    /// below `1e-9` for `D <= 10^6` (a build's chains are at most about `10^5` long at
+    /// degree 64), allowed as `1e-6`. ([`Tracked::err`] doubles instead, for its scalars.)
     pub(crate) fn rounded(&self) -> (Vec<f64>, f64) {
         let v: Vec<f64> = self.v.iter().map(|x| x.to_f64()).collect();
+        let round = B::TO_F64 * (1.0 + 1e-6);
         let err: f64 = v
             .iter()
             .zip(&self.e)
-            .map(|(x, e)| 2.0 * (e + f64::EPSILON * x.abs()))
+            .map(|(x, e)| e + round * x.abs())
             .sum();
-        (v, err)
+        (v, err * (1.0 + 1e-6))
     }
 }
 
