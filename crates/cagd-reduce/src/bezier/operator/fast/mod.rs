@@ -56,7 +56,8 @@ pub(crate) struct Built {
 }
 
 /// The rows and terms of `method` in base arithmetic `B` (`None` for a method without a
-/// fast route: none today, kept for methods added later); `mixed`: the truncations' back
+/// fast route: none today, kept for methods added later; or for an `f64` stepwise attempt
+/// given up early, see `steps::stepwise`); `mixed`: the truncations' back
 /// conversion in `f64` (see [`truncated`]), and Farin's steps in their split form (see
 /// `steps::step`).
 fn rows_of<B: Base>(method: Method, n: usize, m: usize, mixed: bool) -> Option<Rows<B>> {
@@ -64,7 +65,11 @@ fn rows_of<B: Base>(method: Method, n: usize, m: usize, mixed: bool) -> Option<R
         return Some(eck(n, m, mixed));
     }
     if method.is_one_degree() {
-        return Some(steps::stepwise(method, n, m, mixed));
+        // The `f64` attempt gives up once a step's proven error is 4 times the strictest
+        // goal (`build`'s `strict`), relative to that step's rows.
+        #[allow(clippy::cast_precision_loss, reason = "n <= 64")]
+        let give_up = B::GIVE_UP_EARLY.then(|| 8.0 * (n as f64 + 3.0) * f64::EPSILON);
+        return steps::stepwise(method, n, m, mixed, give_up);
     }
     let cheb = |r: i32, p: i32| {
         let factor = super::chebyshev::bound_factor_up(r, p);
@@ -204,10 +209,11 @@ pub(crate) fn build(method: Method, n: usize, m: usize) -> Option<Built> {
             && truncation::f64_hopeless(family, nn, if terms { nn } else { mm }, tol)
     });
     if !skip_f64 {
-        let (rows, terms) = rows_of::<f64>(method, n, m, false)?;
-        let tol = if terms.is_empty() { TOLERANCE } else { strict };
-        if let Some(b) = finish(&rows, &terms, OperatorRoute::F64, tol) {
-            return Some(b);
+        if let Some((rows, terms)) = rows_of::<f64>(method, n, m, false) {
+            let tol = if terms.is_empty() { TOLERANCE } else { strict };
+            if let Some(b) = finish(&rows, &terms, OperatorRoute::F64, tol) {
+                return Some(b);
+            }
         }
     }
     // Double-word with the back conversion in `f64` first (for a truncation), then all in

@@ -40,6 +40,59 @@ fn delta_k<B: Base>(s: &[Row<B>]) -> Row<B> {
     f
 }
 
+/// `Delta^k` of reversal-symmetric rows (`s_(k-i)` the reversed `s_i`): with
+/// `sigma_(k-i) = (-1)^k sigma_i`, it is `h + (-1)^k reversed(h)` for
+/// `h = sum_(i < k/2) sigma_i s_i` (plus half the middle term for even `k`, whose row is
+/// its own mirror image): half the row updates of [`delta_k`].
+fn delta_k_symmetric<B: Base>(s: &[Row<B>]) -> Row<B> {
+    let k = s.len() - 1;
+    let mut h = Row::zeros(s[0].v.len());
+    for (i, row) in s.iter().enumerate().take(k.div_ceil(2)) {
+        super::rows::axpy(&mut h, sign_binom(k, i), row);
+    }
+    if k % 2 == 0 {
+        super::rows::axpy(
+            &mut h,
+            sign_binom(k, k / 2).mul(Tracked::of(0.5)),
+            &s[k / 2],
+        );
+    }
+    let sign = if k % 2 == 0 { 1.0 } else { -1.0 };
+    let mut out = h.clone();
+    super::rows::axpy(&mut out, Tracked::of(sign), &h.reversed());
+    out
+}
+
+/// `Delta^k` of a step's input rows, computed on first use and shared by the step and its
+/// bound term.
+pub(crate) struct Delta<'a, B> {
+    s: &'a [Row<B>],
+    symmetric: bool,
+    cell: std::cell::OnceCell<Row<B>>,
+}
+
+impl<'a, B: Base> Delta<'a, B> {
+    /// For the rows `s` (`symmetric`: reversal-symmetric, see [`delta_k_symmetric`]).
+    pub(crate) fn new(s: &'a [Row<B>], symmetric: bool) -> Self {
+        Self {
+            s,
+            symmetric,
+            cell: std::cell::OnceCell::new(),
+        }
+    }
+
+    /// The row `Delta^k s`.
+    pub(crate) fn get(&self) -> &Row<B> {
+        self.cell.get_or_init(|| {
+            if self.symmetric {
+                delta_k_symmetric(self.s)
+            } else {
+                delta_k(self.s)
+            }
+        })
+    }
+}
+
 /// Forward recursion `P^I_i = (k s_i - i P^I_{i-1}) / (k - i)`, `i = 0..=last`.
 fn forward<B: Base>(s: &[Row<B>], last: usize) -> Vec<Row<B>> {
     let k = s.len() - 1;
@@ -99,7 +152,13 @@ fn mirror<B: Base>(rows: &mut Vec<Row<B>>, n: usize) {
 /// Farin's step in its split form ([`farin`]) rather than the seed's direct one (the split
 /// form is the more accurate in double-word up to degree about 50, the direct one at
 /// `(64,10)`; exact arithmetic gives the same).
-pub(crate) fn step<B: Base>(method: Method, s: &[Row<B>], symmetric: bool, split: bool) -> Step<B> {
+pub(crate) fn step<B: Base>(
+    method: Method,
+    s: &[Row<B>],
+    delta: &Delta<'_, B>,
+    symmetric: bool,
+    split: bool,
+) -> Step<B> {
     let k = s.len() - 1;
     let n = k - 1;
     match method {
@@ -140,7 +199,7 @@ pub(crate) fn step<B: Base>(method: Method, s: &[Row<B>], symmetric: bool, split
             }
         }
         Method::Farin if split => Step {
-            rows: farin(s, symmetric),
+            rows: farin(s, delta.get(), symmetric),
             terms: Vec::new(),
         },
         Method::Farin => {
@@ -171,11 +230,11 @@ pub(crate) fn step<B: Base>(method: Method, s: &[Row<B>], symmetric: bool, split
                 2f64.powi(-(2 * i32::try_from(n).unwrap_or(0) + 1)) * (1.0 + 4.0 * f64::EPSILON);
             Step {
                 rows,
-                terms: vec![(coef, delta_k(s))],
+                terms: vec![(coef, delta.get().clone())],
             }
         }
         Method::Perturb => {
-            let f = delta_k(s);
+            let f = delta.get().clone();
             let d = Tracked::binom(2 * to_i(k), to_i(k)).sub(Tracked::of(2.0));
             // Symmetric: only `pbar_0..=pbar_(n/2)` are read (the forward half of the
             // inverse elevation); the rest stay empty.
@@ -205,7 +264,7 @@ pub(crate) fn step<B: Base>(method: Method, s: &[Row<B>], symmetric: bool, split
             }
         }
         Method::PerturbG1 { l1, l2 } => {
-            let f = delta_k(s);
+            let f = delta.get().clone();
             let ki = to_i(k);
             let sd = Tracked::binom(2 * ki, ki).sub(Tracked::small(2 + 2 * ki * ki));
             let (l1, l2) = (Tracked::of(l1), Tracked::of(l2));
@@ -250,11 +309,10 @@ pub(crate) fn step<B: Base>(method: Method, s: &[Row<B>], symmetric: bool, split
 /// recursion damps rounding (`i < k - i`), and `Q_i = P^II_i - ((n-i)/n) (-1)^(n-i) delta /
 /// C(n,i)` above, where the backward one does: no recursion runs into its amplifying half
 /// (the direct form lost 9 digits in `f64` at `(30,15)`).
-fn farin<B: Base>(s: &[Row<B>], symmetric: bool) -> Vec<Row<B>> {
+fn farin<B: Base>(s: &[Row<B>], delta: &Row<B>, symmetric: bool) -> Vec<Row<B>> {
     let k = s.len() - 1;
     let n = k - 1;
     let half = n / 2;
-    let delta = delta_k(s);
     let mut rows = forward(s, half);
     if half < n && !symmetric {
         rows.extend(backward(s, half + 1));
@@ -269,7 +327,7 @@ fn farin<B: Base>(s: &[Row<B>], symmetric: bool) -> Vec<Row<B>> {
         if ((n - i) % 2 == 1) == (i <= half) {
             c = c.neg();
         }
-        super::rows::axpy(row, c, &delta);
+        super::rows::axpy(row, c, delta);
     }
     if symmetric {
         mirror(&mut rows, n);
@@ -347,7 +405,7 @@ pub(crate) fn residual_coef<B: Base>(method: Method, k: usize) -> Option<f64> {
             }
         })
         .collect();
-    let q: Vec<Tracked<B>> = step(method, &e0, false, true)
+    let q: Vec<Tracked<B>> = step(method, &e0, &Delta::new(&e0, false), false, true)
         .rows
         .iter()
         .map(|r| r.at(0))
@@ -391,8 +449,16 @@ fn residual_coef_cached(method: Method, k: usize) -> Option<f64> {
 
 /// The stepwise operator `n -> m`: rows (`m + 1`) and the summed own-bound terms (dropped,
 /// like the exact route, if one step has none).
-/// (`split`: see [`step`].)
-pub(crate) fn stepwise<B: Base>(method: Method, n: usize, m: usize, split: bool) -> Rows<B> {
+/// (`split`: see [`step`].) `give_up`: `None` once the proven error of a step's rows
+/// exceeds this fraction of their inf-norm (the later steps compound it, so the route would
+/// be refused anyway: a performance choice for the `f64` attempt only).
+pub(crate) fn stepwise<B: Base>(
+    method: Method,
+    n: usize,
+    m: usize,
+    split: bool,
+    give_up: Option<f64>,
+) -> Option<Rows<B>> {
     let mut s = identity::<B>(n + 1);
     // The unit rows are reversal-symmetric, and so is every step's output (see [`mirror`]).
     let symmetric = match method {
@@ -402,13 +468,14 @@ pub(crate) fn stepwise<B: Base>(method: Method, n: usize, m: usize, split: bool)
     let mut terms = Vec::new();
     let mut valid = true;
     for k in ((m + 1)..=n).rev() {
-        let st = step(method, &s, symmetric, split);
+        let delta = Delta::new(&s, symmetric);
+        let st = step(method, &s, &delta, symmetric, split);
         if valid {
             if st.terms.is_empty() {
                 // O(k) work: always in double-word, so the coefficient is tight even when
                 // it is tiny beside the step's entries.
                 match residual_coef_cached(method, k) {
-                    Some(c) => terms.push((c, delta_k(&s))),
+                    Some(c) => terms.push((c, delta.get().clone())),
                     None => valid = false,
                 }
             } else {
@@ -416,9 +483,19 @@ pub(crate) fn stepwise<B: Base>(method: Method, n: usize, m: usize, split: bool)
             }
         }
         s = st.rows;
+        if let Some(limit) = give_up {
+            let (mut err, mut norm) = (0.0f64, 0.0f64);
+            for row in &s {
+                err = err.max(row.e.iter().sum());
+                norm = norm.max(row.v.iter().map(|x| x.to_f64().abs()).sum());
+            }
+            if !(err <= limit * norm) {
+                return None;
+            }
+        }
     }
     if !valid {
         terms.clear();
     }
-    (s, terms)
+    Some((s, terms))
 }

@@ -283,7 +283,10 @@ fn diag_route_errors() {
         for (n, m) in [(10, 5), (15, 10), (20, 10), (30, 15), (64, 32)] {
             let mut line = format!("{method:?} ({n},{m})");
             for mixed in [false] {
-                let (rows, terms) = rows_of::<f64>(method, n, m, mixed).unwrap();
+                let Some((rows, terms)) = rows_of::<f64>(method, n, m, mixed) else {
+                    println!("{line} f64: given up");
+                    continue;
+                };
                 let b = finish(&rows, &terms, OperatorRoute::F64, 1e300).unwrap();
                 let norm = b
                     .matrix

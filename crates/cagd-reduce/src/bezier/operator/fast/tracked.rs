@@ -15,6 +15,9 @@ pub(crate) trait Base: Copy {
     const U: f64;
     /// Bound of `|to_f64(x) - x| / |x|` (`0` for `f64` itself: no final rounding).
     const TO_F64: f64;
+    /// Whether a stepwise build in this arithmetic gives up early when its proven error
+    /// runs away (the `f64` attempt, which has a next route to fall back to).
+    const GIVE_UP_EARLY: bool = false;
     /// An `f64`, exactly.
     fn of(x: f64) -> Self;
     /// A `u128` rounded, with its absolute rounding error bound.
@@ -49,6 +52,7 @@ pub(crate) trait Base: Copy {
 impl Base for f64 {
     const U: f64 = f64::EPSILON / 2.0;
     const TO_F64: f64 = 0.0;
+    const GIVE_UP_EARLY: bool = true;
     fn of(x: f64) -> Self {
         x
     }
