@@ -66,9 +66,16 @@ fn rows_of<B: Base>(method: Method, n: usize, m: usize, mixed: bool) -> Option<R
     }
     if method.is_one_degree() {
         // The `f64` attempt gives up once a step's proven error is 4 times the strictest
-        // goal (`build`'s `strict`), relative to that step's rows.
+        // goal (`build`'s `strict`), relative to that step's rows; Farin's split form in
+        // double-word at 4 times the goal (its direct form is tried next).
         #[allow(clippy::cast_precision_loss, reason = "n <= 64")]
-        let give_up = B::GIVE_UP_EARLY.then(|| 8.0 * (n as f64 + 3.0) * f64::EPSILON);
+        let give_up = if B::GIVE_UP_EARLY {
+            Some(8.0 * (n as f64 + 3.0) * f64::EPSILON)
+        } else if mixed {
+            Some(4.0 * TOLERANCE)
+        } else {
+            None
+        };
         return steps::stepwise(method, n, m, mixed, give_up);
     }
     let cheb = |r: i32, p: i32| {

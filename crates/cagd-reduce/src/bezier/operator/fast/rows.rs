@@ -143,6 +143,21 @@ pub(crate) fn axpy<B: Base>(y: &mut Row<B>, a: Tracked<B>, x: &Row<B>) {
     axpy_window(y, a, x, 0);
 }
 
+/// `h + reversed(h)` (`minus`: `h - reversed(h)`), entry `c` from `h_c` and `h_(len-1-c)`
+/// (their error bounds added, plus the rounding of the sum).
+pub(crate) fn plus_mirror<B: Base>(h: &Row<B>, minus: bool) -> Row<B> {
+    let len = h.v.len();
+    let u = ru::<B>();
+    let mut out = Row::zeros(len);
+    for c in 0..len {
+        let (x, y) = (h.v[c], h.v[len - 1 - c]);
+        let z = if minus { x.sub(y) } else { x.add(y) };
+        out.v[c] = z;
+        out.e[c] = h.e[c] + h.e[len - 1 - c] + u * mag(z);
+    }
+    out
+}
+
 /// `a x + b y`.
 pub(crate) fn lin2<B: Base>(a: Tracked<B>, x: &Row<B>, b: Tracked<B>, y: &Row<B>) -> Row<B> {
     let mut out = y.clone();
@@ -161,20 +176,18 @@ pub(crate) fn lin2<B: Base>(a: Tracked<B>, x: &Row<B>, b: Tracked<B>, y: &Row<B>
 pub(crate) fn lin2_exact<B: Base>(a: f64, x: &Row<B>, b: f64, y: &Row<B>, d: f64) -> Row<B> {
     let (ab, bb, db) = (B::of(a), B::of(b), B::of(d));
     let (aa, ba, di, u) = (a.abs(), b.abs(), 1.0 / d.abs(), ru::<B>());
-    let len = x.v.len();
-    let mut out = Row {
-        v: Vec::with_capacity(len),
-        e: Vec::with_capacity(len),
-    };
-    for (((xv, xe), yv), ye) in x.v.iter().zip(&x.e).zip(&y.v).zip(&y.e) {
+    // Written into zeroed arrays (no `push`: a straight loop the compiler can vectorise).
+    let len = x.v.len().min(y.v.len());
+    let mut out = Row::zeros(len);
+    let outs = out.v.iter_mut().zip(out.e.iter_mut());
+    let ins = x.v.iter().zip(&x.e).zip(y.v.iter().zip(&y.e));
+    for ((ov, oe), ((xv, xe), (yv, ye))) in outs.zip(ins) {
         let (s, t) = (ab.mul(*xv), bb.mul(*yv));
         let q = s.add(t);
         let z = q.div(db);
-        out.v.push(z);
-        out.e.push(
-            ((aa * xe + ba * ye + u * (mag(s) + mag(t) + mag(q))) * di + u * mag(z))
-                * (1.0 + 1e-12),
-        );
+        *ov = z;
+        *oe = ((aa * xe + ba * ye + u * (mag(s) + mag(t) + mag(q))) * di + u * mag(z))
+            * (1.0 + 1e-12);
     }
     out
 }
