@@ -231,7 +231,10 @@ pub(crate) fn build(method: Method, n: usize, m: usize) -> Option<Built> {
         &[false]
     };
     for &mixed in tries {
-        let (rows, terms) = rows_of::<dd::Dd>(method, n, m, mixed)?;
+        // (`None`: Farin's split form given up early; the direct form is next.)
+        let Some((rows, terms)) = rows_of::<dd::Dd>(method, n, m, mixed) else {
+            continue;
+        };
         // The mixed route only at the rounding level (`strict`): the error-curve basis of
         // the bounds (`error_basis.rs`) finds its rank at that level, and a less accurate
         // operator would only loosen the bounds.

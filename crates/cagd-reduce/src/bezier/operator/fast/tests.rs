@@ -202,6 +202,20 @@ fn no_exact_fallback_at_degree_64() {
     }
 }
 
+/// Farin at `(64,10)`: its split form gives up in double-word, the direct form is proven
+/// (a regression: the give-up once ended the fast routes, and the exact route took 3 s).
+#[test]
+fn farin_falls_back_to_the_direct_form_not_the_exact_route() {
+    let b = build(Method::Farin, 64, 10).expect("a fast route");
+    assert_eq!(b.route, OperatorRoute::DoubleWord);
+    let norm = b
+        .matrix
+        .chunks_exact(65)
+        .map(|r| r.iter().map(|x| x.abs()).sum::<f64>())
+        .fold(0.0, f64::max);
+    assert!(b.error <= TOLERANCE * norm);
+}
+
 #[test]
 fn every_method_has_a_fast_route_and_the_exact_one_on_request() {
     for method in methods() {
