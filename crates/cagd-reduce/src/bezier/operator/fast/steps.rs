@@ -347,7 +347,13 @@ fn piegl_tiller<B: Base>(s: &[Row<B>], symmetric: bool) -> Step<B> {
     let o = (to_i(m) - 1).div_euclid(2);
     let (r, p) = (i32::try_from(o).unwrap_or(0), i32::try_from(o).unwrap_or(0));
     let (left, right) = if symmetric {
-        let (left, _) = end_points(k, m, r, -1, s);
+        // By one degree (`n - m = 1`), eq. 14.5.10 is the forward recursion:
+        // `b_(j-1,j) = j/k`, `b_(j,j) = (k-j)/k`, so `Q_j = (k s_j - j Q_(j-1)) / (k - j)`.
+        let left = if o >= 0 {
+            forward(s, idx(o))
+        } else {
+            Vec::new()
+        };
         let right = left.iter().rev().map(Row::reversed).collect();
         (left, right)
     } else {
