@@ -56,14 +56,27 @@ pub(crate) struct Built {
 }
 
 /// The rows and terms of `method` in base arithmetic `B` (`None` for a method without a
-/// fast route: none today, kept for methods added later); `mixed`: the truncations' back
-/// conversion in `f64` (see [`truncated`]).
+/// fast route: none today, kept for methods added later; or for an `f64` stepwise attempt
+/// given up early, see `steps::stepwise`); `mixed`: the truncations' back
+/// conversion in `f64` (see [`truncated`]), and Farin's steps in their split form (see
+/// `steps::step`).
 fn rows_of<B: Base>(method: Method, n: usize, m: usize, mixed: bool) -> Option<Rows<B>> {
     if method == Method::Eck {
         return Some(eck(n, m, mixed));
     }
     if method.is_one_degree() {
-        return Some(steps::stepwise(method, n, m));
+        // The `f64` attempt gives up once a step's proven error is 4 times the strictest
+        // goal (`build`'s `strict`), relative to that step's rows; Farin's split form in
+        // double-word at 4 times the goal (its direct form is tried next).
+        #[allow(clippy::cast_precision_loss, reason = "n <= 64")]
+        let give_up = if B::GIVE_UP_EARLY {
+            Some(8.0 * (n as f64 + 3.0) * f64::EPSILON)
+        } else if mixed {
+            Some(4.0 * TOLERANCE)
+        } else {
+            None
+        };
+        return steps::stepwise(method, n, m, mixed, give_up);
     }
     let cheb = |r: i32, p: i32| {
         let factor = super::chebyshev::bound_factor_up(r, p);
@@ -203,25 +216,33 @@ pub(crate) fn build(method: Method, n: usize, m: usize) -> Option<Built> {
             && truncation::f64_hopeless(family, nn, if terms { nn } else { mm }, tol)
     });
     if !skip_f64 {
-        let (rows, terms) = rows_of::<f64>(method, n, m, false)?;
-        let tol = if terms.is_empty() { TOLERANCE } else { strict };
-        if let Some(b) = finish(&rows, &terms, OperatorRoute::F64, tol) {
-            return Some(b);
+        if let Some((rows, terms)) = rows_of::<f64>(method, n, m, false) {
+            let tol = if terms.is_empty() { TOLERANCE } else { strict };
+            if let Some(b) = finish(&rows, &terms, OperatorRoute::F64, tol) {
+                return Some(b);
+            }
         }
     }
     // Double-word with the back conversion in `f64` first (for a truncation), then all in
     // double-word.
-    let tries: &[bool] = if truncation_of(method).is_some() {
+    let tries: &[bool] = if truncation_of(method).is_some() || method == Method::Farin {
         &[true, false]
     } else {
         &[false]
     };
     for &mixed in tries {
-        let (rows, terms) = rows_of::<dd::Dd>(method, n, m, mixed)?;
+        // (`None`: Farin's split form given up early; the direct form is next.)
+        let Some((rows, terms)) = rows_of::<dd::Dd>(method, n, m, mixed) else {
+            continue;
+        };
         // The mixed route only at the rounding level (`strict`): the error-curve basis of
         // the bounds (`error_basis.rs`) finds its rank at that level, and a less accurate
         // operator would only loosen the bounds.
-        let tol = if mixed { strict } else { TOLERANCE };
+        let tol = if mixed && truncation_of(method).is_some() {
+            strict
+        } else {
+            TOLERANCE
+        };
         if let Some(b) = finish(&rows, &terms, OperatorRoute::DoubleWord, tol) {
             return Some(b);
         }

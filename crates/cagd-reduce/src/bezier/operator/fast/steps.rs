@@ -40,6 +40,56 @@ fn delta_k<B: Base>(s: &[Row<B>]) -> Row<B> {
     f
 }
 
+/// `Delta^k` of reversal-symmetric rows (`s_(k-i)` the reversed `s_i`): with
+/// `sigma_(k-i) = (-1)^k sigma_i`, it is `h + (-1)^k reversed(h)` for
+/// `h = sum_(i < k/2) sigma_i s_i` (plus half the middle term for even `k`, whose row is
+/// its own mirror image): half the row updates of [`delta_k`].
+fn delta_k_symmetric<B: Base>(s: &[Row<B>]) -> Row<B> {
+    let k = s.len() - 1;
+    let mut h = Row::zeros(s[0].v.len());
+    for (i, row) in s.iter().enumerate().take(k.div_ceil(2)) {
+        super::rows::axpy(&mut h, sign_binom(k, i), row);
+    }
+    if k % 2 == 0 {
+        super::rows::axpy(
+            &mut h,
+            sign_binom(k, k / 2).mul(Tracked::of(0.5)),
+            &s[k / 2],
+        );
+    }
+    super::rows::plus_mirror(&h, k % 2 == 1)
+}
+
+/// `Delta^k` of a step's input rows, computed on first use and shared by the step and its
+/// bound term.
+pub(crate) struct Delta<'a, B> {
+    s: &'a [Row<B>],
+    symmetric: bool,
+    cell: std::cell::OnceCell<Row<B>>,
+}
+
+impl<'a, B: Base> Delta<'a, B> {
+    /// For the rows `s` (`symmetric`: reversal-symmetric, see [`delta_k_symmetric`]).
+    pub(crate) fn new(s: &'a [Row<B>], symmetric: bool) -> Self {
+        Self {
+            s,
+            symmetric,
+            cell: std::cell::OnceCell::new(),
+        }
+    }
+
+    /// The row `Delta^k s`.
+    pub(crate) fn get(&self) -> &Row<B> {
+        self.cell.get_or_init(|| {
+            if self.symmetric {
+                delta_k_symmetric(self.s)
+            } else {
+                delta_k(self.s)
+            }
+        })
+    }
+}
+
 /// Forward recursion `P^I_i = (k s_i - i P^I_{i-1}) / (k - i)`, `i = 0..=last`.
 fn forward<B: Base>(s: &[Row<B>], last: usize) -> Vec<Row<B>> {
     let k = s.len() - 1;
@@ -80,11 +130,50 @@ pub(crate) fn inverse_elevation<B: Base>(pbar: &[Row<B>]) -> Vec<Row<B>> {
     out
 }
 
+/// Rows `half + 1..=n` as the mirror images of rows `n - i` (`rows` holds `0..=half`): the
+/// output of a reversal-symmetric step on a reversal-symmetric input (`s_(k-j)` the reversed
+/// `s_j`, as the unit rows are) is reversal-symmetric in exact arithmetic, so the mirrored
+/// error bounds hold for the mirrored exact rows.
+fn mirror<B: Base>(rows: &mut Vec<Row<B>>, n: usize) {
+    let half = rows.len() - 1;
+    for i in (half + 1)..=n {
+        let r = rows[n - i].reversed();
+        rows.push(r);
+    }
+}
+
 /// The step `k -> k-1` of a one-degree method on the rows `s` (`k + 1` of them).
-pub(crate) fn step<B: Base>(method: Method, s: &[Row<B>]) -> Step<B> {
+/// `symmetric`: `s` is reversal-symmetric (`s_(k-j)` the reversed `s_j`: the rows of a
+/// stepwise reduction of the unit rows), so a reversal-symmetric method (every one here but
+/// G1 with `l1 != l2`) computes the first half of its rows and mirrors the rest. `split`:
+/// Farin's step in its split form ([`farin`]) rather than the seed's direct one (the split
+/// form is the more accurate in double-word up to degree about 50, the direct one at
+/// `(64,10)`; exact arithmetic gives the same).
+pub(crate) fn step<B: Base>(
+    method: Method,
+    s: &[Row<B>],
+    delta: &Delta<'_, B>,
+    symmetric: bool,
+    split: bool,
+) -> Step<B> {
     let k = s.len() - 1;
     let n = k - 1;
     match method {
+        Method::Forrest if symmetric => {
+            // P^II_half is the mirror image of P^I_half.
+            let half = n / 2;
+            let mut rows = forward(s, half);
+            if n % 2 == 0 {
+                if let Some(f) = rows.pop() {
+                    rows.push(lin2_exact(1.0, &f, 1.0, &f.reversed(), 2.0));
+                }
+            }
+            mirror(&mut rows, n);
+            Step {
+                rows,
+                terms: Vec::new(),
+            }
+        }
         Method::Forrest => {
             // Forward on the first half, backward on the second (both recursions stop at
             // `n / 2`); the middle point of an even `n` is their average.
@@ -106,6 +195,10 @@ pub(crate) fn step<B: Base>(method: Method, s: &[Row<B>]) -> Step<B> {
                 terms: Vec::new(),
             }
         }
+        Method::Farin if split => Step {
+            rows: farin(s, delta.get(), symmetric),
+            terms: Vec::new(),
+        },
         Method::Farin => {
             let (fwd, bwd) = (forward(s, n), backward(s, 0));
             let rows = (0..=n)
@@ -134,15 +227,20 @@ pub(crate) fn step<B: Base>(method: Method, s: &[Row<B>]) -> Step<B> {
                 2f64.powi(-(2 * i32::try_from(n).unwrap_or(0) + 1)) * (1.0 + 4.0 * f64::EPSILON);
             Step {
                 rows,
-                terms: vec![(coef, delta_k(s))],
+                terms: vec![(coef, delta.get().clone())],
             }
         }
         Method::Perturb => {
-            let f = delta_k(s);
+            let f = delta.get().clone();
             let d = Tracked::binom(2 * to_i(k), to_i(k)).sub(Tracked::of(2.0));
+            // Symmetric: only `pbar_0..=pbar_(n/2)` are read (the forward half of the
+            // inverse elevation); the rest stay empty.
+            let used = if symmetric { n / 2 } else { k };
             let pbar: Vec<Row<B>> = (0..=k)
                 .map(|i| {
-                    if i > 0 && i < k {
+                    if i > used {
+                        Row::zeros(0)
+                    } else if i > 0 && i < k {
                         let c = sign_binom::<B>(k, i).div(d).neg();
                         lin2(Tracked::of(1.0), &s[i], c, &f)
                     } else {
@@ -150,13 +248,20 @@ pub(crate) fn step<B: Base>(method: Method, s: &[Row<B>]) -> Step<B> {
                     }
                 })
                 .collect();
+            let rows = if symmetric {
+                let mut rows = forward(&pbar, n / 2);
+                mirror(&mut rows, n);
+                rows
+            } else {
+                inverse_elevation(&pbar)
+            };
             Step {
-                rows: inverse_elevation(&pbar),
+                rows,
                 terms: vec![(perturb_coef(k), f)],
             }
         }
         Method::PerturbG1 { l1, l2 } => {
-            let f = delta_k(s);
+            let f = delta.get().clone();
             let ki = to_i(k);
             let sd = Tracked::binom(2 * ki, ki).sub(Tracked::small(2 + 2 * ki * ki));
             let (l1, l2) = (Tracked::of(l1), Tracked::of(l2));
@@ -184,13 +289,47 @@ pub(crate) fn step<B: Base>(method: Method, s: &[Row<B>]) -> Step<B> {
                 terms: Vec::new(),
             }
         }
-        Method::PieglTiller => piegl_tiller(s),
+        Method::PieglTiller => piegl_tiller(s, symmetric),
         // Multi-degree methods never come here (checked by the caller).
         _ => Step {
             rows: Vec::new(),
             terms: Vec::new(),
         },
     }
+}
+
+/// Farin's step `Q_i = ((n - i) P^I_i + i P^II_i) / n` (SPEC-reduce §2.3) in a stable
+/// form (beyond the seed): writing `s = E q + delta e_k` (`delta = Delta^k s`), the forward
+/// recursion never reads `s_k`, so `P^I = q`, and the backward one gives
+/// `P^II_i = q_i + delta (-1)^(n-i) / C(n,i)` (its run on `e_k`). Hence
+/// `Q_i = P^I_i + (i/n) (-1)^(n-i) delta / C(n,i)` for `i <= n/2`, where the forward
+/// recursion damps rounding (`i < k - i`), and `Q_i = P^II_i - ((n-i)/n) (-1)^(n-i) delta /
+/// C(n,i)` above, where the backward one does: no recursion runs into its amplifying half
+/// (the direct form lost 9 digits in `f64` at `(30,15)`).
+fn farin<B: Base>(s: &[Row<B>], delta: &Row<B>, symmetric: bool) -> Vec<Row<B>> {
+    let k = s.len() - 1;
+    let n = k - 1;
+    let half = n / 2;
+    let mut rows = forward(s, half);
+    if half < n && !symmetric {
+        rows.extend(backward(s, half + 1));
+    }
+    let nn = Tracked::<B>::small(to_i(n));
+    for (i, row) in rows.iter_mut().enumerate() {
+        let w = if i <= half { i } else { n - i };
+        if w == 0 {
+            continue;
+        }
+        let mut c = Tracked::small(to_i(w)).div(nn.mul(Tracked::binom(to_i(n), to_i(i))));
+        if ((n - i) % 2 == 1) == (i <= half) {
+            c = c.neg();
+        }
+        super::rows::axpy(row, c, delta);
+    }
+    if symmetric {
+        mirror(&mut rows, n);
+    }
+    rows
 }
 
 /// The perturbation bound factor `W_k / (C(2k,k) - 2)` rounded up (as `one_step.rs`).
@@ -201,12 +340,25 @@ fn perturb_coef(k: usize) -> f64 {
 }
 
 /// Piegl–Tiller step (as `one_step::piegl_tiller`).
-fn piegl_tiller<B: Base>(s: &[Row<B>]) -> Step<B> {
+/// (`symmetric`: the right end points as the mirror images of the left ones, `r = p`.)
+fn piegl_tiller<B: Base>(s: &[Row<B>], symmetric: bool) -> Step<B> {
     let k = s.len() - 1;
     let m = k - 1;
     let o = (to_i(m) - 1).div_euclid(2);
     let (r, p) = (i32::try_from(o).unwrap_or(0), i32::try_from(o).unwrap_or(0));
-    let (left, right) = end_points(k, m, r, p, s);
+    let (left, right) = if symmetric {
+        // By one degree (`n - m = 1`), eq. 14.5.10 is the forward recursion:
+        // `b_(j-1,j) = j/k`, `b_(j,j) = (k-j)/k`, so `Q_j = (k s_j - j Q_(j-1)) / (k - j)`.
+        let left = if o >= 0 {
+            forward(s, idx(o))
+        } else {
+            Vec::new()
+        };
+        let right = left.iter().rev().map(Row::reversed).collect();
+        (left, right)
+    } else {
+        end_points(k, m, r, p, s)
+    };
     let mut rows = left.clone();
     let mut terms = Vec::new();
     if m % 2 == 0 {
@@ -256,7 +408,11 @@ pub(crate) fn residual_coef<B: Base>(method: Method, k: usize) -> Option<f64> {
             }
         })
         .collect();
-    let q: Vec<Tracked<B>> = step(method, &e0).rows.iter().map(|r| r.at(0)).collect();
+    let q: Vec<Tracked<B>> = step(method, &e0, &Delta::new(&e0, false), false, true)
+        .rows
+        .iter()
+        .map(|r| r.at(0))
+        .collect();
     // Residual column 0: e_0 - E q; r_i = res_i / c_0, c_0 = (-1)^k.
     let kk = Tracked::small(to_i(k));
     let mut coef = 0.0f64;
@@ -296,18 +452,33 @@ fn residual_coef_cached(method: Method, k: usize) -> Option<f64> {
 
 /// The stepwise operator `n -> m`: rows (`m + 1`) and the summed own-bound terms (dropped,
 /// like the exact route, if one step has none).
-pub(crate) fn stepwise<B: Base>(method: Method, n: usize, m: usize) -> Rows<B> {
+/// (`split`: see [`step`].) `give_up`: `None` once the proven error of a step's rows
+/// exceeds this fraction of their inf-norm (the later steps compound it, so the route would
+/// be refused anyway: a performance choice for the `f64` attempt only).
+pub(crate) fn stepwise<B: Base>(
+    method: Method,
+    n: usize,
+    m: usize,
+    split: bool,
+    give_up: Option<f64>,
+) -> Option<Rows<B>> {
     let mut s = identity::<B>(n + 1);
+    // The unit rows are reversal-symmetric, and so is every step's output (see [`mirror`]).
+    let symmetric = match method {
+        Method::PerturbG1 { l1, l2 } => l1.to_bits() == l2.to_bits(),
+        _ => true,
+    };
     let mut terms = Vec::new();
     let mut valid = true;
     for k in ((m + 1)..=n).rev() {
-        let st = step(method, &s);
+        let delta = Delta::new(&s, symmetric);
+        let st = step(method, &s, &delta, symmetric, split);
         if valid {
             if st.terms.is_empty() {
                 // O(k) work: always in double-word, so the coefficient is tight even when
                 // it is tiny beside the step's entries.
                 match residual_coef_cached(method, k) {
-                    Some(c) => terms.push((c, delta_k(&s))),
+                    Some(c) => terms.push((c, delta.get().clone())),
                     None => valid = false,
                 }
             } else {
@@ -315,9 +486,23 @@ pub(crate) fn stepwise<B: Base>(method: Method, n: usize, m: usize) -> Rows<B> {
             }
         }
         s = st.rows;
+        if let Some(limit) = give_up {
+            let (mut err, mut norm) = (0.0f64, 0.0f64);
+            // The second half mirrors the first (or, for G1, is checked alike).
+            for row in s
+                .iter()
+                .take(if symmetric { s.len() / 2 + 1 } else { s.len() })
+            {
+                err = err.max(row.e.iter().sum());
+                norm = norm.max(row.v.iter().map(|x| x.to_f64().abs()).sum());
+            }
+            if !(err <= limit * norm) {
+                return None;
+            }
+        }
     }
     if !valid {
         terms.clear();
     }
-    (s, terms)
+    Some((s, terms))
 }

@@ -10,9 +10,14 @@ use super::dd::Dd;
 use super::wide::Wide;
 
 /// A base arithmetic: `f64` or double-word, with its proven relative error per operation.
-pub(crate) trait Base: Copy {
+pub(crate) trait Base: Copy + Send + Sync + 'static {
     /// Bound of `|fl(x op y) - x op y| / |x op y|` for `+ - * /`.
     const U: f64;
+    /// Bound of `|to_f64(x) - x| / |x|` (`0` for `f64` itself: no final rounding).
+    const TO_F64: f64;
+    /// Whether a stepwise build in this arithmetic gives up early when its proven error
+    /// runs away (the `f64` attempt, which has a next route to fall back to).
+    const GIVE_UP_EARLY: bool = false;
     /// An `f64`, exactly.
     fn of(x: f64) -> Self;
     /// A `u128` rounded, with its absolute rounding error bound.
@@ -46,6 +51,8 @@ pub(crate) trait Base: Copy {
 
 impl Base for f64 {
     const U: f64 = f64::EPSILON / 2.0;
+    const TO_F64: f64 = 0.0;
+    const GIVE_UP_EARLY: bool = true;
     fn of(x: f64) -> Self {
         x
     }
@@ -83,6 +90,8 @@ impl Base for f64 {
 impl Base for Dd {
     /// `16 u^2`: covers the bounds of all three double-word algorithms (see `dd.rs`).
     const U: f64 = 16.0 * (f64::EPSILON / 2.0) * (f64::EPSILON / 2.0);
+    /// `hi + lo` rounded once (`u |x|`), allowed as `eps |x|`.
+    const TO_F64: f64 = f64::EPSILON;
     fn of(x: f64) -> Self {
         Dd::from_f64(x)
     }
@@ -146,6 +155,8 @@ impl Base for Dd {
 
 impl Base for Wide {
     const U: f64 = Wide::U;
+    /// One rounding (`u |x|`), allowed as `eps |x|`.
+    const TO_F64: f64 = f64::EPSILON;
     fn of(x: f64) -> Self {
         Wide::from_f64(x)
     }

@@ -103,17 +103,6 @@ fn elevated_exact<B: Base>(c: &[i128], d: i64, s: i64) -> Option<Tracked<B>> {
 /// `sum_l c_l d_(j+l)` as `k + 1` row updates, then the column factors `C(N,j)` and the
 /// row's common factor.
 fn functionals<B: Base>(family: Family, nn: i64, first: i64, last: i64) -> Vec<Row<B>> {
-    // w_i = C(2i,i)/4^i for i <= 2N (Chebyshev only).
-    let mut w: Vec<Tracked<B>> = vec![Tracked::of(1.0)];
-    if let Family::Chebyshev = family {
-        for i in 1..=(2 * nn) {
-            let prev = w[w.len() - 1];
-            w.push(
-                prev.mul(Tracked::small(2 * i - 1))
-                    .div(Tracked::small(2 * i)),
-            );
-        }
-    }
     let width = idx(nn) + 1;
     let symmetric = match family {
         Family::Chebyshev => true,
@@ -124,26 +113,24 @@ fn functionals<B: Base>(family: Family, nn: i64, first: i64, last: i64) -> Vec<R
             let kk = nn + k;
             let c = coefficients::<B>(family, k);
             // d_s for s = 0..=K and the row's common factor.
-            let (d, factor): (Vec<Tracked<B>>, Tracked<B>) = match family {
+            let (d, factor): (std::sync::Arc<Row<B>>, Tracked<B>) = match family {
                 Family::Chebyshev => (
-                    (0..=kk)
-                        .map(|s| w[idx(s)].mul(w[idx(kk - s)]).div(Tracked::binom(kk, s)))
-                        .collect(),
+                    chebyshev_d::<B>(kk),
                     Tracked::of(if k == 0 { 1.0 } else { 2.0 }),
                 ),
                 Family::Jacobi { a, b } => {
                     let inv_h = Tracked::small(2 * k + a + b + 1)
                         .mul(Tracked::binom(k + a + b, b))
                         .div(Tracked::binom(k + b, b));
+                    let d: Vec<Tracked<B>> = (0..=kk)
+                        .map(|s| Tracked::recip_binom(kk + a + b, s + a))
+                        .collect();
                     (
-                        (0..=kk)
-                            .map(|s| Tracked::recip_binom(kk + a + b, s + a))
-                            .collect(),
+                        std::sync::Arc::new(Row::from_tracked(&d)),
                         inv_h.div(Tracked::small(kk + a + b + 1)),
                     )
                 }
             };
-            let d = Row::from_tracked(&d);
             // A symmetric weight has `p_k(1-t) = (-1)^k p_k(t)`, so `phi_k(N-j) =
             // (-1)^k phi_k(j)`: only the first half is computed, the rest mirrored (the
             // mirrored error bounds hold for the mirrored exact entries; negation is exact
@@ -166,6 +153,44 @@ fn functionals<B: Base>(family: Family, nn: i64, first: i64, last: i64) -> Vec<R
             row
         })
         .collect()
+}
+
+/// The Chebyshev correlation row `d_s = w_s w_(K-s) / C(K, s)`, `s = 0..=K`, with
+/// `w_i = C(2i,i) / 4^i` (see the module docs): a constant of `K` and the arithmetic,
+/// remembered for the process like the binomials (its `O(K)` divisions per coefficient
+/// functional were a fifth of a Chebyshev build at `(30,15)` in double-word).
+fn chebyshev_d<B: Base>(kk: i64) -> std::sync::Arc<Row<B>> {
+    use std::any::{Any, TypeId};
+    use std::collections::HashMap;
+    use std::sync::{Arc, OnceLock, RwLock};
+    type Memo = RwLock<HashMap<(TypeId, i64), Arc<dyn Any + Send + Sync>>>;
+    static MEMO: OnceLock<Memo> = OnceLock::new();
+    let memo = MEMO.get_or_init(|| RwLock::new(HashMap::new()));
+    let key = (TypeId::of::<B>(), kk);
+    if let Some(d) = memo
+        .read()
+        .ok()
+        .and_then(|m| m.get(&key).cloned())
+        .and_then(|d| d.downcast::<Row<B>>().ok())
+    {
+        return d;
+    }
+    let mut w: Vec<Tracked<B>> = vec![Tracked::of(1.0)];
+    for i in 1..=kk {
+        let prev = w[w.len() - 1];
+        w.push(
+            prev.mul(Tracked::small(2 * i - 1))
+                .div(Tracked::small(2 * i)),
+        );
+    }
+    let d: Vec<Tracked<B>> = (0..=kk)
+        .map(|s| w[idx(s)].mul(w[idx(kk - s)]).div(Tracked::binom(kk, s)))
+        .collect();
+    let d = Arc::new(Row::from_tracked(&d));
+    if let Ok(mut m) = memo.write() {
+        m.insert(key, Arc::clone(&d) as Arc<dyn Any + Send + Sync>);
+    }
+    d
 }
 
 /// The conversion coefficients `[k][s]`: the coefficient of `B_s^M` in `p_k`,
