@@ -12,7 +12,7 @@
 
 use cagd_core::{BSplineCurve, Error, Result, knot_multiplicity};
 
-use super::fit::{Source, SpanBound, fit, hull_span_bound, span_bounds};
+use super::fit::{Source, SpanBound, fit, hull_span_bound, predicted_knots, span_bounds};
 use super::grading::{GRADE, grading_breaks};
 use super::knots::order_at;
 use super::knots::{LocalBounds, Raw, Sharpen};
@@ -47,6 +47,12 @@ const CREEP_ROUNDS: usize = 6;
 /// Most spans the refinement may create (a safety net; a span whose tolerance is below its
 /// rounding floor stops the refinement at once).
 pub(crate) const MAX_FIT_SPANS: usize = 1 << 20;
+
+/// Most knots the prediction may add ([`predicted_knots`]; also at most half of
+/// [`MAX_FIT_WORK`] in its first round); more means the tolerance is far below what the
+/// input's pieces carry, and the refinement starts from the input's knots (and its work
+/// limits answer).
+const MAX_PREDICTED_KNOTS: usize = 1 << 16;
 
 /// Most work of one refinement, counted per span as its point coordinates plus
 /// [`SPAN_OVERHEAD`], times [`degree_cost`], summed over its rounds (each round fits and
@@ -264,7 +270,12 @@ pub(crate) fn reduce_global(
         curve.dim() + usize::from(rational),
         rational,
     )?;
-    let knots = initial_knots(curve.knots(), p, &src, m, k)?;
+    let mut knots = initial_knots(curve.knots(), p, &src, m, k)?;
+    // The first fit on knots placed where the error model wants them: one round instead
+    // of four on the a2 row's curves (issue 17).
+    let limit = MAX_PREDICTED_KNOTS.min(MAX_FIT_WORK / 2 / span_unit(&src).max(1));
+    knots.extend(predicted_knots(&src, m, FIT_SHARE * tol, limit));
+    knots.sort_by(f64::total_cmp);
     let mut attained = Vec::new();
     let (knots, points, bounds) =
         fit_to_budget_attained(&src, m, knots, FIT_SHARE * tol, &mut attained)?;

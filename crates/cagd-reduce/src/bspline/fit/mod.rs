@@ -28,10 +28,12 @@ use cagd_core::{
 
 mod banded_lsq;
 mod node_bound;
+mod predict;
 
 use crate::bezier::{hull_bound, max_norm};
 pub(crate) use banded_lsq::BandedLsq;
 use node_bound::NodeBound;
+pub(crate) use predict::predicted_knots;
 
 /// The spline to approximate, as Bézier pieces in working coordinates.
 #[derive(Debug, Clone)]
