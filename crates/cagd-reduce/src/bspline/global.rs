@@ -12,7 +12,10 @@
 
 use cagd_core::{BSplineCurve, Error, Result, knot_multiplicity};
 
-use super::fit::{Source, SpanBound, fit, hull_span_bound, predicted_knots, span_bounds};
+use super::fit::{
+    Source, SpanBound, fit_restricted, hull_span_bound, predicted_knots, restrictions,
+    span_bounds_restricted,
+};
 use super::grading::{GRADE, grading_breaks};
 use super::knots::order_at;
 use super::knots::{LocalBounds, Raw, Sharpen};
@@ -172,7 +175,7 @@ fn splits(
 ///
 /// # Errors
 /// [`Error::ConditionNotMet`] when the budget is below the rounding level or needs more
-/// than [`MAX_FIT_SPANS`] spans or [`MAX_FIT_WORK`]; the errors of [`fit`].
+/// than [`MAX_FIT_SPANS`] spans or [`MAX_FIT_WORK`]; the errors of [`fit_restricted`].
 pub(crate) fn fit_to_budget(
     src: &Source,
     m: usize,
@@ -183,7 +186,7 @@ pub(crate) fn fit_to_budget(
 }
 
 /// [`fit_to_budget`], with per span of the result a value the error attains in `attained`
-/// (see [`span_bounds`]).
+/// (see [`span_bounds_restricted`]).
 fn fit_to_budget_attained(
     src: &Source,
     m: usize,
@@ -193,9 +196,12 @@ fn fit_to_budget_attained(
 ) -> Result<(Vec<f64>, Vec<f64>, Vec<SpanBound>)> {
     let mut rounds = 0;
     let mut work = 0usize;
+    let mut subs = Vec::new();
     loop {
-        let points = fit(src, m, &knots)?;
-        let bounds = span_bounds(src, m, (&knots, &points), budget, attained)?;
+        // One restriction of the source per span, for the fit's rows and the bounds.
+        restrictions(src, m, &knots, &mut subs);
+        let points = fit_restricted(src, m, &knots, &subs)?;
+        let bounds = span_bounds_restricted(src, m, (&knots, &points, &subs), budget, attained)?;
         if bounds.iter().all(|x| x.bound <= budget) {
             return Ok((knots, points, bounds));
         }

@@ -12,7 +12,10 @@
 //! therefore, up to that constant, the squared norm of the residual of a weighted
 //! collocation system with one row per (span, node) — weight `sqrt(w_q h)` — and the fit
 //! is that system's least-squares solution, computed by banded Givens QR
-//! ([`banded_lsq`]). No normal equations are formed. (The `(p + 1)`-point rule, exact for
+//! ([`banded_lsq`]), each span's rows first compressed to `m + 1` by an orthogonal
+//! transformation fixed per `(p, m)` ([`span_rows`]; the source enters through its
+//! restriction to the span, which the span's bound uses too). No normal equations are
+//! formed. (The `(p + 1)`-point rule, exact for
 //! the whole integrand, gives the same minimiser with up to twice the rows; it was used
 //! until issue 17.)
 //!
@@ -21,19 +24,18 @@
 //! direction with one knot vector); the bound of a span is then the largest over the
 //! blocks, which bounds the surface by the partition of unity in the other direction.
 
-use cagd_core::{
-    BSplineCurve, ModelFrame, Result, basis_functions, binomial_f64, centred_rational_bound,
-    gauss_legendre,
-};
+use cagd_core::{BSplineCurve, ModelFrame, Result, centred_rational_bound};
 
 mod banded_lsq;
 mod node_bound;
 mod predict;
+mod span_rows;
 
 use crate::bezier::{hull_bound, max_norm};
 pub(crate) use banded_lsq::BandedLsq;
 use node_bound::NodeBound;
 pub(crate) use predict::predicted_knots;
+use span_rows::SpanRows;
 
 /// The spline to approximate, as Bézier pieces in working coordinates.
 #[derive(Debug, Clone)]
@@ -102,28 +104,17 @@ impl Source {
     }
 
     /// The Bézier points of the source on `[a, b]` (inside piece `k`'s interval) in
-    /// `out`: piece `k` cut at `b` (its left part), then at `a` (the right part), each by
-    /// de Casteljau's triangle in place ([`right_part`], `O(p^2)` convex combinations).
+    /// `out`: piece `k` cut at `b` (its left part, [`left_part`]), then at `a` (the right
+    /// part, [`right_part`]), each by de Casteljau's triangle in place (`O(p^2)` convex
+    /// combinations).
     fn restrict_into(&self, k: usize, (a, b): (f64, f64), out: &mut Vec<f64>) {
         let (pa, pb) = (self.breaks[k], self.breaks[k + 1]);
         let (s0, s1) = ((a - pa) / (pb - pa), (b - pa) / (pb - pa));
         let d = self.pdim;
         out.clear();
+        out.extend_from_slice(self.piece(k));
         if s1 < 1.0 {
-            // The left part at s1 is the reversed right part of the reversed piece at
-            // 1 - s1.
-            for q in self.piece(k).chunks_exact(d).rev() {
-                out.extend_from_slice(q);
-            }
-            right_part(out, d, 1.0 - s1);
-            let np = out.len() / d;
-            for i in 0..np / 2 {
-                for c in 0..d {
-                    out.swap(i * d + c, (np - 1 - i) * d + c);
-                }
-            }
-        } else {
-            out.extend_from_slice(self.piece(k));
+            left_part(out, d, s1);
         }
         if s0 > 0.0 {
             right_part(out, d, s0 / s1);
@@ -139,6 +130,23 @@ impl Source {
     }
 }
 
+/// The Bézier points of the source on every non-empty span `knots[s] < knots[s + 1]` of
+/// a degree-`m` knot vector (`s = m..n`, in order), `(p + 1) * pdim` values each, in `out`
+/// ([`Source::restrict_into`]): what both the fit's rows ([`span_rows`]) and the span
+/// bounds use.
+pub(crate) fn restrictions(src: &Source, m: usize, knots: &[f64], out: &mut Vec<f64>) {
+    let n = knots.len() - m - 1;
+    out.clear();
+    let mut sub = Vec::with_capacity((src.degree + 1) * src.pdim);
+    for s in m..n {
+        let (a, b) = (knots[s], knots[s + 1]);
+        if a < b {
+            src.restrict_into(src.piece_of(a, b), (a, b), &mut sub);
+            out.extend_from_slice(&sub);
+        }
+    }
+}
+
 /// The L2-best degree-`m` spline on the clamped knot vector `knots` (domain and every break
 /// of `src` among its knots) with the end points of `src`: its control points
 /// (`knots.len() - m - 1` points of `src.pdim` coordinates).
@@ -146,7 +154,26 @@ impl Source {
 /// # Errors
 /// [`cagd_core::Error::Singular`] if the system is rank-deficient (cannot happen for a
 /// valid knot vector: `p + 1 >= m + 1` nodes per span determine the span's polynomial).
+#[cfg(test)]
 pub(crate) fn fit(src: &Source, m: usize, knots: &[f64]) -> Result<Vec<f64>> {
+    let mut subs = Vec::new();
+    restrictions(src, m, knots, &mut subs);
+    fit_restricted(src, m, knots, &subs)
+}
+
+/// `fit` with the source's [`restrictions`] to the spans given: per span, its `m + 1`
+/// compressed Gauss rows ([`SpanRows`]: `ceil((p + m + 1) / 2)` nodes, exact for every
+/// term that depends on the fit) into the banded QR.
+///
+/// # Errors
+/// [`cagd_core::Error::Singular`] if the system is rank-deficient (cannot happen for a
+/// valid knot vector: `p + 1 >= m + 1` nodes per span determine the span's polynomial).
+pub(crate) fn fit_restricted(
+    src: &Source,
+    m: usize,
+    knots: &[f64],
+    subs: &[f64],
+) -> Result<Vec<f64>> {
     let (p, d) = (src.degree, src.pdim);
     let n = knots.len() - m - 1;
     let mut out = vec![0.0; n * d];
@@ -155,58 +182,42 @@ pub(crate) fn fit(src: &Source, m: usize, knots: &[f64]) -> Result<Vec<f64>> {
     if n <= 2 {
         return Ok(out);
     }
-    // ceil((p + m + 1) / 2) nodes: exact for every term that depends on the fit.
-    let (nodes, weights) = gauss_legendre((p + m + 2) / 2)?;
-    let mut lsq = BandedLsq::new(n - 2, m + 1, d);
-    let (mut basis, mut scratch) = (vec![0.0; m + 1], vec![0.0; 2 * m + 2]);
-    let (mut value, mut bern) = (vec![0.0; d], vec![0.0; p + 1]);
-    let mut row = Vec::with_capacity(m + 1);
-    let binom: Vec<f64> = (0..=p).map(|i| binomial_f64(p, i)).collect();
+    let span_rows = SpanRows::cached(p, m)?;
+    let m1 = m + 1;
+    let mut lsq = BandedLsq::new(n - 2, m1, d);
+    let mut unit = vec![0.0; m1 * m1];
+    for i in 0..m1 {
+        unit[i * m1 + i] = 1.0;
+    }
+    let (mut ext, mut work) = (vec![0.0; m1 * m1], vec![0.0; m1 * m1]);
+    let (mut rows, mut rhs) = (vec![0.0; m1 * m1], vec![0.0; m1 * d]);
+    let mut subs = subs.chunks_exact((p + 1) * d);
     for s in m..n {
         let (a, b) = (knots[s], knots[s + 1]);
         if a >= b {
             continue;
         }
-        let k = src.piece_of(a, b);
-        let (pa, pb) = (src.breaks[k], src.breaks[k + 1]);
-        for (x, w) in nodes.iter().zip(&weights) {
-            let t = a + (b - a) * x;
-            let sw = (w * (b - a)).sqrt();
-            basis_functions(knots, s, m, t, &mut basis, &mut scratch);
-            // The source at the same (rounded) t as the basis row: its Bernstein basis
-            // values times its points, O(p) per node (a de Casteljau run is O(p^2) and took
-            // 70 % of a degree-30 fit). Evaluating a restriction of the piece at the exact
-            // node instead would not see t's rounding, which at a parameter offset of 1e5
-            // and spans of 1e-4 is 2e-7 of the span, and spoils fits of exact input.
-            bernstein_with(&binom, (t - pa) / (pb - pa), &mut bern);
-            value.fill(0.0);
-            for (bi, pt) in bern.iter().zip(src.piece(k).chunks_exact(d)) {
-                for (v, c) in value.iter_mut().zip(pt) {
-                    *v += bi * c;
-                }
-            }
+        let sub = subs.next().expect("one restriction per non-empty span");
+        // Row l of `ext`: the Bézier coefficients l of the basis functions s-m..=s.
+        span_bezier_of((knots, m), s, (&unit, m1), &mut ext, &mut work);
+        span_rows.rows(b - a, &ext, sub, d, &mut rows, &mut rhs);
+        for (row, value) in rows.chunks_exact_mut(m1).zip(rhs.chunks_exact_mut(d)) {
             // Columns s-m..=s; the first and last control points are fixed.
-            let mut lo = s - m;
-            let mut vals = &basis[..];
+            let (mut lo, mut hi) = (s - m, m1);
             if lo == 0 {
                 for (v, e) in value.iter_mut().zip(src.first_point()) {
-                    *v -= basis[0] * e;
+                    *v -= row[0] * e;
                 }
-                vals = &vals[1..];
                 lo = 1;
             }
             if s == n - 1 {
                 for (v, e) in value.iter_mut().zip(src.last_point()) {
-                    *v -= basis[m] * e;
+                    *v -= row[m] * e;
                 }
-                vals = &vals[..vals.len() - 1];
+                hi = m;
             }
-            row.clear();
-            row.extend(vals.iter().map(|v| sw * v));
-            for v in &mut value {
-                *v *= sw;
-            }
-            lsq.add_row(lo - 1, &row, &value);
+            let first = usize::from(s - m == 0);
+            lsq.add_row(lo - 1, &row[first..hi], value);
         }
     }
     let x = lsq.solve()?;
@@ -220,12 +231,28 @@ pub(crate) fn fit(src: &Source, m: usize, knots: &[f64]) -> Result<Vec<f64>> {
 /// the last level point `i` is `b_i^(n - i)`.
 fn right_part(x: &mut [f64], dim: usize, t: f64) {
     let u = 1.0 - t;
+    // Cells: each level is one pass over overlapping windows without index checks.
+    let x = std::cell::Cell::from_mut(x).as_slice_of_cells();
     let len = x.len();
     for r in (dim..len).step_by(dim) {
-        let level = &mut x[..len - r + dim];
-        let n = level.len() - dim;
-        for j in 0..n {
-            level[j] = u * level[j] + t * level[j + dim];
+        let n = len - r;
+        for (a, b) in x[..n].iter().zip(&x[dim..n + dim]) {
+            a.set(u * a.get() + t * b.get());
+        }
+    }
+}
+
+/// Replaces the Bézier points `x` (`dim` coordinates each) by those of the curve's part on
+/// `[0, t]`: the mirror of [`right_part`]; level `r` leaves `b_(i-r)^r` at point `i` (point
+/// `i` combines points `i - 1` and `i` of the level before, descending), so after the last
+/// level point `i` is `b_0^i`.
+fn left_part(x: &mut [f64], dim: usize, t: f64) {
+    let u = 1.0 - t;
+    let x = std::cell::Cell::from_mut(x).as_slice_of_cells();
+    let len = x.len();
+    for r in (dim..len).step_by(dim) {
+        for (a, b) in x[r..].iter().rev().zip(x[r - dim..len - dim].iter().rev()) {
+            a.set(u * b.get() + t * a.get());
         }
     }
 }
@@ -259,6 +286,20 @@ pub(crate) struct SpanBound {
     pub(crate) floor: f64,
 }
 
+/// [`span_bounds_restricted`], the restrictions computed here (the tests' entry).
+#[cfg(test)]
+pub(crate) fn span_bounds(
+    src: &Source,
+    m: usize,
+    (knots, points): (&[f64], &[f64]),
+    sharpen: f64,
+    attained: &mut Vec<f64>,
+) -> Result<Vec<SpanBound>> {
+    let mut subs = Vec::new();
+    restrictions(src, m, knots, &mut subs);
+    span_bounds_restricted(src, m, (knots, points, &subs), sharpen, attained)
+}
+
 /// The spans `[a, b]` of the degree-`m` spline `(knots, points)` (working coordinates of
 /// `src`) with a certified bound of `max ||C - S||` on each (Euclidean, model space): per
 /// span, the piece of `C` restricted to it minus the piece of `S`, bounded by its values
@@ -270,11 +311,14 @@ pub(crate) struct SpanBound {
 /// A span on which a control weight of `S` is not positive gets an infinite bound.
 /// `attained` receives per span a value the error attains up to rounding (the largest
 /// node value; the bound itself where a span has no node bound): no sharper bound of the
-/// span can be below it.
-pub(crate) fn span_bounds(
+/// span can be below it. `subs` holds the source's [`restrictions`] to the spans.
+///
+/// # Errors
+/// [`cagd_core::Error::LengthMismatch`] when `knots` and `points` do not match.
+pub(crate) fn span_bounds_restricted(
     src: &Source,
     m: usize,
-    (knots, points): (&[f64], &[f64]),
+    (knots, points, subs): (&[f64], &[f64], &[f64]),
     sharpen: f64,
     attained: &mut Vec<f64>,
 ) -> Result<Vec<SpanBound>> {
@@ -289,7 +333,7 @@ pub(crate) fn span_bounds(
         });
     }
     let mut out = Vec::with_capacity(n - m);
-    let mut sub = Vec::with_capacity((p + 1) * d);
+    let mut subs = subs.chunks_exact((p + 1) * d);
     let (mut tgt, mut scratch) = (vec![0.0; (m + 1) * d], vec![0.0; (m + 1) * d]);
     let (mut sb, mut tb) = (vec![0.0; (p + 1) * blk], vec![0.0; (m + 1) * blk]);
     let (mut qb, mut pb) = (vec![0.0; (m + 1) * blk], vec![0.0; (p + 1) * blk]);
@@ -302,21 +346,21 @@ pub(crate) fn span_bounds(
         }
         span_bezier((knots, points, d, m), s, &mut tgt, &mut scratch);
         let k = src.piece_of(a, b);
-        src.restrict_into(k, (a, b), &mut sub);
+        let sub = subs.next().expect("one restriction per non-empty span");
         let (bound, floor, lower) = if src.rational {
             let span_points = &points[(s - m) * d..(s + 1) * d];
             let vmin = span_points
                 .chunks_exact(blk)
                 .map(|q| q[blk - 1])
                 .fold(f64::INFINITY, f64::min);
-            let (bound, floor) = rational_bound(&sub, &tgt, (d, blk, p), vmin);
+            let (bound, floor) = rational_bound(sub, &tgt, (d, blk, p), vmin);
             (bound, floor, bound)
         } else {
             let nodes = nodes.as_ref().expect("built for polynomial input");
             let (mut eps, mut floor, mut seen): (f64, f64, f64) = (0.0, 0.0, 0.0);
             let span_points = &points[(s - m) * d..(s + 1) * d];
             for j in 0..d / blk {
-                copy_block(&sub, d, j, blk, &mut sb);
+                copy_block(sub, d, j, blk, &mut sb);
                 copy_block(&tgt, d, j, blk, &mut tb);
                 copy_block(span_points, d, j, blk, &mut qb);
                 let pmax = max_norm(block_of(src.piece(k), d, j, blk, &mut pb), blk);
@@ -343,7 +387,7 @@ pub(crate) fn span_bounds(
 /// The refined-hull bound ([`crate::bezier::hull_bound`]) of `max ||C - S||` on the span
 /// `[a, b]` of the polynomial fit `(knots, points)` of degree `m` (`a` a knot; the largest
 /// over the blocks): the sharper bound a knot removal asks for where the node bound of
-/// [`span_bounds`] leaves it no room. `+inf` for rational input (its bound has no node
+/// [`span_bounds_restricted`] leaves it no room. `+inf` for rational input (its bound has no node
 /// route to sharpen).
 pub(crate) fn hull_span_bound(
     src: &Source,
@@ -380,9 +424,27 @@ fn span_bezier(
     out: &mut [f64],
     work: &mut [f64],
 ) {
+    span_bezier_of(
+        (knots, m),
+        s,
+        (&points[(s - m) * d..(s + 1) * d], d),
+        out,
+        work,
+    );
+}
+
+/// [`span_bezier`] from the span's own `m + 1` points `local` (those of `s - m ..= s`, `d`
+/// coordinates each); with the unit vectors as points, the span's Bézier extraction.
+fn span_bezier_of(
+    (knots, m): (&[f64], usize),
+    s: usize,
+    (local, d): (&[f64], usize),
+    out: &mut [f64],
+    work: &mut [f64],
+) {
     let (a, b) = (knots[s], knots[s + 1]);
     for k in 0..=m {
-        work.copy_from_slice(&points[(s - m) * d..(s + 1) * d]);
+        work.copy_from_slice(local);
         for r in 1..=m {
             let u = if r <= m - k { a } else { b };
             // Point i (of s - m ..= s) at level r, descending so that point i - 1 is

@@ -227,7 +227,7 @@ impl NodeBound {
 }
 
 /// Appends `B^n_i(t)`, `i = 0..=n`, computed as `C(n, i) t^i (1 - t)^(n - i)`.
-fn push_bernstein(n: usize, t: f64, out: &mut Vec<f64>) {
+pub(super) fn push_bernstein(n: usize, t: f64, out: &mut Vec<f64>) {
     let s = 1.0 - t;
     let start = out.len();
     let mut tp = 1.0;
