@@ -13,7 +13,7 @@
 use cagd_core::{BSplineCurve, Error, Result, knot_multiplicity};
 
 use super::fit::{
-    Source, SpanBound, fit_restricted, hull_span_bound, predicted_knots, restrictions,
+    Source, SpanBound, SpanData, fit_restricted, hull_span_bound, predicted_knots,
     span_bounds_restricted,
 };
 use super::grading::{GRADE, grading_breaks};
@@ -196,12 +196,13 @@ fn fit_to_budget_attained(
 ) -> Result<(Vec<f64>, Vec<f64>, Vec<SpanBound>)> {
     let mut rounds = 0;
     let mut work = 0usize;
-    let mut subs = Vec::new();
+    let mut data = SpanData::default();
     loop {
-        // One restriction of the source per span, for the fit's rows and the bounds.
-        restrictions(src, m, &knots, &mut subs);
-        let points = fit_restricted(src, m, &knots, &subs)?;
-        let bounds = span_bounds_restricted(src, m, (&knots, &points, &subs), budget, attained)?;
+        // One restriction of the source and one extraction per span, for the fit's rows
+        // and the bounds.
+        data.fill(src, m, &knots);
+        let points = fit_restricted(src, m, &knots, &data)?;
+        let bounds = span_bounds_restricted(src, m, (&knots, &points, &data), budget, attained)?;
         if bounds.iter().all(|x| x.bound <= budget) {
             return Ok((knots, points, bounds));
         }

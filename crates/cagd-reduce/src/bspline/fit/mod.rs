@@ -130,19 +130,38 @@ impl Source {
     }
 }
 
-/// The Bézier points of the source on every non-empty span `knots[s] < knots[s + 1]` of
-/// a degree-`m` knot vector (`s = m..n`, in order), `(p + 1) * pdim` values each, in `out`
-/// ([`Source::restrict_into`]): what both the fit's rows ([`span_rows`]) and the span
-/// bounds use.
-pub(crate) fn restrictions(src: &Source, m: usize, knots: &[f64], out: &mut Vec<f64>) {
-    let n = knots.len() - m - 1;
-    out.clear();
-    let mut sub = Vec::with_capacity((src.degree + 1) * src.pdim);
-    for s in m..n {
-        let (a, b) = (knots[s], knots[s + 1]);
-        if a < b {
-            src.restrict_into(src.piece_of(a, b), (a, b), &mut sub);
-            out.extend_from_slice(&sub);
+/// What the fit's rows ([`span_rows`]) and the span bounds share per non-empty span
+/// `knots[s] < knots[s + 1]` of a degree-`m` knot vector (`s = m..n`, in order): the
+/// source's Bézier points on the span ([`Source::restrict_into`], `(p + 1) * pdim` values)
+/// and the span's Bézier extraction (`(m + 1) x (m + 1)`, row `l` the Bézier coefficients
+/// `l` of the basis functions `s - m ..= s`, by [`span_bezier_of`] on the unit vectors).
+#[derive(Debug, Default)]
+pub(crate) struct SpanData {
+    subs: Vec<f64>,
+    exts: Vec<f64>,
+}
+
+impl SpanData {
+    /// The data of every non-empty span of `knots` for the source `src`.
+    pub(crate) fn fill(&mut self, src: &Source, m: usize, knots: &[f64]) {
+        let n = knots.len() - m - 1;
+        let m1 = m + 1;
+        self.subs.clear();
+        self.exts.clear();
+        let mut sub = Vec::with_capacity((src.degree + 1) * src.pdim);
+        let mut unit = vec![0.0; m1 * m1];
+        for i in 0..m1 {
+            unit[i * m1 + i] = 1.0;
+        }
+        let (mut ext, mut work) = (vec![0.0; m1 * m1], vec![0.0; m1 * m1]);
+        for s in m..n {
+            let (a, b) = (knots[s], knots[s + 1]);
+            if a < b {
+                src.restrict_into(src.piece_of(a, b), (a, b), &mut sub);
+                self.subs.extend_from_slice(&sub);
+                span_bezier_of((knots, m), s, (&unit, m1), &mut ext, &mut work);
+                self.exts.extend_from_slice(&ext);
+            }
         }
     }
 }
@@ -156,12 +175,12 @@ pub(crate) fn restrictions(src: &Source, m: usize, knots: &[f64], out: &mut Vec<
 /// valid knot vector: `p + 1 >= m + 1` nodes per span determine the span's polynomial).
 #[cfg(test)]
 pub(crate) fn fit(src: &Source, m: usize, knots: &[f64]) -> Result<Vec<f64>> {
-    let mut subs = Vec::new();
-    restrictions(src, m, knots, &mut subs);
-    fit_restricted(src, m, knots, &subs)
+    let mut data = SpanData::default();
+    data.fill(src, m, knots);
+    fit_restricted(src, m, knots, &data)
 }
 
-/// `fit` with the source's [`restrictions`] to the spans given: per span, its `m + 1`
+/// `fit` with the spans' [`SpanData`] given: per span, its `m + 1`
 /// compressed Gauss rows ([`SpanRows`]: `ceil((p + m + 1) / 2)` nodes, exact for every
 /// term that depends on the fit) into the banded QR.
 ///
@@ -172,7 +191,7 @@ pub(crate) fn fit_restricted(
     src: &Source,
     m: usize,
     knots: &[f64],
-    subs: &[f64],
+    data: &SpanData,
 ) -> Result<Vec<f64>> {
     let (p, d) = (src.degree, src.pdim);
     let n = knots.len() - m - 1;
@@ -185,22 +204,17 @@ pub(crate) fn fit_restricted(
     let span_rows = SpanRows::cached(p, m)?;
     let m1 = m + 1;
     let mut lsq = BandedLsq::new(n - 2, m1, d);
-    let mut unit = vec![0.0; m1 * m1];
-    for i in 0..m1 {
-        unit[i * m1 + i] = 1.0;
-    }
-    let (mut ext, mut work) = (vec![0.0; m1 * m1], vec![0.0; m1 * m1]);
     let (mut rows, mut rhs) = (vec![0.0; m1 * m1], vec![0.0; m1 * d]);
-    let mut subs = subs.chunks_exact((p + 1) * d);
+    let mut subs = data.subs.chunks_exact((p + 1) * d);
+    let mut exts = data.exts.chunks_exact(m1 * m1);
     for s in m..n {
         let (a, b) = (knots[s], knots[s + 1]);
         if a >= b {
             continue;
         }
         let sub = subs.next().expect("one restriction per non-empty span");
-        // Row l of `ext`: the Bézier coefficients l of the basis functions s-m..=s.
-        span_bezier_of((knots, m), s, (&unit, m1), &mut ext, &mut work);
-        span_rows.rows(b - a, &ext, sub, d, &mut rows, &mut rhs);
+        let ext = exts.next().expect("one extraction per non-empty span");
+        span_rows.rows(b - a, ext, sub, d, &mut rows, &mut rhs);
         for (row, value) in rows.chunks_exact_mut(m1).zip(rhs.chunks_exact_mut(d)) {
             // Columns s-m..=s; the first and last control points are fixed.
             let (mut lo, mut hi) = (s - m, m1);
@@ -286,7 +300,7 @@ pub(crate) struct SpanBound {
     pub(crate) floor: f64,
 }
 
-/// [`span_bounds_restricted`], the restrictions computed here (the tests' entry).
+/// [`span_bounds_restricted`], the [`SpanData`] computed here (the tests' entry).
 #[cfg(test)]
 pub(crate) fn span_bounds(
     src: &Source,
@@ -295,9 +309,9 @@ pub(crate) fn span_bounds(
     sharpen: f64,
     attained: &mut Vec<f64>,
 ) -> Result<Vec<SpanBound>> {
-    let mut subs = Vec::new();
-    restrictions(src, m, knots, &mut subs);
-    span_bounds_restricted(src, m, (knots, points, &subs), sharpen, attained)
+    let mut data = SpanData::default();
+    data.fill(src, m, knots);
+    span_bounds_restricted(src, m, (knots, points, &data), sharpen, attained)
 }
 
 /// The spans `[a, b]` of the degree-`m` spline `(knots, points)` (working coordinates of
@@ -311,14 +325,15 @@ pub(crate) fn span_bounds(
 /// A span on which a control weight of `S` is not positive gets an infinite bound.
 /// `attained` receives per span a value the error attains up to rounding (the largest
 /// node value; the bound itself where a span has no node bound): no sharper bound of the
-/// span can be below it. `subs` holds the source's [`restrictions`] to the spans.
+/// span can be below it. `data` holds the spans' restrictions and extractions; a
+/// polynomial span's piece of `S` is its extraction times its control points.
 ///
 /// # Errors
 /// [`cagd_core::Error::LengthMismatch`] when `knots` and `points` do not match.
 pub(crate) fn span_bounds_restricted(
     src: &Source,
     m: usize,
-    (knots, points, subs): (&[f64], &[f64], &[f64]),
+    (knots, points, data): (&[f64], &[f64], &SpanData),
     sharpen: f64,
     attained: &mut Vec<f64>,
 ) -> Result<Vec<SpanBound>> {
@@ -333,7 +348,8 @@ pub(crate) fn span_bounds_restricted(
         });
     }
     let mut out = Vec::with_capacity(n - m);
-    let mut subs = subs.chunks_exact((p + 1) * d);
+    let mut subs = data.subs.chunks_exact((p + 1) * d);
+    let mut exts = data.exts.chunks_exact((m + 1) * (m + 1));
     let (mut tgt, mut scratch) = (vec![0.0; (m + 1) * d], vec![0.0; (m + 1) * d]);
     let (mut sb, mut tb) = (vec![0.0; (p + 1) * blk], vec![0.0; (m + 1) * blk]);
     let (mut qb, mut pb) = (vec![0.0; (m + 1) * blk], vec![0.0; (p + 1) * blk]);
@@ -344,9 +360,24 @@ pub(crate) fn span_bounds_restricted(
         if a >= b {
             continue;
         }
-        span_bezier((knots, points, d, m), s, &mut tgt, &mut scratch);
         let k = src.piece_of(a, b);
         let sub = subs.next().expect("one restriction per non-empty span");
+        let ext = exts.next().expect("one extraction per non-empty span");
+        let local = &points[(s - m) * d..(s + 1) * d];
+        if src.rational {
+            span_bezier((knots, points, d, m), s, &mut tgt, &mut scratch);
+        } else {
+            // E Q: a convex combination per point (the rows of E are non-negative and sum
+            // to one); its rounding is in `NodeBound::bound`'s allowance.
+            tgt.fill(0.0);
+            for (t, e) in tgt.chunks_exact_mut(d).zip(ext.chunks_exact(m + 1)) {
+                for (c, q) in e.iter().zip(local.chunks_exact(d)) {
+                    for (v, x) in t.iter_mut().zip(q) {
+                        *v += c * x;
+                    }
+                }
+            }
+        }
         let (bound, floor, lower) = if src.rational {
             let span_points = &points[(s - m) * d..(s + 1) * d];
             let vmin = span_points

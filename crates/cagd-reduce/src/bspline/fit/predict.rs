@@ -101,7 +101,14 @@ pub(crate) fn predicted_knots(src: &Source, m: usize, budget: f64, limit: usize)
                 .chunks_exact(blk)
                 .map(|c| c.iter().map(|x| x * x).sum::<f64>().sqrt())
                 .fold(0.0, f64::max);
-            *g = (norm - noise).max(0.0).powf(inv);
+            let x = (norm - noise).max(0.0);
+            // The root by square roots where it is one (lines, cubics): `powf` is a
+            // `libm` call several times their cost.
+            *g = match order {
+                2 => x.sqrt(),
+                4 => x.sqrt().sqrt(),
+                _ => x.powf(inv),
+            };
             total += *g;
         }
         let spans = scale * total / samples as f64;
