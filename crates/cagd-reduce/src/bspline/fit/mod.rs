@@ -104,20 +104,32 @@ impl Source {
     }
 
     /// The Bézier points of the source on `[a, b]` (inside piece `k`'s interval) in
-    /// `out`: piece `k` cut at `b` (its left part, [`left_part`]), then at `a` (the right
-    /// part, [`right_part`]), each by de Casteljau's triangle in place (`O(p^2)` convex
-    /// combinations).
-    fn restrict_into(&self, k: usize, (a, b): (f64, f64), out: &mut Vec<f64>) {
+    /// `out`: piece `k` cut at `b` (its left part), then at `a` (the right part), each by
+    /// de Casteljau's triangle ([`casteljau_part`], `O(p^2)` convex combinations); `tmp`
+    /// is scratch.
+    fn restrict_into(
+        &self,
+        k: usize,
+        (a, b): (f64, f64),
+        out: &mut Vec<f64>,
+        tmp: &mut [Vec<f64>; 3],
+    ) {
         let (pa, pb) = (self.breaks[k], self.breaks[k + 1]);
         let (s0, s1) = ((a - pa) / (pb - pa), (b - pa) / (pb - pa));
         let d = self.pdim;
+        let piece = self.piece(k);
         out.clear();
-        out.extend_from_slice(self.piece(k));
+        out.resize(piece.len(), 0.0);
+        let [left, x, y] = tmp;
+        left.clear();
+        left.extend_from_slice(piece);
         if s1 < 1.0 {
-            left_part(out, d, s1);
+            casteljau_part(piece, d, s1, Part::Left, left, (x, y));
         }
         if s0 > 0.0 {
-            right_part(out, d, s0 / s1);
+            casteljau_part(left, d, s0 / s1, Part::Right, out, (x, y));
+        } else {
+            out.copy_from_slice(left);
         }
     }
 
@@ -149,6 +161,7 @@ impl SpanData {
         self.subs.clear();
         self.exts.clear();
         let mut sub = Vec::with_capacity((src.degree + 1) * src.pdim);
+        let mut tmp = [Vec::new(), Vec::new(), Vec::new()];
         let mut unit = vec![0.0; m1 * m1];
         for i in 0..m1 {
             unit[i * m1 + i] = 1.0;
@@ -157,7 +170,7 @@ impl SpanData {
         for s in m..n {
             let (a, b) = (knots[s], knots[s + 1]);
             if a < b {
-                src.restrict_into(src.piece_of(a, b), (a, b), &mut sub);
+                src.restrict_into(src.piece_of(a, b), (a, b), &mut sub, &mut tmp);
                 self.subs.extend_from_slice(&sub);
                 span_bezier_of((knots, m), s, (&unit, m1), &mut ext, &mut work);
                 self.exts.extend_from_slice(&ext);
@@ -239,35 +252,49 @@ pub(crate) fn fit_restricted(
     Ok(out)
 }
 
-/// Replaces the Bézier points `x` (`dim` coordinates each) by those of the curve's part on
-/// `[t, 1]`, by de Casteljau's triangle in place: level `r` leaves `b_i^r` at point `i`
-/// (point `i` combines points `i` and `i + 1` of the level before, ascending), so after
-/// the last level point `i` is `b_i^(n - i)`.
-fn right_part(x: &mut [f64], dim: usize, t: f64) {
-    let u = 1.0 - t;
-    // Cells: each level is one pass over overlapping windows without index checks.
-    let x = std::cell::Cell::from_mut(x).as_slice_of_cells();
-    let len = x.len();
-    for r in (dim..len).step_by(dim) {
-        let n = len - r;
-        for (a, b) in x[..n].iter().zip(&x[dim..n + dim]) {
-            a.set(u * a.get() + t * b.get());
-        }
-    }
+/// Which part of a Bézier curve [`casteljau_part`] computes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Part {
+    /// On `[0, t]`: point `i` is `b_0^i`, the first point of level `i`.
+    Left,
+    /// On `[t, 1]`: point `i` is `b_i^(n - i)`, the last point of level `n - i`.
+    Right,
 }
 
-/// Replaces the Bézier points `x` (`dim` coordinates each) by those of the curve's part on
-/// `[0, t]`: the mirror of [`right_part`]; level `r` leaves `b_(i-r)^r` at point `i` (point
-/// `i` combines points `i - 1` and `i` of the level before, descending), so after the last
-/// level point `i` is `b_0^i`.
-fn left_part(x: &mut [f64], dim: usize, t: f64) {
+/// The Bézier points of the part `which` of the curve `from` (`dim` coordinates per
+/// point) split at `t` in `out` (as long as `from`), by de Casteljau's triangle: level `r`
+/// point `i` is `(1 - t) b_i^(r-1) + t b_(i+1)^(r-1)`, each level one pass over the whole
+/// level from one buffer of `bufs` into the other (no overlapping reads and writes, so the
+/// pass vectorises), the part's point of each level copied out as it is made.
+fn casteljau_part(
+    from: &[f64],
+    dim: usize,
+    t: f64,
+    which: Part,
+    out: &mut [f64],
+    (a, b): (&mut Vec<f64>, &mut Vec<f64>),
+) {
     let u = 1.0 - t;
-    let x = std::cell::Cell::from_mut(x).as_slice_of_cells();
-    let len = x.len();
+    let len = from.len();
+    a.clear();
+    a.extend_from_slice(from);
+    b.clear();
+    b.resize(len, 0.0);
+    match which {
+        Part::Left => out[..dim].copy_from_slice(&from[..dim]),
+        Part::Right => out[len - dim..].copy_from_slice(&from[len - dim..]),
+    }
+    let (mut old, mut new) = (a, b);
     for r in (dim..len).step_by(dim) {
-        for (a, b) in x[r..].iter().rev().zip(x[r - dim..len - dim].iter().rev()) {
-            a.set(u * b.get() + t * a.get());
+        let n = len - r;
+        for ((o, x), y) in new[..n].iter_mut().zip(&old[..n]).zip(&old[dim..n + dim]) {
+            *o = u * x + t * y;
         }
+        match which {
+            Part::Left => out[r..r + dim].copy_from_slice(&new[..dim]),
+            Part::Right => out[n - dim..n].copy_from_slice(&new[n - dim..n]),
+        }
+        std::mem::swap(&mut old, &mut new);
     }
 }
 
@@ -434,7 +461,8 @@ pub(crate) fn hull_span_bound(
     let (mut tgt, mut work) = (vec![0.0; (m + 1) * d], vec![0.0; (m + 1) * d]);
     span_bezier((knots, points, d, m), s, &mut tgt, &mut work);
     let mut sub = Vec::with_capacity((p + 1) * d);
-    src.restrict_into(src.piece_of(a, b), (a, b), &mut sub);
+    let mut tmp = [Vec::new(), Vec::new(), Vec::new()];
+    src.restrict_into(src.piece_of(a, b), (a, b), &mut sub, &mut tmp);
     let (mut sb, mut tb) = (vec![0.0; (p + 1) * blk], vec![0.0; (m + 1) * blk]);
     let mut worst: f64 = 0.0;
     for j in 0..d / blk {
