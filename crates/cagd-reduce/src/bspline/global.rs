@@ -12,7 +12,10 @@
 
 use cagd_core::{BSplineCurve, Error, Result, knot_multiplicity};
 
-use super::fit::{Source, SpanBound, fit, hull_span_bound, span_bounds};
+use super::fit::{
+    Source, SpanBound, SpanData, fit_restricted, hull_span_bound, predicted_knots,
+    span_bounds_restricted,
+};
 use super::grading::{GRADE, grading_breaks};
 use super::knots::order_at;
 use super::knots::{LocalBounds, Raw, Sharpen};
@@ -47,6 +50,12 @@ const CREEP_ROUNDS: usize = 6;
 /// Most spans the refinement may create (a safety net; a span whose tolerance is below its
 /// rounding floor stops the refinement at once).
 pub(crate) const MAX_FIT_SPANS: usize = 1 << 20;
+
+/// Most knots the prediction may add ([`predicted_knots`]; also at most half of
+/// [`MAX_FIT_WORK`] in its first round); more means the tolerance is far below what the
+/// input's pieces carry, and the refinement starts from the input's knots (and its work
+/// limits answer).
+const MAX_PREDICTED_KNOTS: usize = 1 << 16;
 
 /// Most work of one refinement, counted per span as its point coordinates plus
 /// [`SPAN_OVERHEAD`], times [`degree_cost`], summed over its rounds (each round fits and
@@ -166,7 +175,7 @@ fn splits(
 ///
 /// # Errors
 /// [`Error::ConditionNotMet`] when the budget is below the rounding level or needs more
-/// than [`MAX_FIT_SPANS`] spans or [`MAX_FIT_WORK`]; the errors of [`fit`].
+/// than [`MAX_FIT_SPANS`] spans or [`MAX_FIT_WORK`]; the errors of [`fit_restricted`].
 pub(crate) fn fit_to_budget(
     src: &Source,
     m: usize,
@@ -177,7 +186,7 @@ pub(crate) fn fit_to_budget(
 }
 
 /// [`fit_to_budget`], with per span of the result a value the error attains in `attained`
-/// (see [`span_bounds`]).
+/// (see [`span_bounds_restricted`]).
 fn fit_to_budget_attained(
     src: &Source,
     m: usize,
@@ -187,9 +196,13 @@ fn fit_to_budget_attained(
 ) -> Result<(Vec<f64>, Vec<f64>, Vec<SpanBound>)> {
     let mut rounds = 0;
     let mut work = 0usize;
+    let mut data = SpanData::default();
     loop {
-        let points = fit(src, m, &knots)?;
-        let bounds = span_bounds(src, m, (&knots, &points), budget, attained)?;
+        // One restriction of the source and one extraction per span, for the fit's rows
+        // and the bounds.
+        data.fill(src, m, &knots);
+        let points = fit_restricted(src, m, &knots, &data)?;
+        let bounds = span_bounds_restricted(src, m, (&knots, &points, &data), budget, attained)?;
         if bounds.iter().all(|x| x.bound <= budget) {
             return Ok((knots, points, bounds));
         }
@@ -264,7 +277,12 @@ pub(crate) fn reduce_global(
         curve.dim() + usize::from(rational),
         rational,
     )?;
-    let knots = initial_knots(curve.knots(), p, &src, m, k)?;
+    let mut knots = initial_knots(curve.knots(), p, &src, m, k)?;
+    // The first fit on knots placed where the error model wants them: one round instead
+    // of four on the a2 row's curves (issue 17).
+    let limit = MAX_PREDICTED_KNOTS.min(MAX_FIT_WORK / 2 / span_unit(&src).max(1));
+    knots.extend(predicted_knots(&src, m, FIT_SHARE * tol, limit));
+    knots.sort_by(f64::total_cmp);
     let mut attained = Vec::new();
     let (knots, points, bounds) =
         fit_to_budget_attained(&src, m, knots, FIT_SHARE * tol, &mut attained)?;

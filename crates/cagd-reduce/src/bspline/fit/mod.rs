@@ -12,7 +12,10 @@
 //! therefore, up to that constant, the squared norm of the residual of a weighted
 //! collocation system with one row per (span, node) — weight `sqrt(w_q h)` — and the fit
 //! is that system's least-squares solution, computed by banded Givens QR
-//! ([`banded_lsq`]). No normal equations are formed. (The `(p + 1)`-point rule, exact for
+//! ([`banded_lsq`]), each span's rows first compressed to `m + 1` by an orthogonal
+//! transformation fixed per `(p, m)` ([`span_rows`]; the source enters through its
+//! restriction to the span, which the span's bound uses too). No normal equations are
+//! formed. (The `(p + 1)`-point rule, exact for
 //! the whole integrand, gives the same minimiser with up to twice the rows; it was used
 //! until issue 17.)
 //!
@@ -21,17 +24,18 @@
 //! direction with one knot vector); the bound of a span is then the largest over the
 //! blocks, which bounds the surface by the partition of unity in the other direction.
 
-use cagd_core::{
-    BSplineCurve, ModelFrame, Result, basis_functions, binomial_f64, centred_rational_bound,
-    gauss_legendre,
-};
+use cagd_core::{BSplineCurve, ModelFrame, Result, centred_rational_bound};
 
 mod banded_lsq;
 mod node_bound;
+mod predict;
+mod span_rows;
 
 use crate::bezier::{hull_bound, max_norm};
 pub(crate) use banded_lsq::BandedLsq;
 use node_bound::NodeBound;
+pub(crate) use predict::predicted_knots;
+use span_rows::SpanRows;
 
 /// The spline to approximate, as Bézier pieces in working coordinates.
 #[derive(Debug, Clone)]
@@ -101,30 +105,31 @@ impl Source {
 
     /// The Bézier points of the source on `[a, b]` (inside piece `k`'s interval) in
     /// `out`: piece `k` cut at `b` (its left part), then at `a` (the right part), each by
-    /// de Casteljau's triangle in place ([`right_part`], `O(p^2)` convex combinations).
-    fn restrict_into(&self, k: usize, (a, b): (f64, f64), out: &mut Vec<f64>) {
+    /// de Casteljau's triangle ([`casteljau_part`], `O(p^2)` convex combinations); `tmp`
+    /// is scratch.
+    fn restrict_into(
+        &self,
+        k: usize,
+        (a, b): (f64, f64),
+        out: &mut Vec<f64>,
+        tmp: &mut [Vec<f64>; 3],
+    ) {
         let (pa, pb) = (self.breaks[k], self.breaks[k + 1]);
         let (s0, s1) = ((a - pa) / (pb - pa), (b - pa) / (pb - pa));
         let d = self.pdim;
+        let piece = self.piece(k);
         out.clear();
+        out.resize(piece.len(), 0.0);
+        let [left, x, y] = tmp;
+        left.clear();
+        left.extend_from_slice(piece);
         if s1 < 1.0 {
-            // The left part at s1 is the reversed right part of the reversed piece at
-            // 1 - s1.
-            for q in self.piece(k).chunks_exact(d).rev() {
-                out.extend_from_slice(q);
-            }
-            right_part(out, d, 1.0 - s1);
-            let np = out.len() / d;
-            for i in 0..np / 2 {
-                for c in 0..d {
-                    out.swap(i * d + c, (np - 1 - i) * d + c);
-                }
-            }
-        } else {
-            out.extend_from_slice(self.piece(k));
+            casteljau_part(piece, d, s1, Part::Left, left, (x, y));
         }
         if s0 > 0.0 {
-            right_part(out, d, s0 / s1);
+            casteljau_part(left, d, s0 / s1, Part::Right, out, (x, y));
+        } else {
+            out.copy_from_slice(left);
         }
     }
 
@@ -137,6 +142,43 @@ impl Source {
     }
 }
 
+/// What the fit's rows ([`span_rows`]) and the span bounds share per non-empty span
+/// `knots[s] < knots[s + 1]` of a degree-`m` knot vector (`s = m..n`, in order): the
+/// source's Bézier points on the span ([`Source::restrict_into`], `(p + 1) * pdim` values)
+/// and the span's Bézier extraction (`(m + 1) x (m + 1)`, row `l` the Bézier coefficients
+/// `l` of the basis functions `s - m ..= s`, by [`span_bezier_of`] on the unit vectors).
+#[derive(Debug, Default)]
+pub(crate) struct SpanData {
+    subs: Vec<f64>,
+    exts: Vec<f64>,
+}
+
+impl SpanData {
+    /// The data of every non-empty span of `knots` for the source `src`.
+    pub(crate) fn fill(&mut self, src: &Source, m: usize, knots: &[f64]) {
+        let n = knots.len() - m - 1;
+        let m1 = m + 1;
+        self.subs.clear();
+        self.exts.clear();
+        let mut sub = Vec::with_capacity((src.degree + 1) * src.pdim);
+        let mut tmp = [Vec::new(), Vec::new(), Vec::new()];
+        let mut unit = vec![0.0; m1 * m1];
+        for i in 0..m1 {
+            unit[i * m1 + i] = 1.0;
+        }
+        let (mut ext, mut work) = (vec![0.0; m1 * m1], vec![0.0; m1 * m1]);
+        for s in m..n {
+            let (a, b) = (knots[s], knots[s + 1]);
+            if a < b {
+                src.restrict_into(src.piece_of(a, b), (a, b), &mut sub, &mut tmp);
+                self.subs.extend_from_slice(&sub);
+                span_bezier_of((knots, m), s, (&unit, m1), &mut ext, &mut work);
+                self.exts.extend_from_slice(&ext);
+            }
+        }
+    }
+}
+
 /// The L2-best degree-`m` spline on the clamped knot vector `knots` (domain and every break
 /// of `src` among its knots) with the end points of `src`: its control points
 /// (`knots.len() - m - 1` points of `src.pdim` coordinates).
@@ -144,7 +186,26 @@ impl Source {
 /// # Errors
 /// [`cagd_core::Error::Singular`] if the system is rank-deficient (cannot happen for a
 /// valid knot vector: `p + 1 >= m + 1` nodes per span determine the span's polynomial).
+#[cfg(test)]
 pub(crate) fn fit(src: &Source, m: usize, knots: &[f64]) -> Result<Vec<f64>> {
+    let mut data = SpanData::default();
+    data.fill(src, m, knots);
+    fit_restricted(src, m, knots, &data)
+}
+
+/// `fit` with the spans' [`SpanData`] given: per span, its `m + 1`
+/// compressed Gauss rows ([`SpanRows`]: `ceil((p + m + 1) / 2)` nodes, exact for every
+/// term that depends on the fit) into the banded QR.
+///
+/// # Errors
+/// [`cagd_core::Error::Singular`] if the system is rank-deficient (cannot happen for a
+/// valid knot vector: `p + 1 >= m + 1` nodes per span determine the span's polynomial).
+pub(crate) fn fit_restricted(
+    src: &Source,
+    m: usize,
+    knots: &[f64],
+    data: &SpanData,
+) -> Result<Vec<f64>> {
     let (p, d) = (src.degree, src.pdim);
     let n = knots.len() - m - 1;
     let mut out = vec![0.0; n * d];
@@ -153,58 +214,37 @@ pub(crate) fn fit(src: &Source, m: usize, knots: &[f64]) -> Result<Vec<f64>> {
     if n <= 2 {
         return Ok(out);
     }
-    // ceil((p + m + 1) / 2) nodes: exact for every term that depends on the fit.
-    let (nodes, weights) = gauss_legendre((p + m + 2) / 2)?;
-    let mut lsq = BandedLsq::new(n - 2, m + 1, d);
-    let (mut basis, mut scratch) = (vec![0.0; m + 1], vec![0.0; 2 * m + 2]);
-    let (mut value, mut bern) = (vec![0.0; d], vec![0.0; p + 1]);
-    let mut row = Vec::with_capacity(m + 1);
-    let binom: Vec<f64> = (0..=p).map(|i| binomial_f64(p, i)).collect();
+    let span_rows = SpanRows::cached(p, m)?;
+    let m1 = m + 1;
+    let mut lsq = BandedLsq::new(n - 2, m1, d);
+    let (mut rows, mut rhs) = (vec![0.0; m1 * m1], vec![0.0; m1 * d]);
+    let mut subs = data.subs.chunks_exact((p + 1) * d);
+    let mut exts = data.exts.chunks_exact(m1 * m1);
     for s in m..n {
         let (a, b) = (knots[s], knots[s + 1]);
         if a >= b {
             continue;
         }
-        let k = src.piece_of(a, b);
-        let (pa, pb) = (src.breaks[k], src.breaks[k + 1]);
-        for (x, w) in nodes.iter().zip(&weights) {
-            let t = a + (b - a) * x;
-            let sw = (w * (b - a)).sqrt();
-            basis_functions(knots, s, m, t, &mut basis, &mut scratch);
-            // The source at the same (rounded) t as the basis row: its Bernstein basis
-            // values times its points, O(p) per node (a de Casteljau run is O(p^2) and took
-            // 70 % of a degree-30 fit). Evaluating a restriction of the piece at the exact
-            // node instead would not see t's rounding, which at a parameter offset of 1e5
-            // and spans of 1e-4 is 2e-7 of the span, and spoils fits of exact input.
-            bernstein_with(&binom, (t - pa) / (pb - pa), &mut bern);
-            value.fill(0.0);
-            for (bi, pt) in bern.iter().zip(src.piece(k).chunks_exact(d)) {
-                for (v, c) in value.iter_mut().zip(pt) {
-                    *v += bi * c;
-                }
-            }
+        let sub = subs.next().expect("one restriction per non-empty span");
+        let ext = exts.next().expect("one extraction per non-empty span");
+        span_rows.rows(b - a, ext, sub, d, &mut rows, &mut rhs);
+        for (row, value) in rows.chunks_exact_mut(m1).zip(rhs.chunks_exact_mut(d)) {
             // Columns s-m..=s; the first and last control points are fixed.
-            let mut lo = s - m;
-            let mut vals = &basis[..];
+            let (mut lo, mut hi) = (s - m, m1);
             if lo == 0 {
                 for (v, e) in value.iter_mut().zip(src.first_point()) {
-                    *v -= basis[0] * e;
+                    *v -= row[0] * e;
                 }
-                vals = &vals[1..];
                 lo = 1;
             }
             if s == n - 1 {
                 for (v, e) in value.iter_mut().zip(src.last_point()) {
-                    *v -= basis[m] * e;
+                    *v -= row[m] * e;
                 }
-                vals = &vals[..vals.len() - 1];
+                hi = m;
             }
-            row.clear();
-            row.extend(vals.iter().map(|v| sw * v));
-            for v in &mut value {
-                *v *= sw;
-            }
-            lsq.add_row(lo - 1, &row, &value);
+            let first = usize::from(s - m == 0);
+            lsq.add_row(lo - 1, &row[first..hi], value);
         }
     }
     let x = lsq.solve()?;
@@ -212,19 +252,49 @@ pub(crate) fn fit(src: &Source, m: usize, knots: &[f64]) -> Result<Vec<f64>> {
     Ok(out)
 }
 
-/// Replaces the Bézier points `x` (`dim` coordinates each) by those of the curve's part on
-/// `[t, 1]`, by de Casteljau's triangle in place: level `r` leaves `b_i^r` at point `i`
-/// (point `i` combines points `i` and `i + 1` of the level before, ascending), so after
-/// the last level point `i` is `b_i^(n - i)`.
-fn right_part(x: &mut [f64], dim: usize, t: f64) {
+/// Which part of a Bézier curve [`casteljau_part`] computes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Part {
+    /// On `[0, t]`: point `i` is `b_0^i`, the first point of level `i`.
+    Left,
+    /// On `[t, 1]`: point `i` is `b_i^(n - i)`, the last point of level `n - i`.
+    Right,
+}
+
+/// The Bézier points of the part `which` of the curve `from` (`dim` coordinates per
+/// point) split at `t` in `out` (as long as `from`), by de Casteljau's triangle: level `r`
+/// point `i` is `(1 - t) b_i^(r-1) + t b_(i+1)^(r-1)`, each level one pass over the whole
+/// level from one buffer of `bufs` into the other (no overlapping reads and writes, so the
+/// pass vectorises), the part's point of each level copied out as it is made.
+fn casteljau_part(
+    from: &[f64],
+    dim: usize,
+    t: f64,
+    which: Part,
+    out: &mut [f64],
+    (a, b): (&mut Vec<f64>, &mut Vec<f64>),
+) {
     let u = 1.0 - t;
-    let len = x.len();
+    let len = from.len();
+    a.clear();
+    a.extend_from_slice(from);
+    b.clear();
+    b.resize(len, 0.0);
+    match which {
+        Part::Left => out[..dim].copy_from_slice(&from[..dim]),
+        Part::Right => out[len - dim..].copy_from_slice(&from[len - dim..]),
+    }
+    let (mut old, mut new) = (a, b);
     for r in (dim..len).step_by(dim) {
-        let level = &mut x[..len - r + dim];
-        let n = level.len() - dim;
-        for j in 0..n {
-            level[j] = u * level[j] + t * level[j + dim];
+        let n = len - r;
+        for ((o, x), y) in new[..n].iter_mut().zip(&old[..n]).zip(&old[dim..n + dim]) {
+            *o = u * x + t * y;
         }
+        match which {
+            Part::Left => out[r..r + dim].copy_from_slice(&new[..dim]),
+            Part::Right => out[n - dim..n].copy_from_slice(&new[n - dim..n]),
+        }
+        std::mem::swap(&mut old, &mut new);
     }
 }
 
@@ -257,6 +327,20 @@ pub(crate) struct SpanBound {
     pub(crate) floor: f64,
 }
 
+/// [`span_bounds_restricted`], the [`SpanData`] computed here (the tests' entry).
+#[cfg(test)]
+pub(crate) fn span_bounds(
+    src: &Source,
+    m: usize,
+    (knots, points): (&[f64], &[f64]),
+    sharpen: f64,
+    attained: &mut Vec<f64>,
+) -> Result<Vec<SpanBound>> {
+    let mut data = SpanData::default();
+    data.fill(src, m, knots);
+    span_bounds_restricted(src, m, (knots, points, &data), sharpen, attained)
+}
+
 /// The spans `[a, b]` of the degree-`m` spline `(knots, points)` (working coordinates of
 /// `src`) with a certified bound of `max ||C - S||` on each (Euclidean, model space): per
 /// span, the piece of `C` restricted to it minus the piece of `S`, bounded by its values
@@ -268,11 +352,15 @@ pub(crate) struct SpanBound {
 /// A span on which a control weight of `S` is not positive gets an infinite bound.
 /// `attained` receives per span a value the error attains up to rounding (the largest
 /// node value; the bound itself where a span has no node bound): no sharper bound of the
-/// span can be below it.
-pub(crate) fn span_bounds(
+/// span can be below it. `data` holds the spans' restrictions and extractions; a
+/// polynomial span's piece of `S` is its extraction times its control points.
+///
+/// # Errors
+/// [`cagd_core::Error::LengthMismatch`] when `knots` and `points` do not match.
+pub(crate) fn span_bounds_restricted(
     src: &Source,
     m: usize,
-    (knots, points): (&[f64], &[f64]),
+    (knots, points, data): (&[f64], &[f64], &SpanData),
     sharpen: f64,
     attained: &mut Vec<f64>,
 ) -> Result<Vec<SpanBound>> {
@@ -287,7 +375,8 @@ pub(crate) fn span_bounds(
         });
     }
     let mut out = Vec::with_capacity(n - m);
-    let mut sub = Vec::with_capacity((p + 1) * d);
+    let mut subs = data.subs.chunks_exact((p + 1) * d);
+    let mut exts = data.exts.chunks_exact((m + 1) * (m + 1));
     let (mut tgt, mut scratch) = (vec![0.0; (m + 1) * d], vec![0.0; (m + 1) * d]);
     let (mut sb, mut tb) = (vec![0.0; (p + 1) * blk], vec![0.0; (m + 1) * blk]);
     let (mut qb, mut pb) = (vec![0.0; (m + 1) * blk], vec![0.0; (p + 1) * blk]);
@@ -298,23 +387,38 @@ pub(crate) fn span_bounds(
         if a >= b {
             continue;
         }
-        span_bezier((knots, points, d, m), s, &mut tgt, &mut scratch);
         let k = src.piece_of(a, b);
-        src.restrict_into(k, (a, b), &mut sub);
+        let sub = subs.next().expect("one restriction per non-empty span");
+        let ext = exts.next().expect("one extraction per non-empty span");
+        let local = &points[(s - m) * d..(s + 1) * d];
+        if src.rational {
+            span_bezier((knots, points, d, m), s, &mut tgt, &mut scratch);
+        } else {
+            // E Q: a convex combination per point (the rows of E are non-negative and sum
+            // to one); its rounding is in `NodeBound::bound`'s allowance.
+            tgt.fill(0.0);
+            for (t, e) in tgt.chunks_exact_mut(d).zip(ext.chunks_exact(m + 1)) {
+                for (c, q) in e.iter().zip(local.chunks_exact(d)) {
+                    for (v, x) in t.iter_mut().zip(q) {
+                        *v += c * x;
+                    }
+                }
+            }
+        }
         let (bound, floor, lower) = if src.rational {
             let span_points = &points[(s - m) * d..(s + 1) * d];
             let vmin = span_points
                 .chunks_exact(blk)
                 .map(|q| q[blk - 1])
                 .fold(f64::INFINITY, f64::min);
-            let (bound, floor) = rational_bound(&sub, &tgt, (d, blk, p), vmin);
+            let (bound, floor) = rational_bound(sub, &tgt, (d, blk, p), vmin);
             (bound, floor, bound)
         } else {
             let nodes = nodes.as_ref().expect("built for polynomial input");
             let (mut eps, mut floor, mut seen): (f64, f64, f64) = (0.0, 0.0, 0.0);
             let span_points = &points[(s - m) * d..(s + 1) * d];
             for j in 0..d / blk {
-                copy_block(&sub, d, j, blk, &mut sb);
+                copy_block(sub, d, j, blk, &mut sb);
                 copy_block(&tgt, d, j, blk, &mut tb);
                 copy_block(span_points, d, j, blk, &mut qb);
                 let pmax = max_norm(block_of(src.piece(k), d, j, blk, &mut pb), blk);
@@ -341,7 +445,7 @@ pub(crate) fn span_bounds(
 /// The refined-hull bound ([`crate::bezier::hull_bound`]) of `max ||C - S||` on the span
 /// `[a, b]` of the polynomial fit `(knots, points)` of degree `m` (`a` a knot; the largest
 /// over the blocks): the sharper bound a knot removal asks for where the node bound of
-/// [`span_bounds`] leaves it no room. `+inf` for rational input (its bound has no node
+/// [`span_bounds_restricted`] leaves it no room. `+inf` for rational input (its bound has no node
 /// route to sharpen).
 pub(crate) fn hull_span_bound(
     src: &Source,
@@ -357,7 +461,8 @@ pub(crate) fn hull_span_bound(
     let (mut tgt, mut work) = (vec![0.0; (m + 1) * d], vec![0.0; (m + 1) * d]);
     span_bezier((knots, points, d, m), s, &mut tgt, &mut work);
     let mut sub = Vec::with_capacity((p + 1) * d);
-    src.restrict_into(src.piece_of(a, b), (a, b), &mut sub);
+    let mut tmp = [Vec::new(), Vec::new(), Vec::new()];
+    src.restrict_into(src.piece_of(a, b), (a, b), &mut sub, &mut tmp);
     let (mut sb, mut tb) = (vec![0.0; (p + 1) * blk], vec![0.0; (m + 1) * blk]);
     let mut worst: f64 = 0.0;
     for j in 0..d / blk {
@@ -378,9 +483,27 @@ fn span_bezier(
     out: &mut [f64],
     work: &mut [f64],
 ) {
+    span_bezier_of(
+        (knots, m),
+        s,
+        (&points[(s - m) * d..(s + 1) * d], d),
+        out,
+        work,
+    );
+}
+
+/// [`span_bezier`] from the span's own `m + 1` points `local` (those of `s - m ..= s`, `d`
+/// coordinates each); with the unit vectors as points, the span's Bézier extraction.
+fn span_bezier_of(
+    (knots, m): (&[f64], usize),
+    s: usize,
+    (local, d): (&[f64], usize),
+    out: &mut [f64],
+    work: &mut [f64],
+) {
     let (a, b) = (knots[s], knots[s + 1]);
     for k in 0..=m {
-        work.copy_from_slice(&points[(s - m) * d..(s + 1) * d]);
+        work.copy_from_slice(local);
         for r in 1..=m {
             let u = if r <= m - k { a } else { b };
             // Point i (of s - m ..= s) at level r, descending so that point i - 1 is

@@ -3,7 +3,7 @@
 //! target space is reproduced, span bounds cover sampled errors, unclamped input.
 
 use super::*;
-use cagd_core::find_span;
+use cagd_core::{basis_functions, find_span};
 
 /// A clamped degree-5 planar spline with uneven spans and a double knot.
 fn quintic() -> BSplineCurve {
