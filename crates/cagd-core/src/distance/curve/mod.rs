@@ -213,7 +213,8 @@ pub fn max_distance_1d(
 /// best value. On a difference at the rounding level (an exact reproduction, whose sampled
 /// distance is noise with a local maximum at every other sample) this refines a handful of
 /// maxima instead of all of them: it took 87 % of the measurement of conics reduced
-/// exactly (issue 17, real-CAD-file row). End samples are always refined.
+/// exactly (issue 17, real-CAD-file row). An end sample is judged by the parabola through
+/// it and its next two samples (`reach`).
 pub fn refine_sampled_maxima(
     f: &impl Fn(f64, &mut [f64]),
     g: &impl Fn(f64, &mut [f64]),
@@ -233,15 +234,13 @@ pub fn refine_sampled_maxima(
             }
         };
         // The local maxima with at least one strict side (a flat run needs no refinement:
-        // its value is already known to rounding), with the most their refinement can add
-        // under the parabola model (infinite at the ends).
+        // its value is already known to rounding), with the most their refinement can reach.
         let mut maxima: Vec<(usize, f64)> = (0..=n)
             .filter_map(|i| {
                 let left = if i > 0 { d2[i - 1] } else { f64::NEG_INFINITY };
                 let right = if i < n { d2[i + 1] } else { f64::NEG_INFINITY };
                 let v = d2[i];
-                (v >= left && v >= right && (v > left || v > right))
-                    .then(|| (i, v + (v - left.min(right))))
+                (v >= left && v >= right && (v > left || v > right)).then(|| (i, reach(d2, i)))
             })
             .collect();
         maxima.sort_by(|x, y| d2[y.0].total_cmp(&d2[x.0]));
@@ -260,6 +259,38 @@ pub fn refine_sampled_maxima(
         }
     }
     best.sqrt()
+}
+
+/// The most the squared distance can reach around the sampled local maximum `d2[i]`
+/// under the parabola model of [`refine_sampled_maxima`], with a margin of four: inside,
+/// `d_i + (d_i - min(d_(i-1), d_(i+1)))`; at an end, `d_i` plus the larger of four times
+/// the rise of the parabola through the end and its next two samples over the end interval
+/// and the drop to the next sample (the inside rule's margin), infinite with fewer than
+/// three samples.
+fn reach(d2: &[f64], i: usize) -> f64 {
+    let n = d2.len() - 1;
+    let v = d2[i];
+    if i > 0 && i < n {
+        return v + (v - d2[i - 1].min(d2[i + 1]));
+    }
+    if n < 2 {
+        return f64::INFINITY;
+    }
+    let (v1, v2) = if i == 0 {
+        (d2[1], d2[2])
+    } else {
+        (d2[n - 1], d2[n - 2])
+    };
+    // q(x) = v + b x + a x^2 through (0, v), (1, v1), (2, v2), x counted inwards.
+    let a = 0.5 * (v - 2.0 * v1 + v2);
+    let b = v1 - v - a;
+    let rise = if a < 0.0 {
+        let x = (-b / (2.0 * a)).clamp(0.0, 1.0);
+        b * x + a * x * x
+    } else {
+        b + a
+    };
+    v + (4.0 * rise).max(v - v1).max(0.0)
 }
 
 /// The parametric distance `max_{t in [0,1]} ||a(t) - b(t)||` (Euclidean norm) between two

@@ -246,3 +246,34 @@ proptest! {
         prop_assert!(pruned >= all * (1.0 - 1e-12) || all - pruned <= 64.0 * f64::EPSILON, "pruned {pruned:e} all {all:e}");
     }
 }
+
+/// A maximum between the last two samples (or the first two), the shape the end rule
+/// judges by its parabola: found to rounding, at both ends and at several offsets.
+#[test]
+fn maximum_inside_an_end_interval_is_refined() {
+    let n = 10;
+    for (k, offset) in [0.1, 0.3, 0.5, 0.7, 0.9].into_iter().enumerate() {
+        for at_start in [false, true] {
+            let peak = if at_start {
+                offset / n as f64
+            } else {
+                1.0 - offset / n as f64
+            };
+            let f = move |t: f64, o: &mut [f64]| o[0] = 2.0 + k as f64 - 1.5 * (t - peak).powi(2);
+            let g = |_: f64, o: &mut [f64]| o[0] = 0.0;
+            let d2: Vec<f64> = (0..=n)
+                .map(|i| {
+                    let mut o = [0.0];
+                    f(i as f64 / n as f64, &mut o);
+                    o[0] * o[0]
+                })
+                .collect();
+            let d = refine_sampled_maxima(&f, &g, 1, 0.0, 1.0, &d2);
+            let exact = 2.0 + k as f64;
+            assert!(
+                (d - exact).abs() <= 1e-12 * exact,
+                "peak {peak}: {d} vs {exact}"
+            );
+        }
+    }
+}
