@@ -27,22 +27,28 @@ impl Rng {
         Self(0x9E37_79B9_7F4A_7C15 ^ seed.wrapping_mul(0x2545_F491_4F6C_DD1D))
     }
 
-    /// Uniform in `[0, 1)`.
-    fn unit(&mut self) -> f64 {
+    fn next(&mut self) -> u64 {
         let s = &mut self.0;
         *s ^= *s << 13;
         *s ^= *s >> 7;
         *s ^= *s << 17;
-        (*s >> 11) as f64 / (1u64 << 53) as f64
+        *s
+    }
+
+    /// Uniform in `[0, 1)`.
+    fn unit(&mut self) -> f64 {
+        (self.next() >> 11) as f64 / (1u64 << 53) as f64
     }
 
     fn range(&mut self, lo: f64, hi: f64) -> f64 {
         lo + (hi - lo) * self.unit()
     }
 
-    /// Uniform in `lo..=hi`.
+    /// Uniform in `lo..=hi` (`hi - lo < 2^11`): `floor(unit * count)` in integers.
     fn int(&mut self, lo: usize, hi: usize) -> usize {
-        lo + ((self.unit() * (hi - lo + 1) as f64) as usize).min(hi - lo)
+        let count = (hi - lo + 1) as u64;
+        let k = ((self.next() >> 11) * count) >> 53;
+        lo + usize::try_from(k).unwrap_or(0).min(hi - lo)
     }
 }
 
