@@ -2,10 +2,8 @@
 //!
 //! All formulas of the seeds use `C(n, k)` for `n` up to `2 * MAX_DEGREE + 2`
 //! (e.g. `C(2n, n)` in seed 000 eq. 14.2.6 and the Vandermonde forms of §14.3.2). They are
-//! kept exactly in a `u128` Pascal triangle: the largest, `C(130, 65) ≈ 9.5e37`, is below
-//! `2^128 ≈ 3.4e38`.
-
-use std::sync::OnceLock;
+//! kept exactly in a `u128` Pascal triangle (built at compile time): the largest,
+//! `C(130, 65) ≈ 9.5e37`, is below `2^128 ≈ 3.4e38`.
 
 use crate::{Error, Result};
 
@@ -15,19 +13,48 @@ pub const MAX_DEGREE: usize = 64;
 /// The largest `n` for which [`binomial`] is exact: `2 * MAX_DEGREE + 2`.
 pub const MAX_BINOMIAL_N: usize = 2 * MAX_DEGREE + 2;
 
-fn table() -> &'static [Vec<u128>] {
-    static TABLE: OnceLock<Vec<Vec<u128>>> = OnceLock::new();
-    TABLE.get_or_init(|| {
-        let mut rows: Vec<Vec<u128>> = Vec::with_capacity(MAX_BINOMIAL_N + 1);
-        for n in 0..=MAX_BINOMIAL_N {
-            let mut row = vec![1u128; n + 1];
-            for k in 1..n {
-                row[k] = rows[n - 1][k - 1] + rows[n - 1][k];
-            }
-            rows.push(row);
+/// Entries of the triangle `C(n, k)`, `0 <= k <= n <= MAX_BINOMIAL_N`, row after row.
+const ENTRIES: usize = (MAX_BINOMIAL_N + 1) * (MAX_BINOMIAL_N + 2) / 2;
+
+/// The index of `C(n, 0)` in the row-after-row triangle.
+const fn row_start(n: usize) -> usize {
+    n * (n + 1) / 2
+}
+
+/// The Pascal triangle in `u128`, built at compile time (ADDED: it was built on first use,
+/// with the rounded copy of [`binomial_f64`] 0.6 M instructions — a tenth of a small
+/// `cagd reduce` process, issue 17's real-CAD-file row).
+static EXACT: [u128; ENTRIES] = pascal();
+
+/// [`EXACT`] with every value rounded once to the nearest `f64`.
+static ROUNDED: [f64; ENTRIES] = rounded();
+
+const fn pascal() -> [u128; ENTRIES] {
+    let mut t = [0u128; ENTRIES];
+    let mut n = 0;
+    while n <= MAX_BINOMIAL_N {
+        let s = row_start(n);
+        t[s] = 1;
+        t[s + n] = 1;
+        let mut k = 1;
+        while k < n {
+            t[s + k] = t[row_start(n - 1) + k - 1] + t[row_start(n - 1) + k];
+            k += 1;
         }
-        rows
-    })
+        n += 1;
+    }
+    t
+}
+
+const fn rounded() -> [f64; ENTRIES] {
+    let exact = pascal();
+    let mut t = [0.0f64; ENTRIES];
+    let mut i = 0;
+    while i < ENTRIES {
+        t[i] = exact[i] as f64;
+        i += 1;
+    }
+    t
 }
 
 /// `C(n, k)` exactly; `0` when `k > n`.
@@ -43,7 +70,7 @@ pub fn binomial(n: usize, k: usize) -> u128 {
     if k > n || n > MAX_BINOMIAL_N {
         return 0;
     }
-    table()[n][k]
+    EXACT[row_start(n) + k]
 }
 
 /// `C(n, k)` exactly, or [`Error::DegreeOutOfRange`] when `n > MAX_BINOMIAL_N`.
@@ -58,21 +85,14 @@ pub fn try_binomial(n: usize, k: usize) -> Result<u128> {
 }
 
 /// `C(n, k)` rounded to the nearest `f64` (exact below `2^53`), from a table of the exact
-/// values each rounded once (a `u128 -> f64` conversion is a libcall, and Bernstein
-/// evaluation in the fit and the bounds asks for these in inner loops); `0` when `k > n`
-/// or `n` is beyond the exact table, as [`binomial`].
+/// values each rounded once at compile time (a `u128 -> f64` conversion is a libcall, and
+/// Bernstein evaluation in the fit and the bounds asks for these in inner loops); `0` when
+/// `k > n` or `n` is beyond the exact table, as [`binomial`].
 pub fn binomial_f64(n: usize, k: usize) -> f64 {
-    static TABLE: OnceLock<Vec<Vec<f64>>> = OnceLock::new();
-    let rows = TABLE.get_or_init(|| {
-        table()
-            .iter()
-            .map(|row| row.iter().map(|&c| c as f64).collect())
-            .collect()
-    });
     if k > n || n > MAX_BINOMIAL_N {
         return 0.0;
     }
-    rows[n][k]
+    ROUNDED[row_start(n) + k]
 }
 
 /// `(-1)^(n-i) C(n, i)`, the sign vector `c_i^(n)` of seed 000 eq. 14.1.1 / 14.2.5.
@@ -122,6 +142,28 @@ mod tests {
                 binomial(120, k) * (120 - k as u128)
             );
         }
+    }
+
+    /// The compile-time rounding is the run-time one: every entry of the `f64` table is
+    /// its exact value converted here, and the exact table satisfies Pascal's rule.
+    #[test]
+    fn rounded_table_is_the_exact_one_rounded() {
+        for n in 0..=MAX_BINOMIAL_N {
+            for k in 0..=n {
+                let exact = binomial(n, k);
+                assert_eq!(
+                    binomial_f64(n, k),
+                    std::hint::black_box(exact) as f64,
+                    "C({n}, {k})"
+                );
+                if n > 0 && k > 0 && k < n {
+                    assert_eq!(exact, binomial(n - 1, k - 1) + binomial(n - 1, k));
+                }
+            }
+            assert_eq!((binomial(n, 0), binomial(n, n)), (1, 1));
+        }
+        assert_eq!(binomial_f64(5, 6), 0.0);
+        assert_eq!(binomial_f64(MAX_BINOMIAL_N + 1, 0), 0.0);
     }
 
     #[test]

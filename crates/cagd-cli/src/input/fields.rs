@@ -47,14 +47,20 @@ pub(crate) fn field<'a>(obj: &'a Value, path: &str, name: &str) -> Result<&'a Va
         .ok_or_else(|| InputError::new(format!("{path}.{name}"), "missing field"))
 }
 
-pub(crate) fn number(v: &Value, path: &str) -> Result<f64, InputError> {
-    let x = v
-        .as_f64()
-        .ok_or_else(|| InputError::new(path, format!("expected a number, got {v}")))?;
+/// A finite number; `path` names it (formatted only on failure: `cagd reduce` reads every
+/// coordinate of its input through here, and formatting `points[i][k]` for each was a
+/// tenth of a small command's work, issue 17's real-CAD-file row).
+fn number_at(v: &Value, path: &dyn Fn() -> String) -> Result<f64, InputError> {
+    let Some(x) = v.as_f64() else {
+        return Err(InputError::new(
+            path(),
+            format!("expected a number, got {v}"),
+        ));
+    };
     if x.is_finite() {
         Ok(x)
     } else {
-        Err(InputError::new(path, "number is not finite"))
+        Err(InputError::new(path(), "number is not finite"))
     }
 }
 
@@ -90,10 +96,10 @@ pub(crate) fn check_total(total: usize, limit: usize, path: &str) -> Result<(), 
 }
 
 /// Refuses an array of more than [`MAX_POINTS`] entries.
-fn check_len(arr: &[Value], path: &str) -> Result<(), InputError> {
+fn check_len(arr: &[Value], path: &dyn Fn() -> String) -> Result<(), InputError> {
     if arr.len() > MAX_POINTS {
         return Err(InputError::new(
-            path,
+            path(),
             format!("has {} entries, above the limit of {MAX_POINTS}", arr.len()),
         ));
     }
@@ -101,13 +107,18 @@ fn check_len(arr: &[Value], path: &str) -> Result<(), InputError> {
 }
 
 pub(crate) fn numbers(v: &Value, path: &str) -> Result<Vec<f64>, InputError> {
+    numbers_at(v, &|| path.to_string())
+}
+
+/// [`numbers`] with the path formatted only on failure.
+fn numbers_at(v: &Value, path: &dyn Fn() -> String) -> Result<Vec<f64>, InputError> {
     let arr = v
         .as_array()
-        .ok_or_else(|| InputError::new(path, "expected an array of numbers"))?;
+        .ok_or_else(|| InputError::new(path(), "expected an array of numbers"))?;
     check_len(arr, path)?;
     arr.iter()
         .enumerate()
-        .map(|(i, x)| number(x, &format!("{path}[{i}]")))
+        .map(|(i, x)| number_at(x, &|| format!("{}[{i}]", path())))
         .collect()
 }
 
@@ -115,29 +126,32 @@ pub(crate) fn point_list(v: &Value, path: &str) -> Result<PointList, InputError>
     let arr = v
         .as_array()
         .ok_or_else(|| InputError::new(path, "expected an array of points"))?;
-    check_len(arr, path)?;
+    check_len(arr, &|| path.to_string())?;
     if arr.is_empty() {
         return Err(InputError::new(path, "expected at least one point"));
     }
-    let mut coords = Vec::new();
+    let mut coords = Vec::with_capacity(arr.len() * 3);
     let mut dim = 0;
     for (i, p) in arr.iter().enumerate() {
-        let pp = format!("{path}[{i}]");
-        let c = numbers(p, &pp)?;
+        let pp = || format!("{path}[{i}]");
+        let c = numbers_at(p, &pp)?;
         if i == 0 {
             if c.is_empty() {
-                return Err(InputError::new(pp, "a point needs at least one coordinate"));
+                return Err(InputError::new(
+                    pp(),
+                    "a point needs at least one coordinate",
+                ));
             }
             if c.len() > MAX_DIM {
                 return Err(InputError::new(
-                    pp,
+                    pp(),
                     format!("has {} coordinates, above the limit of {MAX_DIM}", c.len()),
                 ));
             }
             dim = c.len();
         } else if c.len() != dim {
             return Err(InputError::new(
-                pp,
+                pp(),
                 format!("has {} coordinates, the first point has {dim}", c.len()),
             ));
         }

@@ -189,3 +189,91 @@ proptest! {
         prop_assert!(d <= grid * (1.0 + 1e-6) + 1e-14);
     }
 }
+
+/// The reference of [`refine_sampled_maxima`]'s pruning: every sampled local maximum
+/// refined (the function before the pruning).
+fn refine_all(
+    f: &impl Fn(f64, &mut [f64]),
+    g: &impl Fn(f64, &mut [f64]),
+    dim: usize,
+    d2: &[f64],
+) -> f64 {
+    let n = d2.len() - 1;
+    let t_at = |i: usize| i as f64 / n as f64;
+    let (mut a, mut b) = (vec![0.0; dim], vec![0.0; dim]);
+    let mut h = |t: f64| sq_dist(f, g, t, &mut a, &mut b);
+    let mut best = d2.iter().copied().fold(0.0f64, f64::max);
+    for i in 0..=n {
+        let left = if i > 0 { d2[i - 1] } else { f64::NEG_INFINITY };
+        let right = if i < n { d2[i + 1] } else { f64::NEG_INFINITY };
+        if d2[i] >= left && d2[i] >= right && (d2[i] > left || d2[i] > right) {
+            let (_, v) = brent_max(
+                &mut h,
+                t_at(i.saturating_sub(1)),
+                t_at((i + 1).min(n)),
+                t_at(i),
+            );
+            best = best.max(v);
+        }
+    }
+    best.sqrt()
+}
+
+proptest! {
+    /// The pruned refinement finds the maximum that refining every sampled local maximum
+    /// finds: on differences with several maxima of similar size (a curve against a
+    /// perturbed copy of itself, perturbations from 1 down to the rounding level, where
+    /// the sampled distance is noise).
+    #[test]
+    fn pruning_keeps_the_maximum(p in cagd_testkit::points(12, 3), e in cagd_testkit::points(12, 3), scale in -16i32..=0) {
+        let size = 10f64.powi(scale);
+        let q: Vec<f64> = p.iter().zip(&e).map(|(x, y)| x + size * y).collect();
+        let (a, b) = (BezierCurve::new(p, 3).unwrap(), BezierCurve::new(q, 3).unwrap());
+        let f = |t: f64, o: &mut [f64]| a.eval_into(t, o);
+        let g = |t: f64, o: &mut [f64]| b.eval_into(t, o);
+        let n = 8 * 22 + 64;
+        let d2: Vec<f64> = (0..=n)
+            .map(|i| {
+                let (x, y) = (a.eval(i as f64 / n as f64), b.eval(i as f64 / n as f64));
+                x.iter().zip(&y).map(|(u, v)| (u - v) * (u - v)).sum()
+            })
+            .collect();
+        let pruned = refine_sampled_maxima(&f, &g, 3, 0.0, 1.0, &d2);
+        let all = refine_all(&f, &g, 3, &d2);
+        // Equal, up to the value error of Brent's stopping rule (relative ~eps in the
+        // square at a smooth maximum) or a rounding-level spike at the noise floor.
+        prop_assert!(pruned <= all);
+        prop_assert!(pruned >= all * (1.0 - 1e-12) || all - pruned <= 64.0 * f64::EPSILON, "pruned {pruned:e} all {all:e}");
+    }
+}
+
+/// A maximum between the last two samples (or the first two), the shape the end rule
+/// judges by its parabola: found to rounding, at both ends and at several offsets.
+#[test]
+fn maximum_inside_an_end_interval_is_refined() {
+    let n = 10;
+    for (k, offset) in [0.1, 0.3, 0.5, 0.7, 0.9].into_iter().enumerate() {
+        for at_start in [false, true] {
+            let peak = if at_start {
+                offset / n as f64
+            } else {
+                1.0 - offset / n as f64
+            };
+            let f = move |t: f64, o: &mut [f64]| o[0] = 2.0 + k as f64 - 1.5 * (t - peak).powi(2);
+            let g = |_: f64, o: &mut [f64]| o[0] = 0.0;
+            let d2: Vec<f64> = (0..=n)
+                .map(|i| {
+                    let mut o = [0.0];
+                    f(i as f64 / n as f64, &mut o);
+                    o[0] * o[0]
+                })
+                .collect();
+            let d = refine_sampled_maxima(&f, &g, 1, 0.0, 1.0, &d2);
+            let exact = 2.0 + k as f64;
+            assert!(
+                (d - exact).abs() <= 1e-12 * exact,
+                "peak {peak}: {d} vs {exact}"
+            );
+        }
+    }
+}

@@ -24,7 +24,7 @@
 //! direction with one knot vector); the bound of a span is then the largest over the
 //! blocks, which bounds the surface by the partition of unity in the other direction.
 
-use cagd_core::{BSplineCurve, ModelFrame, Result, centred_rational_bound};
+use cagd_core::{BSplineCurve, Result};
 
 mod banded_lsq;
 mod node_bound;
@@ -348,7 +348,8 @@ pub(crate) fn span_bounds(
 /// [`node_bound::RATIO`] of the true maximum) and, where that bound is above `sharpen`
 /// while the largest node value is not, also by the refined convex hull of the difference
 /// with `S` elevated to degree `p` ([`crate::bezier::hull_bound`]), the smaller of the two;
-/// the largest over the blocks. For NURBS by [`rational_bound`] (centred, in model space).
+/// the largest over the blocks. For NURBS by [`rational_bound`] (centred, in model space, node bounds with
+/// the hulls above `sharpen`: `rational_span.rs`).
 /// A span on which a control weight of `S` is not positive gets an infinite bound.
 /// `attained` receives per span a value the error attains up to rounding (the largest
 /// node value; the bound itself where a span has no node bound): no sharper bound of the
@@ -380,7 +381,7 @@ pub(crate) fn span_bounds_restricted(
     let (mut tgt, mut scratch) = (vec![0.0; (m + 1) * d], vec![0.0; (m + 1) * d]);
     let (mut sb, mut tb) = (vec![0.0; (p + 1) * blk], vec![0.0; (m + 1) * blk]);
     let (mut qb, mut pb) = (vec![0.0; (m + 1) * blk], vec![0.0; (p + 1) * blk]);
-    let nodes = (!src.rational).then(|| NodeBound::cached(p, m));
+    let nodes = NodeBound::cached(p, m);
     let mut vals = Vec::new();
     for s in m..n {
         let (a, b) = (knots[s], knots[s + 1]);
@@ -411,10 +412,15 @@ pub(crate) fn span_bounds_restricted(
                 .chunks_exact(blk)
                 .map(|q| q[blk - 1])
                 .fold(f64::INFINITY, f64::min);
-            let (bound, floor) = rational_bound(sub, &tgt, (d, blk, p), vmin);
+            let span = RationalSpan {
+                sub,
+                piece: src.piece(k),
+                tgt: &tgt,
+                fit: span_points,
+            };
+            let (bound, floor) = rational_bound(&span, &nodes, (d, blk, p), vmin, sharpen);
             (bound, floor, bound)
         } else {
-            let nodes = nodes.as_ref().expect("built for polynomial input");
             let (mut eps, mut floor, mut seen): (f64, f64, f64) = (0.0, 0.0, 0.0);
             let span_points = &points[(s - m) * d..(s + 1) * d];
             for j in 0..d / blk {
@@ -521,65 +527,6 @@ fn span_bezier_of(
     }
 }
 
-/// `(bound, floor)` of one span of a rational bundle: `sub` the input's Bézier points on
-/// the span (`p + 1` points of `d` homogeneous coordinates, blocks of `blk`), `tgt` the
-/// fit's (`m + 1` points), `vmin` the smallest control weight of the fit on the span.
-///
-/// With a centre `c` (of the input's model-space points on the span) and `R = max ||P_i -
-/// c||`, `C - S = ((C - c)(W' - W) + (A_c - A'_c)) / W'` where `A_c = A - c W`: the input
-/// curve lies in the hull of its points, so `||C - c|| <= R`, and with `h_A` the refined
-/// hull bound of `A_c - A'_c` and `h_W` that of `W - W'` (the largest over the blocks:
-/// the bundle combines them convexly), `||C - S|| <= (h_A + R h_W) / v`,
-/// `v = max(vmin, min w - h_W)`. Centring makes the bound independent of where the model
-/// sits (the form `(1 + max ||P||)` of the Bézier reducer's conversion grows with the
-/// distance from the origin). The translation's rounding is added to `h_A`.
-fn rational_bound(
-    sub: &[f64],
-    tgt: &[f64],
-    (d, blk, p): (usize, usize, usize),
-    vmin: f64,
-) -> (f64, f64) {
-    let dim = blk - 1;
-    let eps = f64::EPSILON;
-    let mut model = Vec::with_capacity(sub.len() / blk * dim);
-    let mut wmin = f64::INFINITY;
-    for q in sub.chunks_exact(blk) {
-        wmin = wmin.min(q[dim]);
-        model.extend(q[..dim].iter().map(|x| x / q[dim]));
-    }
-    let frame = ModelFrame::new(&model, dim);
-    let centre = frame.centre();
-    let cnorm = centre.iter().map(|x| x * x).sum::<f64>().sqrt();
-    let radius = frame.radius() * (1.0 + 4.0 * eps);
-    let split = |from: &[f64], j: usize, a: &mut Vec<f64>, w: &mut Vec<f64>| {
-        a.clear();
-        w.clear();
-        for q in from.chunks_exact(d) {
-            let b = &q[j * blk..(j + 1) * blk];
-            a.extend((0..dim).map(|c| b[c] - centre[c] * b[dim]));
-            w.push(b[dim]);
-        }
-    };
-    let (mut sa, mut sw, mut ta, mut tw) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-    let (mut ha, mut hw, mut size): (f64, f64, f64) = (0.0, 0.0, 0.0);
-    for j in 0..d / blk {
-        split(sub, j, &mut sa, &mut sw);
-        split(tgt, j, &mut ta, &mut tw);
-        ha = ha.max(hull_bound(&sa, &ta, dim));
-        hw = hw.max(hull_bound(&sw, &tw, 1));
-        let wmax = sw.iter().chain(&tw).fold(0.0f64, |m, x| m.max(x.abs()));
-        let amax = max_norm(&sa, dim).max(max_norm(&ta, dim));
-        size = size.max(amax + cnorm * wmax);
-    }
-    // Each translated coordinate is off by ~2 eps of |x| + |c| w, for both curves.
-    ha += 4.0 * eps * size;
-    let floor = 2.0 * (p as f64 + 3.0) * eps * size / wmin;
-    if vmin <= 0.0 {
-        return (f64::INFINITY, floor);
-    }
-    (centred_rational_bound(ha, hw, radius, wmin, vmin), floor)
-}
-
 /// [`copy_block`] into `to` unless the points are one block: the block's points.
 fn block_of<'a>(from: &'a [f64], d: usize, j: usize, blk: usize, to: &'a mut [f64]) -> &'a [f64] {
     if d == blk {
@@ -596,6 +543,9 @@ fn copy_block(from: &[f64], d: usize, j: usize, blk: usize, to: &mut [f64]) {
         dst.copy_from_slice(&src[j * blk..(j + 1) * blk]);
     }
 }
+
+mod rational_span;
+use rational_span::{RationalSpan, rational_bound};
 
 #[cfg(test)]
 mod tests;
