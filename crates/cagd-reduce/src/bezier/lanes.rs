@@ -196,6 +196,10 @@ fn vectors<const L: usize>(scratch: &mut Vec<f64>, len: usize) -> &mut [[f64; L]
 /// The kernel, for either kind of multiply-add and `L` lanes (a multiple of 4; see
 /// [`apply`]).
 #[inline(always)]
+#[allow(
+    clippy::too_many_arguments,
+    reason = "the kernel's data plus the two instance hooks (transpose, prefetch)"
+)]
 pub(crate) fn apply_generic<const F: bool, const L: usize>(
     at: &[f64],
     rows: usize,
