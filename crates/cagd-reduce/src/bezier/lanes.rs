@@ -23,6 +23,21 @@
 /// A 4 x 4 transpose of four vectors of four doubles (AVX shuffles or portable).
 type Quad = [f64; 4];
 
+/// How many groups ahead [`apply`] asks the CPU to fetch the input (a hint: measured 0–14 %
+/// faster at (4,3)…(20,10) in alternated runs, neutral at (30,15); see the benches README).
+const PREFETCH_GROUPS: usize = 2;
+
+/// Asks the CPU to bring every cache line of `x` towards L1 (a hint; no effect on results).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+#[inline]
+fn prefetch_avx(x: &[f64]) {
+    use std::arch::x86_64::{_MM_HINT_T0, _mm_prefetch};
+    for line in x.chunks(8) {
+        _mm_prefetch::<_MM_HINT_T0>(line.as_ptr().cast::<i8>());
+    }
+}
+
 /// Rows of the map per register tile.
 const TILE_ROWS: usize = 4;
 
@@ -78,11 +93,11 @@ pub(crate) fn apply(
         // SAFETY: the CPU supports AVX2 and FMA (detected by `isa`), as above.
         Isa::Avx2 => unsafe { apply_avx2(at, rows, dim, input, output, scratch) },
         Isa::Portable => {
-            apply_generic::<false, 4>(at, rows, dim, input, output, scratch, transpose)
+            apply_generic::<false, 4>(at, rows, dim, input, output, scratch, transpose, |_| {})
         }
     }
     #[cfg(not(target_arch = "x86_64"))]
-    apply_generic::<false, 4>(at, rows, dim, input, output, scratch, transpose);
+    apply_generic::<false, 4>(at, rows, dim, input, output, scratch, transpose, |_| {});
 }
 
 /// The kernel compiled with AVX-512F and FMA, 8 lanes.
@@ -97,9 +112,16 @@ fn apply_avx512(
     scratch: &mut Vec<f64>,
 ) {
     // The closure inherits the target features (so the AVX transpose is inlined).
-    apply_generic::<true, 8>(at, rows, dim, input, output, scratch, |a, b, c, d| {
-        transpose_avx(a, b, c, d)
-    });
+    apply_generic::<true, 8>(
+        at,
+        rows,
+        dim,
+        input,
+        output,
+        scratch,
+        |a, b, c, d| transpose_avx(a, b, c, d),
+        |x| prefetch_avx(x),
+    );
 }
 
 /// The kernel compiled with AVX2 and FMA, 4 lanes.
@@ -113,9 +135,16 @@ fn apply_avx2(
     output: &mut [f64],
     scratch: &mut Vec<f64>,
 ) {
-    apply_generic::<true, 4>(at, rows, dim, input, output, scratch, |a, b, c, d| {
-        transpose_avx(a, b, c, d)
-    });
+    apply_generic::<true, 4>(
+        at,
+        rows,
+        dim,
+        input,
+        output,
+        scratch,
+        |a, b, c, d| transpose_avx(a, b, c, d),
+        |x| prefetch_avx(x),
+    );
 }
 
 /// The 4 x 4 transpose with AVX shuffles (two `unpack`s and a 128-bit permute per row).
@@ -167,6 +196,10 @@ fn vectors<const L: usize>(scratch: &mut Vec<f64>, len: usize) -> &mut [[f64; L]
 /// The kernel, for either kind of multiply-add and `L` lanes (a multiple of 4; see
 /// [`apply`]).
 #[inline(always)]
+#[allow(
+    clippy::too_many_arguments,
+    reason = "the kernel's data plus the two instance hooks (transpose, prefetch)"
+)]
 pub(crate) fn apply_generic<const F: bool, const L: usize>(
     at: &[f64],
     rows: usize,
@@ -175,6 +208,7 @@ pub(crate) fn apply_generic<const F: bool, const L: usize>(
     output: &mut [f64],
     scratch: &mut Vec<f64>,
     tr: impl Fn(Quad, Quad, Quad, Quad) -> [Quad; 4],
+    prefetch: impl Fn(&[f64]),
 ) {
     if rows == 0 || dim == 0 {
         return;
@@ -193,10 +227,16 @@ pub(crate) fn apply_generic<const F: bool, const L: usize>(
         .split_at_mut(if groups > 0 { lin } else { 0 });
     let (in_g, in_rest) = input.split_at(groups * L * lin);
     let (out_g, out_rest) = output.split_at_mut(groups * L * lout);
-    for (inp, out) in in_g
+    for (g, (inp, out)) in in_g
         .chunks_exact(L * lin)
         .zip(out_g.chunks_exact_mut(L * lout))
+        .enumerate()
     {
+        // The input of a group further on, towards L1 while this one is computed.
+        let ahead = (g + PREFETCH_GROUPS) * L * lin;
+        if let Some(next) = in_g.get(ahead..ahead + L * lin) {
+            prefetch(next);
+        }
         transpose_in(inp, lin, t, &tr);
         tiles::<F, L>(at, rows, cols, dim, t, u);
         transpose_out(u, lout, out, &tr);
@@ -722,10 +762,10 @@ mod tests {
     #[test]
     fn portable_instance_is_the_definition_bit_for_bit() {
         check::<false>(&|at, rows, dim, input, out, s| {
-            apply_generic::<false, 4>(at, rows, dim, input, out, s, super::transpose)
+            apply_generic::<false, 4>(at, rows, dim, input, out, s, super::transpose, |_| {})
         });
         check::<false>(&|at, rows, dim, input, out, s| {
-            apply_generic::<false, 8>(at, rows, dim, input, out, s, super::transpose)
+            apply_generic::<false, 8>(at, rows, dim, input, out, s, super::transpose, |_| {})
         });
     }
 
@@ -735,10 +775,10 @@ mod tests {
         // (software FMA: slow, same bits), each instance this CPU has by name, and the
         // dispatch: all equal to the fused definition, so to one another.
         check::<true>(&|at, rows, dim, input, out, s| {
-            apply_generic::<true, 4>(at, rows, dim, input, out, s, super::transpose)
+            apply_generic::<true, 4>(at, rows, dim, input, out, s, super::transpose, |_| {})
         });
         check::<true>(&|at, rows, dim, input, out, s| {
-            apply_generic::<true, 8>(at, rows, dim, input, out, s, super::transpose)
+            apply_generic::<true, 8>(at, rows, dim, input, out, s, super::transpose, |_| {})
         });
         #[cfg(target_arch = "x86_64")]
         {

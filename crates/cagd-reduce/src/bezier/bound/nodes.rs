@@ -62,11 +62,7 @@ pub(crate) fn max_pair_norm(
         4 => pair_fused::<4>((ve, ce), (vo, co)),
         _ => {
             let (re, ro) = (ce.len() / dim, co.len() / dim);
-            let rows = if re > 0 {
-                ve.len() / re
-            } else {
-                vo.len() / ro.max(1)
-            };
+            let rows = ve.len().checked_div(re).unwrap_or(vo.len() / ro.max(1));
             let (mut e, mut o) = (vec![0.0; dim], vec![0.0; dim]);
             let (mut best, mut bad) = (0.0f64, false);
             for j in 0..rows {
@@ -99,11 +95,7 @@ fn part_value(v: &[f64], r: usize, j: usize, c: &[f64], out: &mut [f64]) {
 
 fn pair_fused<const D: usize>((ve, ce): (&[f64], &[f64]), (vo, co): (&[f64], &[f64])) -> f64 {
     let (re, ro) = (ce.len() / D, co.len() / D);
-    let rows = if re > 0 {
-        ve.len() / re
-    } else {
-        vo.len() / ro.max(1)
-    };
+    let rows = ve.len().checked_div(re).unwrap_or(vo.len() / ro.max(1));
     let (mut best, mut bad) = (0.0f64, false);
     for j in 0..rows {
         let (mut e, mut o) = ([0.0f64; D], [0.0f64; D]);

@@ -147,7 +147,7 @@ fn reversal_asymmetry(a: &[f64], n: usize, m: usize) -> f64 {
 fn symmetric_range(r: &[f64], n: usize, m: usize, top: f64) -> (Vec<f64>, usize, Option<usize>) {
     let n1 = n + 1;
     let (half_e, half_o) = (n / 2 + 1, n1 / 2);
-    let (exp_e, exp_o) = (half_e - (m / 2 + 1), half_o - (m + 1) / 2);
+    let (exp_e, exp_o) = (half_e - (m / 2 + 1), half_o - m.div_ceil(2));
     let s2 = std::f64::consts::SQRT_2;
     let at = |i: usize, j: usize| r[i * n1 + j];
     // Column j of the folded matrices, row i of the half (row-major, square).
@@ -424,9 +424,9 @@ mod split_tests {
                 let coef: Vec<f64> = (0..b.rank)
                     .map(|l| (0..n1).map(|i| b.u[i * b.rank + l] * v[i]).sum())
                     .collect();
-                for i in 0..n1 {
+                for (i, vi) in v.iter().enumerate() {
                     let p: f64 = (0..b.rank).map(|l| b.u[i * b.rank + l] * coef[l]).sum();
-                    assert!((p - v[i]).abs() < 1e-13, "({n},{m}) {k} {i}");
+                    assert!((p - vi).abs() < 1e-13, "({n},{m}) {k} {i}");
                 }
             }
         }
