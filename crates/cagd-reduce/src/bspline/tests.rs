@@ -523,3 +523,48 @@ fn point_curve_nurbs_at_c2() {
     let fit = reduce_bspline(&c, &BSplineOptions::new(5, 0.1)).unwrap();
     assert!(fit.report.error_bound <= 0.1);
 }
+
+/// A random degree-`n` Bézier curve in 3-D as a one-span spline (the a2 row's input).
+fn a2_bezier(n: usize, seed: u64) -> BSplineCurve {
+    let mut knots = vec![0.0; n + 1];
+    knots.extend(std::iter::repeat_n(1.0, n + 1));
+    BSplineCurve::new(
+        n,
+        knots,
+        cagd_testkit::bench::random_input(3 * (n + 1), seed),
+        3,
+    )
+    .unwrap()
+}
+
+/// What the prediction is for, against the refinement from the input's knots alone
+/// (the route without it) on the a2 row's curves (degree 10 and 20 to cubic within
+/// 0.9e-4): the first fit on the predicted knots meets the budget on every span of
+/// most curves, and the refined result has fewer spans than without the prediction.
+#[test]
+fn the_first_fit_lands_near_the_final_spans() {
+    use super::fit::{Source, fit, predicted_knots, span_bounds};
+    use super::global::{fit_to_budget, initial_knots};
+    let budget = 0.9e-4;
+    for n in [10, 20] {
+        let (mut first_ok, mut with, mut without) = (0, 0, 0);
+        for i in 0..10 {
+            let c = a2_bezier(n, (n * 1000 + i) as u64);
+            let src = Source::new(&c, 3, false).unwrap();
+            let start = initial_knots(c.knots(), n, &src, 3, 2).unwrap();
+            let mut predicted = start.clone();
+            predicted.extend(predicted_knots(&src, 3, budget, usize::MAX));
+            predicted.sort_by(f64::total_cmp);
+            let pts = fit(&src, 3, &predicted).unwrap();
+            let bounds = span_bounds(&src, 3, (&predicted, &pts), budget, &mut Vec::new()).unwrap();
+            first_ok += usize::from(bounds.iter().all(|x| x.bound <= budget));
+            with += fit_to_budget(&src, 3, predicted, budget).unwrap().2.len();
+            without += fit_to_budget(&src, 3, start, budget).unwrap().2.len();
+        }
+        assert!(first_ok >= 8, "n = {n}: {first_ok} of 10");
+        assert!(
+            with < without,
+            "n = {n}: {with} spans with, {without} without"
+        );
+    }
+}

@@ -30,12 +30,15 @@ mod banded_lsq;
 mod node_bound;
 mod predict;
 mod span_rows;
+mod spans;
 
 use crate::bezier::{hull_bound, max_norm};
 pub(crate) use banded_lsq::BandedLsq;
 use node_bound::NodeBound;
 pub(crate) use predict::predicted_knots;
 use span_rows::SpanRows;
+pub(crate) use spans::SpanData;
+use spans::{Part, casteljau_part};
 
 /// The spline to approximate, as Bézier pieces in working coordinates.
 #[derive(Debug, Clone)]
@@ -142,43 +145,6 @@ impl Source {
     }
 }
 
-/// What the fit's rows ([`span_rows`]) and the span bounds share per non-empty span
-/// `knots[s] < knots[s + 1]` of a degree-`m` knot vector (`s = m..n`, in order): the
-/// source's Bézier points on the span ([`Source::restrict_into`], `(p + 1) * pdim` values)
-/// and the span's Bézier extraction (`(m + 1) x (m + 1)`, row `l` the Bézier coefficients
-/// `l` of the basis functions `s - m ..= s`, by [`span_bezier_of`] on the unit vectors).
-#[derive(Debug, Default)]
-pub(crate) struct SpanData {
-    subs: Vec<f64>,
-    exts: Vec<f64>,
-}
-
-impl SpanData {
-    /// The data of every non-empty span of `knots` for the source `src`.
-    pub(crate) fn fill(&mut self, src: &Source, m: usize, knots: &[f64]) {
-        let n = knots.len() - m - 1;
-        let m1 = m + 1;
-        self.subs.clear();
-        self.exts.clear();
-        let mut sub = Vec::with_capacity((src.degree + 1) * src.pdim);
-        let mut tmp = [Vec::new(), Vec::new(), Vec::new()];
-        let mut unit = vec![0.0; m1 * m1];
-        for i in 0..m1 {
-            unit[i * m1 + i] = 1.0;
-        }
-        let (mut ext, mut work) = (vec![0.0; m1 * m1], vec![0.0; m1 * m1]);
-        for s in m..n {
-            let (a, b) = (knots[s], knots[s + 1]);
-            if a < b {
-                src.restrict_into(src.piece_of(a, b), (a, b), &mut sub, &mut tmp);
-                self.subs.extend_from_slice(&sub);
-                span_bezier_of((knots, m), s, (&unit, m1), &mut ext, &mut work);
-                self.exts.extend_from_slice(&ext);
-            }
-        }
-    }
-}
-
 /// The L2-best degree-`m` spline on the clamped knot vector `knots` (domain and every break
 /// of `src` among its knots) with the end points of `src`: its control points
 /// (`knots.len() - m - 1` points of `src.pdim` coordinates).
@@ -218,14 +184,16 @@ pub(crate) fn fit_restricted(
     let m1 = m + 1;
     let mut lsq = BandedLsq::new(n - 2, m1, d);
     let (mut rows, mut rhs) = (vec![0.0; m1 * m1], vec![0.0; m1 * d]);
-    let mut subs = data.subs.chunks_exact((p + 1) * d);
     let mut exts = data.exts.chunks_exact(m1 * m1);
+    let (mut buf, mut tmp) = (Vec::new(), [Vec::new(), Vec::new(), Vec::new()]);
+    let mut i = 0;
     for s in m..n {
         let (a, b) = (knots[s], knots[s + 1]);
         if a >= b {
             continue;
         }
-        let sub = subs.next().expect("one restriction per non-empty span");
+        let sub = data.sub(src, i, (a, b), &mut buf, &mut tmp);
+        i += 1;
         let ext = exts.next().expect("one extraction per non-empty span");
         span_rows.rows(b - a, ext, sub, d, &mut rows, &mut rhs);
         for (row, value) in rows.chunks_exact_mut(m1).zip(rhs.chunks_exact_mut(d)) {
@@ -250,52 +218,6 @@ pub(crate) fn fit_restricted(
     let x = lsq.solve()?;
     out[d..(n - 1) * d].copy_from_slice(&x);
     Ok(out)
-}
-
-/// Which part of a Bézier curve [`casteljau_part`] computes.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Part {
-    /// On `[0, t]`: point `i` is `b_0^i`, the first point of level `i`.
-    Left,
-    /// On `[t, 1]`: point `i` is `b_i^(n - i)`, the last point of level `n - i`.
-    Right,
-}
-
-/// The Bézier points of the part `which` of the curve `from` (`dim` coordinates per
-/// point) split at `t` in `out` (as long as `from`), by de Casteljau's triangle: level `r`
-/// point `i` is `(1 - t) b_i^(r-1) + t b_(i+1)^(r-1)`, each level one pass over the whole
-/// level from one buffer of `bufs` into the other (no overlapping reads and writes, so the
-/// pass vectorises), the part's point of each level copied out as it is made.
-fn casteljau_part(
-    from: &[f64],
-    dim: usize,
-    t: f64,
-    which: Part,
-    out: &mut [f64],
-    (a, b): (&mut Vec<f64>, &mut Vec<f64>),
-) {
-    let u = 1.0 - t;
-    let len = from.len();
-    a.clear();
-    a.extend_from_slice(from);
-    b.clear();
-    b.resize(len, 0.0);
-    match which {
-        Part::Left => out[..dim].copy_from_slice(&from[..dim]),
-        Part::Right => out[len - dim..].copy_from_slice(&from[len - dim..]),
-    }
-    let (mut old, mut new) = (a, b);
-    for r in (dim..len).step_by(dim) {
-        let n = len - r;
-        for ((o, x), y) in new[..n].iter_mut().zip(&old[..n]).zip(&old[dim..n + dim]) {
-            *o = u * x + t * y;
-        }
-        match which {
-            Part::Left => out[r..r + dim].copy_from_slice(&new[..dim]),
-            Part::Right => out[n - dim..n].copy_from_slice(&new[n - dim..n]),
-        }
-        std::mem::swap(&mut old, &mut new);
-    }
 }
 
 /// The Bernstein values `B^p_i(t) = C(p, i) t^i (1 - t)^(p - i)` into `out` (`p + 1`
@@ -376,8 +298,9 @@ pub(crate) fn span_bounds_restricted(
         });
     }
     let mut out = Vec::with_capacity(n - m);
-    let mut subs = data.subs.chunks_exact((p + 1) * d);
     let mut exts = data.exts.chunks_exact((m + 1) * (m + 1));
+    let (mut buf, mut tmp) = (Vec::new(), [Vec::new(), Vec::new(), Vec::new()]);
+    let mut i = 0;
     let (mut tgt, mut scratch) = (vec![0.0; (m + 1) * d], vec![0.0; (m + 1) * d]);
     let (mut sb, mut tb) = (vec![0.0; (p + 1) * blk], vec![0.0; (m + 1) * blk]);
     let (mut qb, mut pb) = (vec![0.0; (m + 1) * blk], vec![0.0; (p + 1) * blk]);
@@ -389,7 +312,8 @@ pub(crate) fn span_bounds_restricted(
             continue;
         }
         let k = src.piece_of(a, b);
-        let sub = subs.next().expect("one restriction per non-empty span");
+        let sub = data.sub(src, i, (a, b), &mut buf, &mut tmp);
+        i += 1;
         let ext = exts.next().expect("one extraction per non-empty span");
         let local = &points[(s - m) * d..(s + 1) * d];
         if src.rational {

@@ -1,5 +1,6 @@
 //! A certified bound of one span's fit error from its values at Chebyshev–Lobatto nodes
-//! (goes beyond the seed; the bound of [`super::span_bounds`] for polynomial input).
+//! (goes beyond the seed; the bound of [`super::span_bounds_restricted`] for polynomial
+//! input).
 //!
 //! On a span, the error `D = C - S` of the fit is a polynomial of degree `p` (the input's
 //! piece restricted to the span, `p + 1` Bézier points, minus the fit's degree-`m` piece).

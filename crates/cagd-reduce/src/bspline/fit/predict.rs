@@ -158,8 +158,7 @@ pub(crate) fn predicted_knots(src: &Source, m: usize, budget: f64, limit: usize)
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bspline::fit::{fit, span_bounds};
-    use crate::bspline::global::{fit_to_budget, initial_knots};
+    use crate::bspline::fit::fit;
     use cagd_core::BSplineCurve;
     use cagd_testkit::bench::random_input;
 
@@ -302,36 +301,5 @@ mod tests {
             ..src
         };
         assert!(predicted_knots(&rational, 3, 1e-4, usize::MAX).is_empty());
-    }
-
-    /// What the prediction is for, against the refinement from the input's knots alone
-    /// (the route without it) on the a2 row's curves (degree 10 and 20 to cubic within
-    /// 0.9e-4): the first fit on the predicted knots meets the budget on every span of
-    /// most curves, and the refined result has fewer spans than without the prediction.
-    #[test]
-    fn the_first_fit_lands_near_the_final_spans() {
-        let budget = 0.9e-4;
-        for n in [10, 20] {
-            let (mut first_ok, mut with, mut without) = (0, 0, 0);
-            for i in 0..10 {
-                let c = bezier(n, (n * 1000 + i) as u64);
-                let src = Source::new(&c, 3, false).unwrap();
-                let start = initial_knots(c.knots(), n, &src, 3, 2).unwrap();
-                let mut predicted = start.clone();
-                predicted.extend(predicted_knots(&src, 3, budget, usize::MAX));
-                predicted.sort_by(f64::total_cmp);
-                let pts = fit(&src, 3, &predicted).unwrap();
-                let bounds =
-                    span_bounds(&src, 3, (&predicted, &pts), budget, &mut Vec::new()).unwrap();
-                first_ok += usize::from(bounds.iter().all(|x| x.bound <= budget));
-                with += fit_to_budget(&src, 3, predicted, budget).unwrap().2.len();
-                without += fit_to_budget(&src, 3, start, budget).unwrap().2.len();
-            }
-            assert!(first_ok >= 8, "n = {n}: {first_ok} of 10");
-            assert!(
-                with < without,
-                "n = {n}: {with} spans with, {without} without"
-            );
-        }
     }
 }

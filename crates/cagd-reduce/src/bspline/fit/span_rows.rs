@@ -1,6 +1,6 @@
 //! The Gauss rows of one span of the global fit, compressed to `m + 1` rows (goes beyond
 //! the seed; the same least-squares problem as one row per Gauss node, see
-//! [`super::fit`]).
+//! [`super`]).
 //!
 //! On a span `[a, b]` (`h = b - a`, local parameter `x`), the fit's `k` weighted rows are
 //! `sqrt(h w_q) N_j(a + h x_q)` against `sqrt(h w_q) C(a + h x_q)`. The basis functions

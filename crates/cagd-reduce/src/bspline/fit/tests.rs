@@ -110,3 +110,23 @@ fn reproduces_a_spline_of_the_target_space_and_bounds_cover_samples() {
         assert!(sb.floor < 1e-13);
     }
 }
+
+/// Restrictions kept or made again per use (past the memory cap): the same fit and the
+/// same bounds, bit for bit.
+#[test]
+fn restrictions_kept_or_not_give_the_same_fit() {
+    let c = quintic();
+    let src = Source::new(&c, 2, false).unwrap();
+    let knots = cubic_knots();
+    let (mut kept, mut made) = (SpanData::default(), SpanData::default());
+    kept.fill(&src, 3, &knots);
+    made.fill_keeping(&src, 3, &knots, 0);
+    assert!(kept.stored && !made.stored);
+    let a = fit_restricted(&src, 3, &knots, &kept).unwrap();
+    let b = fit_restricted(&src, 3, &knots, &made).unwrap();
+    assert_eq!(a, b);
+    let ba = span_bounds_restricted(&src, 3, (&knots, &a, &kept), 0.0, &mut Vec::new()).unwrap();
+    let bb = span_bounds_restricted(&src, 3, (&knots, &b, &made), 0.0, &mut Vec::new()).unwrap();
+    assert_eq!(ba, bb);
+    assert_eq!(ba.len(), 6);
+}
