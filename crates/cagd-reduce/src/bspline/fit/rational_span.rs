@@ -75,7 +75,9 @@ pub(super) fn rational_bound(
             (a.max(norm + cnorm * wa), w.max(wa))
         })
     };
-    let (mut sa, mut sw, mut ta, mut tw) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let (n_sub, n_tgt) = (span.sub.len() / d, span.tgt.len() / d);
+    let (mut sa, mut sw) = (Vec::with_capacity(n_sub * dim), Vec::with_capacity(n_sub));
+    let (mut ta, mut tw) = (Vec::with_capacity(n_tgt * dim), Vec::with_capacity(n_tgt));
     let mut vals = Vec::new();
     let blocks = d / blk;
     let (mut node_a, mut node_w) = (vec![0.0; blocks], vec![0.0; blocks]);
