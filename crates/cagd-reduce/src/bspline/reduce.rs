@@ -5,6 +5,8 @@
 
 use cagd_core::{BSplineCurve, Error, Result, check_tolerance};
 
+use super::framed::{frame_curve, unframe_curve};
+use super::measure::spline_max_deviation;
 use super::options::{BSplineOptions, BSplineReduction, BSplineStrategy};
 use crate::Method;
 
@@ -96,7 +98,7 @@ pub fn reduce_bspline(curve: &BSplineCurve, opts: &BSplineOptions) -> Result<BSp
         ..*opts
     };
     match opts.strategy {
-        BSplineStrategy::GlobalFit => super::global::reduce_global(curve, &opts),
+        BSplineStrategy::GlobalFit => reduce_global_framed(curve, &opts),
         BSplineStrategy::PieglTiller1995 => {
             crate::reduce_bspline_piegl_tiller(curve, m, opts.tolerance, opts.measure)
         }
@@ -114,4 +116,46 @@ pub fn reduce_bspline(curve: &BSplineCurve, opts: &BSplineOptions) -> Result<BSp
             super::segments::reduce_segments(curve, &opts, method)
         }
     }
+}
+
+/// The global fit ([`super::global::reduce_global`]) of a NURBS curve in its frame
+/// (`super::framed`: control points centred on their bounding box and scaled by its radius,
+/// weights unchanged), moved back; a polynomial curve as it is (its fit commutes with
+/// translation and scaling).
+///
+/// Why (ADDED, issue 17's real-CAD-file row): the span bound of a NURBS fit
+/// (`fit/rational_span.rs`) charges the rounding of restricting and extracting the
+/// homogeneous points, which is relative to their size: far from the origin (CAD parts
+/// placed in an assembly) that allowance grows with the distance, so the same shape moved
+/// would get a different bound. In the frame the points are of size one and the bound is
+/// the framed one times `s` plus the round trip's rounding
+/// ([`super::framed::Frame::finish`]), as for the other strategies; the measured error is
+/// taken against the input itself. (Spans: the same as unframed on the `cad_curves`
+/// bench.)
+fn reduce_global_framed(curve: &BSplineCurve, opts: &BSplineOptions) -> Result<BSplineReduction> {
+    let Some((frame, moved)) = frame_curve(curve, opts.tolerance)? else {
+        return super::global::reduce_global(curve, opts);
+    };
+    let inner = BSplineOptions {
+        tolerance: frame.inner_tol,
+        measure: false,
+        ..*opts
+    };
+    let mut red = super::global::reduce_global(&moved, &inner)
+        .map_err(|e| frame.model_error(e, opts.tolerance))?;
+    let out = red.curve.points().to_vec();
+    red.curve = unframe_curve(&frame, &red.curve)?;
+    red.report.tolerance = opts.tolerance;
+    red.report.error_bound = frame.finish(red.report.error_bound, &out);
+    red.report.segment_bound = frame.finish(red.report.segment_bound, &out);
+    if red.report.error_bound > opts.tolerance {
+        return Err(Error::ConditionNotMet {
+            eq: "tolerance",
+            why: "the bound with the frame's rounding exceeds the tolerance (rounding level)",
+        });
+    }
+    if opts.measure {
+        red.report.max_error = Some(spline_max_deviation(curve, &red.curve)?);
+    }
+    Ok(red)
 }

@@ -8,11 +8,12 @@
 //! min w - h_W)` ([`cagd_core::centred_rational_bound`]). Centring makes the bound
 //! independent of where the model sits.
 //!
-//! `h_A` and `h_W` are node bounds ([`NodeBound`]: the polynomial differences at
-//! Chebyshev–Lobatto nodes times the Ehlich–Zeller factor, at most 1.075 times their
-//! maxima, rounding included), and where the resulting bound is above the budget also
-//! refined convex hulls ([`crate::bezier::hull_bound`]), the smaller of the two — the
-//! polynomial spans' rule, so an offending span's split count still follows the hull.
+//! For a single curve, `h_A` and `h_W` are node bounds ([`NodeBound`]: the polynomial
+//! differences at Chebyshev–Lobatto nodes times the Ehlich–Zeller factor, at most 1.075
+//! times their maxima, rounding included), and where the resulting bound is above the
+//! budget also refined convex hulls ([`crate::bezier::hull_bound`]), the smaller of the
+//! two — the polynomial spans' rule, so an offending span's split count still follows the
+//! hull. A bundle (a surface's rows) takes the refined hulls alone, as before.
 //! ADDED (issue 17, real-CAD-file row): the hull alone, an elevation and several
 //! subdivisions per span, was 35 % of the reduction of degree 4–15 NURBS to cubics.
 
@@ -75,17 +76,29 @@ pub(super) fn rational_bound(
             (a.max(norm + cnorm * wa), w.max(wa))
         })
     };
-    let (mut sa, mut sw, mut ta, mut tw) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let (n_sub, n_tgt) = (span.sub.len() / d, span.tgt.len() / d);
+    let (mut sa, mut sw) = (Vec::with_capacity(n_sub * dim), Vec::with_capacity(n_sub));
+    let (mut ta, mut tw) = (Vec::with_capacity(n_tgt * dim), Vec::with_capacity(n_tgt));
     let mut vals = Vec::new();
     let blocks = d / blk;
+    // Node bounds for a single curve only: their rounding model charges the restriction of
+    // the uncentred homogeneous points, which grows with the distance from the origin, so
+    // the curve fit runs in its frame (`crate::bspline::reduce`); a bundle (the rows of a
+    // surface fit, not framed) keeps the refined hulls on the computed points.
+    let single = blocks == 1;
     let (mut node_a, mut node_w) = (vec![0.0; blocks], vec![0.0; blocks]);
     let mut size: f64 = 0.0;
     for j in 0..blocks {
         split(span.sub, j, &mut sa, &mut sw);
         split(span.tgt, j, &mut ta, &mut tw);
         let ((pa, pw), (qa, qw)) = (sizes(span.piece, j), sizes(span.fit, j));
-        node_a[j] = nodes.bound(&sa, &ta, dim, (pa, qa), &mut vals).1;
-        node_w[j] = nodes.bound(&sw, &tw, 1, (pw, qw), &mut vals).1;
+        if single {
+            node_a[j] = nodes.bound(&sa, &ta, dim, (pa, qa), &mut vals).1;
+            node_w[j] = nodes.bound(&sw, &tw, 1, (pw, qw), &mut vals).1;
+        } else {
+            node_a[j] = hull_bound(&sa, &ta, dim);
+            node_w[j] = hull_bound(&sw, &tw, 1);
+        }
         let wmax = sw.iter().chain(&tw).fold(0.0f64, |m, x| m.max(x.abs()));
         let amax = max_norm(&sa, dim).max(max_norm(&ta, dim));
         size = size.max(amax + cnorm * wmax);
@@ -101,7 +114,7 @@ pub(super) fn rational_bound(
         centred_rational_bound(fold(ha) + shift, fold(hw), radius, wmin, vmin)
     };
     let bound = combine(&node_a, &node_w);
-    if bound <= sharpen {
+    if bound <= sharpen || !single {
         return (bound, floor);
     }
     // Over the budget: per block the smaller of the node bound and the refined hull.
