@@ -513,16 +513,17 @@ proptest! {
     /// Laws 1 and 2 on random input.
     #[test]
     fn random_surfaces_meet_the_tolerance(c in case()) {
-        // The fit's result cap (2^16 patches, bounded work, issue 18) may refuse by name
-        // an input whose weights make it far costlier than the cost model predicts; any
-        // other failure is a failure of the law.
+        // The fit's work caps (the result's 2^16 patches, the bundle fit's 2^23 span
+        // coordinates: bounded work, issue 18) may refuse by name an input whose weights
+        // make it far costlier than the cost model predicts; any other failure is a
+        // failure of the law.
         let r = match reduce_bspline_surface_fit(
             &c.surface,
             &SurfaceFitOptions::new(c.target, c.tolerance),
         ) {
             Ok(r) => r,
             Err(cagd_reduce::Error::ConditionNotMet { eq: "tolerance", why })
-                if why.contains("2^16 patches") =>
+                if why.contains("needs too much work") =>
             {
                 return Err(TestCaseError::reject("refused by the result cap"));
             }
