@@ -543,7 +543,7 @@ pub(crate) fn stepwise<B: Base>(
                 err = err.max(row.e.iter().sum());
                 norm = norm.max(row.v.iter().map(|x| x.to_f64().abs()).sum());
             }
-            if !(err <= limit * norm) {
+            if err.is_nan() || err > limit * norm {
                 return None;
             }
         }
