@@ -130,22 +130,32 @@ pub(crate) fn inverse_elevation<B: Base>(pbar: &[Row<B>]) -> Vec<Row<B>> {
     out
 }
 
-/// Rows `half + 1..=n` as the mirror images of rows `n - i` (`rows` holds `0..=half`): the
-/// output of a reversal-symmetric step on a reversal-symmetric input (`s_(k-j)` the reversed
-/// `s_j`, as the unit rows are) is reversal-symmetric in exact arithmetic, so the mirrored
-/// error bounds hold for the mirrored exact rows.
+/// Rows `half + 1..=n` left empty (`rows` holds `0..=half`): they are the mirror images of
+/// rows `n - i`, which no symmetric step reads (each reads the first half of its input and
+/// `Delta^k` by [`delta_k_symmetric`]); [`materialize`] fills them in at the end. The output
+/// of a reversal-symmetric step on a reversal-symmetric input (`s_(k-j)` the reversed `s_j`,
+/// as the unit rows are) is reversal-symmetric in exact arithmetic, so the mirrored error
+/// bounds hold for the mirrored exact rows.
 fn mirror<B: Base>(rows: &mut Vec<Row<B>>, n: usize) {
     let half = rows.len() - 1;
-    for i in (half + 1)..=n {
-        let r = rows[n - i].reversed();
-        rows.push(r);
+    rows.extend((half + 1..=n).map(|_| Row::zeros(0)));
+}
+
+/// The rows [`mirror`] left empty, as the mirror images of their partners.
+fn materialize<B: Base>(rows: &mut [Row<B>]) {
+    let last = rows.len() - 1;
+    for i in 0..=last {
+        if rows[i].v.is_empty() {
+            rows[i] = rows[last - i].reversed();
+        }
     }
 }
 
 /// The step `k -> k-1` of a one-degree method on the rows `s` (`k + 1` of them).
 /// `symmetric`: `s` is reversal-symmetric (`s_(k-j)` the reversed `s_j`: the rows of a
-/// stepwise reduction of the unit rows), so a reversal-symmetric method (every one here but
-/// G1 with `l1 != l2`) computes the first half of its rows and mirrors the rest. `split`:
+/// stepwise reduction of the unit rows, whose second half [`mirror`] leaves empty), so a
+/// reversal-symmetric method (Forrest, Piegl–Tiller, Farin's split form, perturbation)
+/// computes the first half of its rows from the first half of `s`. `split`:
 /// Farin's step in its split form ([`farin`]) rather than the seed's direct one (the split
 /// form is the more accurate in double-word up to degree about 50, the direct one at
 /// `(64,10)`; exact arithmetic gives the same).
@@ -354,7 +364,13 @@ fn piegl_tiller<B: Base>(s: &[Row<B>], symmetric: bool) -> Step<B> {
         } else {
             Vec::new()
         };
-        let right = left.iter().rev().map(Row::reversed).collect();
+        // The right end points only for the auxiliary point of an odd `m` (the output's
+        // second half is left to [`mirror`]).
+        let right = if m % 2 == 1 {
+            left.iter().rev().map(Row::reversed).collect()
+        } else {
+            Vec::new()
+        };
         (left, right)
     } else {
         end_points(k, m, r, p, s)
@@ -368,23 +384,52 @@ fn piegl_tiller<B: Base>(s: &[Row<B>], symmetric: bool) -> Step<B> {
             super::rows::axpy(&mut ql, Tracked::small(-(ri + 1)), qr);
         }
         let ql = div(&ql, Tracked::small(ki - (ri + 1)));
-        let mut qr = scale(&s[idx(mi - pi)], Tracked::small(ki));
-        if let Some(first) = right.first() {
-            super::rows::axpy(&mut qr, Tracked::small(-(ki - mi + pi)), first);
-        }
-        let qr = div(&qr, Tracked::small(mi - pi));
+        // Symmetric: the right one is the mirror image (its input row is not stored).
+        let qr = if symmetric {
+            ql.reversed()
+        } else {
+            let mut qr = scale(&s[idx(mi - pi)], Tracked::small(ki));
+            if let Some(first) = right.first() {
+                super::rows::axpy(&mut qr, Tracked::small(-(ki - mi + pi)), first);
+            }
+            div(&qr, Tracked::small(mi - pi))
+        };
         let h = Tracked::of(0.5);
         rows.push(lin2(h, &ql, h, &qr));
     } else {
         let aux = auxiliary(k, m, r, p, &left, &right, s);
-        let ki = to_i(k);
-        let coef = crate::exact::binom_q(ki, ki / 2) * crate::exact::pow2(-ki);
         if let Some(g) = aux.into_iter().next() {
-            terms.push((super::super::one_step::up(&coef), g));
+            terms.push((central_binomial_share(k), g));
         }
     }
-    rows.extend(right);
+    if symmetric {
+        mirror(&mut rows, m);
+    } else {
+        rows.extend(right);
+    }
     Step { rows, terms }
+}
+
+/// `C(k, k/2) / 2^k` rounded up (Piegl–Tiller's bound factor, as `one_step.rs`'s exact
+/// `up`, at most one ulp above it): the binomial rounded up to `f64` times an exact power
+/// of two.
+fn central_binomial_share(k: usize) -> f64 {
+    let c = cagd_core::binomial(k, k / 2);
+    #[allow(
+        clippy::cast_precision_loss,
+        reason = "rounded, then corrected upwards"
+    )]
+    let mut f = c as f64;
+    #[allow(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "an integer-valued f64 below 2^128"
+    )]
+    if (f as u128) < c {
+        // One ulp up at least (`f 2^-52 >= ulp(f)`).
+        f *= 1.0 + f64::EPSILON;
+    }
+    f * 2f64.powi(-i32::try_from(k).unwrap_or(i32::MAX))
 }
 
 /// For a step without a bound of its own that reproduces degree `k-1` (every one-degree
@@ -463,9 +508,11 @@ pub(crate) fn stepwise<B: Base>(
     give_up: Option<f64>,
 ) -> Option<Rows<B>> {
     let mut s = identity::<B>(n + 1);
-    // The unit rows are reversal-symmetric, and so is every step's output (see [`mirror`]).
+    // The unit rows are reversal-symmetric, and so is every step's output (see [`mirror`]);
+    // G1 and Farin's direct form read every row of their input, and keep them all.
     let symmetric = match method {
-        Method::PerturbG1 { l1, l2 } => l1.to_bits() == l2.to_bits(),
+        Method::PerturbG1 { .. } => false,
+        Method::Farin => split,
         _ => true,
     };
     let mut terms = Vec::new();
@@ -496,13 +543,16 @@ pub(crate) fn stepwise<B: Base>(
                 err = err.max(row.e.iter().sum());
                 norm = norm.max(row.v.iter().map(|x| x.to_f64().abs()).sum());
             }
-            if !(err <= limit * norm) {
+            if err.is_nan() || err > limit * norm {
                 return None;
             }
         }
     }
     if !valid {
         terms.clear();
+    }
+    if symmetric {
+        materialize(&mut s);
     }
     Some((s, terms))
 }

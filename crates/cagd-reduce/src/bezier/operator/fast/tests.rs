@@ -281,10 +281,31 @@ fn profile_l2_c0_30_15() {
     }
 }
 
-/// Diagnostic (not a check): the proven relative error of each base route.
+/// Diagnostic (not a check): the proven error of the `f64` and the double-word route of a
+/// few methods, relative to the inf-norm, and their bound terms' proven errors against the
+/// terms' size (`cargo test --release -p cagd-reduce --lib diag_route_errors -- --ignored
+/// --nocapture`).
 #[test]
 #[ignore = "diagnostic"]
 fn diag_route_errors() {
+    fn summary<B: Base>(rows: &[Row<B>], terms: &[(f64, Row<B>)], n: usize) -> Option<String> {
+        let b = finish(rows, terms, OperatorRoute::F64, 1e300)?;
+        let norm = b
+            .matrix
+            .chunks_exact(n + 1)
+            .map(|r| r.iter().map(|x| x.abs()).sum::<f64>())
+            .fold(0.0, f64::max);
+        let te: f64 = b.terms.iter().map(|t| t.0 * t.2).sum();
+        let ts: f64 = b
+            .terms
+            .iter()
+            .map(|t| t.0 * t.1.iter().map(|x| x.abs()).sum::<f64>())
+            .sum();
+        Some(format!(
+            "norm {norm:.2e} err {:.2e} terms {te:.2e} of {ts:.2e}",
+            b.error / norm
+        ))
+    }
     for method in [
         Method::Forrest,
         Method::PieglTiller,
@@ -295,34 +316,13 @@ fn diag_route_errors() {
         Method::L2 { r: 1, p: 1 },
     ] {
         for (n, m) in [(10, 5), (15, 10), (20, 10), (30, 15), (64, 32)] {
-            let mut line = format!("{method:?} ({n},{m})");
-            for mixed in [false] {
-                let Some((rows, terms)) = rows_of::<f64>(method, n, m, mixed) else {
-                    println!("{line} f64: given up");
-                    continue;
-                };
-                let b = finish(&rows, &terms, OperatorRoute::F64, 1e300).unwrap();
-                let norm = b
-                    .matrix
-                    .chunks_exact(n + 1)
-                    .map(|r| r.iter().map(|x| x.abs()).sum::<f64>())
-                    .fold(0.0, f64::max);
-                let te: f64 = b.terms.iter().map(|t| t.0 * t.2).sum();
-                let ts: f64 = b
-                    .terms
-                    .iter()
-                    .map(|t| t.0 * t.1.iter().map(|x| x.abs()).sum::<f64>())
-                    .sum();
-                line += &format!(
-                    " f64: norm {norm:.2e} err {:.2e} terms {te:.2e}/{ts:.2e}",
-                    b.error / norm
-                );
-                let (rows, terms) = rows_of::<dd::Dd>(method, n, m, mixed).unwrap();
-                let b = finish(&rows, &terms, OperatorRoute::F64, 1e300).unwrap();
-                let te: f64 = b.terms.iter().map(|t| t.0 * t.2).sum();
-                line += &format!(" dd: err {:.2e} terms {te:.2e}", b.error / norm);
-            }
-            println!("{line}");
+            let f = rows_of::<f64>(method, n, m, false)
+                .and_then(|(rows, terms)| summary(&rows, &terms, n))
+                .unwrap_or_else(|| "given up".to_string());
+            let d = rows_of::<dd::Dd>(method, n, m, false)
+                .and_then(|(rows, terms)| summary(&rows, &terms, n))
+                .unwrap_or_else(|| "given up".to_string());
+            println!("{method:?} ({n},{m}) f64: {f}; double-word: {d}");
         }
     }
 }
