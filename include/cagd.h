@@ -185,7 +185,7 @@ enum CagdStatus
    */
   CAGD_ERR_NON_FINITE = 20,
   /**
-   * A weight is zero, negative or not finite.
+   * A weight is zero, negative, subnormal (below `DBL_MIN`) or not finite.
    */
   CAGD_ERR_NON_POSITIVE_WEIGHT = 21,
   /**
@@ -1270,7 +1270,7 @@ CagdStatus cagd_bspline_new(size_t degree,
  * - `n_knots` (in): must equal `n_points + degree + 1`.
  * - `points` (in): `n_points * dim` doubles, row-major, Euclidean (not multiplied by the
  *   weights). Borrowed and copied.
- * - `weights` (in): `n_points` doubles, each finite and `> 0`. Borrowed and copied.
+ * - `weights` (in): `n_points` doubles, each finite and `>= DBL_MIN` (positive, not subnormal). Borrowed and copied.
  * - `n_points` (in): number of control points, `>= degree + 1`.
  * - `dim` (in): coordinates per point, `>= 1`.
  * - `spline_out` (out): on `CAGD_OK`, a new handle owned by the caller (release with
@@ -1284,7 +1284,7 @@ CagdStatus cagd_bspline_new(size_t degree,
  * - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_points == 0` or `n_points < degree + 1`.
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
  * - `CAGD_ERR_NON_FINITE`: a coordinate or a knot is NaN or infinite.
- * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0`, NaN or infinite (the message
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0`, subnormal, NaN or infinite (the message
  *   gives its index and value).
  * - `CAGD_ERR_BAD_KNOTS`: wrong `n_knots`, decreasing knots, or an empty domain.
  * - `CAGD_ERR_MULTIPLICITY`: a knot value appears more than `degree + 1` times.
@@ -1900,7 +1900,7 @@ CagdStatus cagd_bspline_reduce_uniform(const struct CagdBSpline *spline,
  * - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_u < p + 1` or `n_v < q + 1` (or zero).
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `p > 64` or `q > 64`.
  * - `CAGD_ERR_NON_FINITE`: a coordinate or a knot is NaN or infinite.
- * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0`, NaN or infinite.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0`, subnormal, NaN or infinite.
  * - `CAGD_ERR_BAD_KNOTS`: a knot count is wrong, knots decrease, or a domain is empty.
  * - `CAGD_ERR_MULTIPLICITY`: a knot value appears more than degree + 1 times.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
@@ -2144,7 +2144,7 @@ CagdStatus cagd_bsplinesurface_reduce_to_tolerance(const struct CagdBSplineSurfa
  *   non-decreasing, `t_n < t_{n+1}`. Borrowed.
  * - `points` (in): the `degree + 1` control points `r_{n-degree} .. r_n`, row-major,
  *   `(degree + 1) * dim` doubles. Borrowed.
- * - `weights` (in): their `degree + 1` weights, finite and `> 0`, or NULL for weights 1.
+ * - `weights` (in): their `degree + 1` weights, finite and `>= DBL_MIN` (not subnormal), or NULL for weights 1.
  * - `dim` (in): coordinates per point, `>= 1`.
  * - `curve_out` (out): on `CAGD_OK`, a new rational curve handle of degree `degree`, owned
  *   by the caller (release with `cagd_curve_free`). Not written on failure.
@@ -2971,7 +2971,7 @@ CagdStatus cagd_curve_new(const double *points,
  * Parameters:
  * - `points` (in): `n_points * dim` doubles, row-major (`points[i * dim + k]`), Euclidean
  *   (not multiplied by the weights). Borrowed and copied.
- * - `weights` (in): `n_points` doubles, each finite and `> 0`. Borrowed and copied.
+ * - `weights` (in): `n_points` doubles, each finite and `>= DBL_MIN` (positive, not subnormal). Borrowed and copied.
  * - `n_points` (in): number of control points, `1..=65`.
  * - `dim` (in): coordinates per point, `>= 1`.
  * - `curve_out` (out): on `CAGD_OK`, a new handle owned by the caller (release with
@@ -2985,7 +2985,7 @@ CagdStatus cagd_curve_new(const double *points,
  * - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_points == 0`.
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n_points > 65`.
  * - `CAGD_ERR_NON_FINITE`: a coordinate is NaN or infinite.
- * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0`, NaN or infinite (the message gives
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0`, subnormal, NaN or infinite (the message gives
  *   its index and value).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
@@ -3577,7 +3577,7 @@ CagdStatus cagd_bezier_elevate_batch(const double *points,
  *   `points[i * dim + k]`. Borrowed for the call.
  * - `n_points` (in): number of control points, `1..=65`.
  * - `dim` (in): coordinates per point, `>= 1`.
- * - `weights` (in): `n_points` weights, finite and `> 0`, for a rational curve; NULL for a
+ * - `weights` (in): `n_points` weights, finite and `>= DBL_MIN` (not subnormal), for a rational curve; NULL for a
  *   polynomial one. Borrowed for the call.
  * - `r` (in): how many degrees to add; `n + r <= 64`; 0 copies.
  * - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
@@ -3602,7 +3602,7 @@ CagdStatus cagd_bezier_elevate_batch(const double *points,
  * - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message gives the
  *   point and coordinate), or an elevated coordinate overflows (input near the largest
  *   double; `out` may then be partly written).
- * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is not finite and `> 0`.
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is not finite and `>= DBL_MIN`.
  * - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < (n_points + r) * dim`, or (rational)
  *   `weights_out_cap < n_points + r`; only `*out_needed` is written.
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
@@ -3641,7 +3641,7 @@ CagdStatus cagd_bezier_elevate(const double *points,
  *   `points[i * dim + k]`. Borrowed for the call.
  * - `n_points` (in): number of control points, `1..=65`.
  * - `dim` (in): coordinates per point, `>= 1`.
- * - `weights` (in): `n_points` weights, finite and `> 0`, for a rational curve; NULL for a
+ * - `weights` (in): `n_points` weights, finite and `>= DBL_MIN` (not subnormal), for a rational curve; NULL for a
  *   polynomial one. Borrowed for the call.
  * - `opts` (in): the options, as for `cagd_curve_reduce` (start from
  *   `cagd_reduce_options_init`). Borrowed for the call.
@@ -3672,7 +3672,7 @@ CagdStatus cagd_bezier_elevate(const double *points,
  * - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n_points > 65`.
  * - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message gives the
  *   point and coordinate), or a reduced coordinate overflows.
- * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: an input weight is not finite and `> 0`, or a reduced
+ * - `CAGD_ERR_NON_POSITIVE_WEIGHT`: an input weight is not finite and `>= DBL_MIN`, or a reduced
  *   weight of a rational curve is not positive.
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n`, or `target` below the method's minimum.
  * - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target`, or `r` or `p` below -1.
@@ -4367,7 +4367,7 @@ CagdStatus cagd_tripatch_distance(const struct CagdTriPatch *a,
 /**
  * A human-readable description of the last failure of a `cagd_*` function on the calling
  * thread, naming the argument and the offending value (e.g.
- * `"weights[3] = -0.5 must be finite and > 0"`).
+ * `"weights[3] = -0.5 must be finite and > 0, not subnormal"`).
  *
  * Returns a UTF-8, NUL-terminated string, never NULL; the empty string `""` when the last
  * status-returning call on this thread succeeded or none was made. The string is owned by

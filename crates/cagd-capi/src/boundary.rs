@@ -394,7 +394,7 @@ mod tests {
         assert_eq!(s, CagdStatus::ERR_NON_POSITIVE_WEIGHT);
         assert_eq!(
             last_error_string(),
-            "weights[3] = -0.5 must be finite and > 0"
+            "weights[3] = -0.5 must be finite and > 0, not subnormal"
         );
     }
 

@@ -49,7 +49,7 @@ fn closed_form_degree(degree: usize) -> CResult<()> {
 ///   non-decreasing, `t_n < t_{n+1}`. Borrowed.
 /// - `points` (in): the `degree + 1` control points `r_{n-degree} .. r_n`, row-major,
 ///   `(degree + 1) * dim` doubles. Borrowed.
-/// - `weights` (in): their `degree + 1` weights, finite and `> 0`, or NULL for weights 1.
+/// - `weights` (in): their `degree + 1` weights, finite and `>= DBL_MIN` (not subnormal), or NULL for weights 1.
 /// - `dim` (in): coordinates per point, `>= 1`.
 /// - `curve_out` (out): on `CAGD_OK`, a new rational curve handle of degree `degree`, owned
 ///   by the caller (release with `cagd_curve_free`). Not written on failure.

@@ -34,7 +34,7 @@ pub fn last_error_string() -> String {
 
 /// A human-readable description of the last failure of a `cagd_*` function on the calling
 /// thread, naming the argument and the offending value (e.g.
-/// `"weights[3] = -0.5 must be finite and > 0"`).
+/// `"weights[3] = -0.5 must be finite and > 0, not subnormal"`).
 ///
 /// Returns a UTF-8, NUL-terminated string, never NULL; the empty string `""` when the last
 /// status-returning call on this thread succeeded or none was made. The string is owned by

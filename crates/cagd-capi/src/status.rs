@@ -38,7 +38,7 @@ pub enum CagdStatus {
     ERR_NOT_AVAILABLE = 5,
     /// A coordinate or a knot is NaN or infinite.
     ERR_NON_FINITE = 20,
-    /// A weight is zero, negative or not finite.
+    /// A weight is zero, negative, subnormal (below `DBL_MIN`) or not finite.
     ERR_NON_POSITIVE_WEIGHT = 21,
     /// A knot vector decreases or has the wrong length (`n_points + degree + 1`).
     ERR_BAD_KNOTS = 22,

@@ -1,7 +1,7 @@
 //! The error type shared by every cagd crate (DESIGN.md, "Error model").
 //!
 //! Each variant says what was wrong and with which value, so that a message such as
-//! `weights[3] = -0.5 must be finite and > 0` can be shown to a user without extra context.
+//! `weights[3] = -0.5 must be finite and > 0, not subnormal` can be shown to a user without extra context.
 //! Each variant maps to exactly one C status code in `cagd-capi`.
 
 /// Everything that can go wrong in cagd-core, and the base of the other crates' errors.
@@ -47,8 +47,9 @@ pub enum Error {
         /// The offending value.
         value: f64,
     },
-    /// A weight of a rational object is zero, negative or not finite.
-    #[error("weights[{index}] = {weight} must be finite and > 0")]
+    /// A weight of a rational object is zero, negative, subnormal (below `2^-1022`) or not
+    /// finite.
+    #[error("weights[{index}] = {weight} must be finite and > 0, not subnormal")]
     NonPositiveWeight {
         /// Index of the weight.
         index: usize,

@@ -123,7 +123,7 @@ pub unsafe extern "C" fn cagd_bspline_new(
 /// - `n_knots` (in): must equal `n_points + degree + 1`.
 /// - `points` (in): `n_points * dim` doubles, row-major, Euclidean (not multiplied by the
 ///   weights). Borrowed and copied.
-/// - `weights` (in): `n_points` doubles, each finite and `> 0`. Borrowed and copied.
+/// - `weights` (in): `n_points` doubles, each finite and `>= DBL_MIN` (positive, not subnormal). Borrowed and copied.
 /// - `n_points` (in): number of control points, `>= degree + 1`.
 /// - `dim` (in): coordinates per point, `>= 1`.
 /// - `spline_out` (out): on `CAGD_OK`, a new handle owned by the caller (release with
@@ -137,7 +137,7 @@ pub unsafe extern "C" fn cagd_bspline_new(
 /// - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_points == 0` or `n_points < degree + 1`.
 /// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `degree > 64`.
 /// - `CAGD_ERR_NON_FINITE`: a coordinate or a knot is NaN or infinite.
-/// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0`, NaN or infinite (the message
+/// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0`, subnormal, NaN or infinite (the message
 ///   gives its index and value).
 /// - `CAGD_ERR_BAD_KNOTS`: wrong `n_knots`, decreasing knots, or an empty domain.
 /// - `CAGD_ERR_MULTIPLICITY`: a knot value appears more than `degree + 1` times.

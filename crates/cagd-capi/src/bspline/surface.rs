@@ -50,7 +50,7 @@ pub struct CagdBSplineSurface(pub(crate) BSplineSurface);
 /// - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_u < p + 1` or `n_v < q + 1` (or zero).
 /// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `p > 64` or `q > 64`.
 /// - `CAGD_ERR_NON_FINITE`: a coordinate or a knot is NaN or infinite.
-/// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0`, NaN or infinite.
+/// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0`, subnormal, NaN or infinite.
 /// - `CAGD_ERR_BAD_KNOTS`: a knot count is wrong, knots decrease, or a domain is empty.
 /// - `CAGD_ERR_MULTIPLICITY`: a knot value appears more than degree + 1 times.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.

@@ -88,7 +88,7 @@ pub unsafe extern "C" fn cagd_curve_new(
 /// Parameters:
 /// - `points` (in): `n_points * dim` doubles, row-major (`points[i * dim + k]`), Euclidean
 ///   (not multiplied by the weights). Borrowed and copied.
-/// - `weights` (in): `n_points` doubles, each finite and `> 0`. Borrowed and copied.
+/// - `weights` (in): `n_points` doubles, each finite and `>= DBL_MIN` (positive, not subnormal). Borrowed and copied.
 /// - `n_points` (in): number of control points, `1..=65`.
 /// - `dim` (in): coordinates per point, `>= 1`.
 /// - `curve_out` (out): on `CAGD_OK`, a new handle owned by the caller (release with
@@ -102,7 +102,7 @@ pub unsafe extern "C" fn cagd_curve_new(
 /// - `CAGD_ERR_NOT_ENOUGH_POINTS`: `n_points == 0`.
 /// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n_points > 65`.
 /// - `CAGD_ERR_NON_FINITE`: a coordinate is NaN or infinite.
-/// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0`, NaN or infinite (the message gives
+/// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is `<= 0`, subnormal, NaN or infinite (the message gives
 ///   its index and value).
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
 ///

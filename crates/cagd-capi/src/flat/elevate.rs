@@ -19,7 +19,7 @@ use crate::status::CagdStatus;
 ///   `points[i * dim + k]`. Borrowed for the call.
 /// - `n_points` (in): number of control points, `1..=65`.
 /// - `dim` (in): coordinates per point, `>= 1`.
-/// - `weights` (in): `n_points` weights, finite and `> 0`, for a rational curve; NULL for a
+/// - `weights` (in): `n_points` weights, finite and `>= DBL_MIN` (not subnormal), for a rational curve; NULL for a
 ///   polynomial one. Borrowed for the call.
 /// - `r` (in): how many degrees to add; `n + r <= 64`; 0 copies.
 /// - `out` (out): buffer of `out_cap` doubles; on `CAGD_OK` its first
@@ -44,7 +44,7 @@ use crate::status::CagdStatus;
 /// - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message gives the
 ///   point and coordinate), or an elevated coordinate overflows (input near the largest
 ///   double; `out` may then be partly written).
-/// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is not finite and `> 0`.
+/// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: a weight is not finite and `>= DBL_MIN`.
 /// - `CAGD_ERR_BUFFER_TOO_SMALL`: `out_cap < (n_points + r) * dim`, or (rational)
 ///   `weights_out_cap < n_points + r`; only `*out_needed` is written.
 /// - `CAGD_ERR_PANIC`: internal bug caught at the boundary.

@@ -29,7 +29,7 @@ impl CurveIn<'_> {
 /// Borrows and validates a curve: NULL `points` → `CAGD_ERR_NULL_POINTER`; `dim == 0` or
 /// an overflowing size → `CAGD_ERR_INVALID_ARGUMENT`; `n_points == 0` →
 /// `CAGD_ERR_NOT_ENOUGH_POINTS`; `n_points > 65` → `CAGD_ERR_DEGREE_OUT_OF_RANGE`; a
-/// non-finite coordinate → `CAGD_ERR_NON_FINITE`; a weight not finite and `> 0` →
+/// non-finite coordinate → `CAGD_ERR_NON_FINITE`; a weight not finite and `>= DBL_MIN` →
 /// `CAGD_ERR_NON_POSITIVE_WEIGHT`. `weights` NULL means polynomial.
 ///
 /// # Safety

@@ -27,7 +27,7 @@ use crate::status::CagdStatus;
 ///   `points[i * dim + k]`. Borrowed for the call.
 /// - `n_points` (in): number of control points, `1..=65`.
 /// - `dim` (in): coordinates per point, `>= 1`.
-/// - `weights` (in): `n_points` weights, finite and `> 0`, for a rational curve; NULL for a
+/// - `weights` (in): `n_points` weights, finite and `>= DBL_MIN` (not subnormal), for a rational curve; NULL for a
 ///   polynomial one. Borrowed for the call.
 /// - `opts` (in): the options, as for `cagd_curve_reduce` (start from
 ///   `cagd_reduce_options_init`). Borrowed for the call.
@@ -58,7 +58,7 @@ use crate::status::CagdStatus;
 /// - `CAGD_ERR_DEGREE_OUT_OF_RANGE`: `n_points > 65`.
 /// - `CAGD_ERR_NON_FINITE`: an input coordinate is NaN or infinite (the message gives the
 ///   point and coordinate), or a reduced coordinate overflows.
-/// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: an input weight is not finite and `> 0`, or a reduced
+/// - `CAGD_ERR_NON_POSITIVE_WEIGHT`: an input weight is not finite and `>= DBL_MIN`, or a reduced
 ///   weight of a rational curve is not positive.
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n`, or `target` below the method's minimum.
 /// - `CAGD_ERR_TOO_MANY_CONSTRAINTS`: `r + p + 1 > target`, or `r` or `p` below -1.
