@@ -241,3 +241,55 @@ fn near_overflow_input_gets_a_true_bound_never_nan() {
         );
     }
 }
+
+/// A G1 perturbation with `l1 = 1e308` (the C fuzz run, seed 112): its error space came out
+/// of rank 0 and the single-curve bound's loop panicked on a zero-length chunk. Now a named
+/// error or a result whose bound is not below the measured error (here `+inf` or huge).
+#[test]
+fn overflowing_operator_gives_no_panic_and_no_false_bound() {
+    let c = BezierCurve::new(
+        vec![
+            0.578_070_148_464_279_8,
+            0.038_636_606_968_697_86,
+            0.457_350_506_204_539_15,
+            0.363_404_193_974_673_75,
+            0.882_628_394_694_336_7,
+        ],
+        1,
+    )
+    .unwrap();
+    for level in [BoundLevel::Fast, BoundLevel::Tight] {
+        for (l1, l2) in [(1e308, 0.0), (0.0, 1e308), (1e308, 1e308), (1e300, -0.5)] {
+            let opts = ReduceOptions {
+                measure: true,
+                bound: level,
+                ..ReduceOptions::new(Method::PerturbG1 { l1, l2 }, 3)
+            };
+            if let Ok(r) = reduce_with(&c, &opts) {
+                let (b, e) = (r.report.error_bound.unwrap(), r.report.max_error.unwrap());
+                assert!(!(b < e), "bound {b} below the measured {e} ({l1}, {l2})");
+            }
+            // The batch route of the same operator: no panic either.
+            if let Ok(op) = operator(Method::PerturbG1 { l1, l2 }, 4, 3) {
+                let input: Vec<f64> = c.points().repeat(9);
+                let (mut out, mut bounds) = (vec![0.0; 4 * 9], vec![0.0; 9]);
+                if cagd_reduce::reduce_batch_with_bounds(
+                    &op,
+                    &input,
+                    1,
+                    &mut out,
+                    &mut bounds,
+                    level,
+                )
+                .is_ok()
+                {
+                    // (The measurement itself may overflow at this scale.)
+                    let q = BezierCurve::new(out[..4].to_vec(), 1).unwrap();
+                    if let Ok(e) = max_deviation(&c, &q) {
+                        assert!(!(bounds[0] < e), "batch bound {} below {e}", bounds[0]);
+                    }
+                }
+            }
+        }
+    }
+}

@@ -108,6 +108,12 @@ impl LinearMap {
 
     /// The plain loop for one curve (the bound of a single curve): unrolled for `dim <= 4`.
     pub(crate) fn apply_loop(&self, input: &[f64], dim: usize, output: &mut [f64]) {
+        if self.rows == 0 || self.cols == 0 || dim == 0 {
+            // An empty map (e.g. the error basis of an operator whose residual did not
+            // survive rounding: rank 0) writes nothing.
+            output.fill(0.0);
+            return;
+        }
         match dim {
             1 => loop_fixed::<1>(&self.a, self.cols, input, output),
             2 => loop_fixed::<2>(&self.a, self.cols, input, output),
