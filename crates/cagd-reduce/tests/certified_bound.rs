@@ -252,7 +252,7 @@ fn overflowing_operator_gives_no_panic_and_no_false_bound() {
             0.578_070_148_464_279_8,
             0.038_636_606_968_697_86,
             0.457_350_506_204_539_15,
-            0.363_404_193_974_673_75,
+            0.363_404_193_974_673_8,
             0.882_628_394_694_336_7,
         ],
         1,
@@ -267,7 +267,7 @@ fn overflowing_operator_gives_no_panic_and_no_false_bound() {
             };
             if let Ok(r) = reduce_with(&c, &opts) {
                 let (b, e) = (r.report.error_bound.unwrap(), r.report.max_error.unwrap());
-                assert!(!(b < e), "bound {b} below the measured {e} ({l1}, {l2})");
+                assert!(b >= e, "bound {b} below the measured {e} ({l1}, {l2})");
             }
             // The batch route of the same operator: no panic either.
             if let Ok(op) = operator(Method::PerturbG1 { l1, l2 }, 4, 3) {
@@ -286,7 +286,7 @@ fn overflowing_operator_gives_no_panic_and_no_false_bound() {
                     // (The measurement itself may overflow at this scale.)
                     let q = BezierCurve::new(out[..4].to_vec(), 1).unwrap();
                     if let Ok(e) = max_deviation(&c, &q) {
-                        assert!(!(bounds[0] < e), "batch bound {} below {e}", bounds[0]);
+                        assert!(bounds[0] >= e, "batch bound {} below {e}", bounds[0]);
                     }
                 }
             }
