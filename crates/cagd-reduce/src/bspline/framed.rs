@@ -6,6 +6,9 @@
 
 use cagd_core::{BSplineCurve, BSplineSurface, Error, ModelFrame, Result};
 
+use super::measure::spline_max_deviation;
+use super::options::{BSplineOptions, BSplineReduction};
+
 /// A rational shape's frame and the tolerance to use inside it.
 pub(crate) struct Frame {
     /// The frame of the input's control points.
@@ -133,4 +136,45 @@ pub(crate) fn unframe_surface(frame: &Frame, s: &BSplineSurface) -> Result<BSpli
         }
         None => BSplineSurface::new(s.degrees(), ku, kv, pts, s.counts(), s.dim()),
     }
+}
+
+/// Runs the curve reduction `reduce` in the frame of `curve` (the centred, scaled control
+/// points of [`frame_curve`], the tolerance shrunk to the frame's inner tolerance, no
+/// measurement), moves the result back and finishes its bounds with the round trip's
+/// rounding ([`Frame::finish`]); `reduce` on `curve` itself when there is no frame. The
+/// tolerance is checked again on the finished bound, and the measured error, if asked, is
+/// taken against the input itself.
+///
+/// # Errors
+/// Those of `reduce` (in model units, [`Frame::model_error`]), and
+/// [`Error::ConditionNotMet`] when the finished bound exceeds the tolerance.
+pub(crate) fn reduce_curve_framed(
+    curve: &BSplineCurve,
+    opts: &BSplineOptions,
+    reduce: impl Fn(&BSplineCurve, &BSplineOptions) -> Result<BSplineReduction>,
+) -> Result<BSplineReduction> {
+    let Some((frame, moved)) = frame_curve(curve, opts.tolerance)? else {
+        return reduce(curve, opts);
+    };
+    let inner = BSplineOptions {
+        tolerance: frame.inner_tol,
+        measure: false,
+        ..*opts
+    };
+    let mut red = reduce(&moved, &inner).map_err(|e| frame.model_error(e, opts.tolerance))?;
+    let out = red.curve.points().to_vec();
+    red.curve = unframe_curve(&frame, &red.curve)?;
+    red.report.tolerance = opts.tolerance;
+    red.report.error_bound = frame.finish(red.report.error_bound, &out);
+    red.report.segment_bound = frame.finish(red.report.segment_bound, &out);
+    if red.report.error_bound > opts.tolerance {
+        return Err(Error::ConditionNotMet {
+            eq: "tolerance",
+            why: "the bound with the frame's rounding exceeds the tolerance (rounding level)",
+        });
+    }
+    if opts.measure {
+        red.report.max_error = Some(spline_max_deviation(curve, &red.curve)?);
+    }
+    Ok(red)
 }

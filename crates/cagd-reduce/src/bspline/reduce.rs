@@ -5,8 +5,7 @@
 
 use cagd_core::{BSplineCurve, Error, Result, check_tolerance};
 
-use super::framed::{frame_curve, unframe_curve};
-use super::measure::spline_max_deviation;
+use super::framed::reduce_curve_framed;
 use super::options::{BSplineOptions, BSplineReduction, BSplineStrategy};
 use crate::Method;
 
@@ -133,29 +132,5 @@ pub fn reduce_bspline(curve: &BSplineCurve, opts: &BSplineOptions) -> Result<BSp
 /// taken against the input itself. (Spans: the same as unframed on the `cad_curves`
 /// bench.)
 fn reduce_global_framed(curve: &BSplineCurve, opts: &BSplineOptions) -> Result<BSplineReduction> {
-    let Some((frame, moved)) = frame_curve(curve, opts.tolerance)? else {
-        return super::global::reduce_global(curve, opts);
-    };
-    let inner = BSplineOptions {
-        tolerance: frame.inner_tol,
-        measure: false,
-        ..*opts
-    };
-    let mut red = super::global::reduce_global(&moved, &inner)
-        .map_err(|e| frame.model_error(e, opts.tolerance))?;
-    let out = red.curve.points().to_vec();
-    red.curve = unframe_curve(&frame, &red.curve)?;
-    red.report.tolerance = opts.tolerance;
-    red.report.error_bound = frame.finish(red.report.error_bound, &out);
-    red.report.segment_bound = frame.finish(red.report.segment_bound, &out);
-    if red.report.error_bound > opts.tolerance {
-        return Err(Error::ConditionNotMet {
-            eq: "tolerance",
-            why: "the bound with the frame's rounding exceeds the tolerance (rounding level)",
-        });
-    }
-    if opts.measure {
-        red.report.max_error = Some(spline_max_deviation(curve, &red.curve)?);
-    }
-    Ok(red)
+    reduce_curve_framed(curve, opts, super::global::reduce_global)
 }

@@ -185,31 +185,7 @@ fn reduce_segments_capped(
     method: Method,
     cap: usize,
 ) -> Result<BSplineReduction> {
-    let Some((frame, moved)) = super::framed::frame_curve(curve, opts.tolerance)? else {
-        return reduce_segments_at(curve, opts, method, cap);
-    };
-    let inner = BSplineOptions {
-        tolerance: frame.inner_tol,
-        measure: false,
-        ..*opts
-    };
-    let mut red = reduce_segments_at(&moved, &inner, method, cap)
-        .map_err(|e| frame.model_error(e, opts.tolerance))?;
-    let out = red.curve.points().to_vec();
-    red.curve = super::framed::unframe_curve(&frame, &red.curve)?;
-    red.report.tolerance = opts.tolerance;
-    red.report.error_bound = frame.finish(red.report.error_bound, &out);
-    red.report.segment_bound = frame.finish(red.report.segment_bound, &out);
-    if red.report.error_bound > opts.tolerance {
-        return Err(Error::ConditionNotMet {
-            eq: "tolerance",
-            why: "the bound with the frame's rounding exceeds the tolerance (rounding level)",
-        });
-    }
-    if opts.measure {
-        red.report.max_error = Some(spline_max_deviation(curve, &red.curve)?);
-    }
-    Ok(red)
+    super::framed::reduce_curve_framed(curve, opts, |c, o| reduce_segments_at(c, o, method, cap))
 }
 
 /// [`reduce_segments`] without the frame.
