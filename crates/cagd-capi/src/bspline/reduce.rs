@@ -176,7 +176,8 @@ pub unsafe extern "C" fn cagd_bspline_reduce(
 /// Options used: `method` (with `r`, `p`, `l1`, `l2`), `target`, `merge`, `measure`.
 ///
 /// Parameters:
-/// - `spline` (in): the spline, uniform knots (all gaps equal within `1e-12` relative).
+/// - `spline` (in): the spline, uniform knots (every gap within `1e-9` of the spacing; the
+///   output keeps the input's own knots, and the bounds include the rounding of their gaps).
 /// - `opts` (in): the options. Borrowed for the call.
 /// - `spline_out` (out): on `CAGD_OK`, the merged spline of degree `target` on the
 ///   input's domain (`CAGD_MERGE_EXACT`: clamped, interior knots of multiplicity
@@ -194,7 +195,8 @@ pub unsafe extern "C" fn cagd_bspline_reduce(
 ///   an invalid `method` or `merge` code, `CAGD_MERGE_EXACT` with a method that does not
 ///   interpolate the segment ends, the two outputs are the same address, or a pointer is
 ///   misaligned.
-/// - `CAGD_ERR_BAD_KNOTS`: the knots are not uniform.
+/// - `CAGD_ERR_BAD_KNOTS`: the knots are not uniform (a spacing of a few ulps of the knots
+///   is not: its gaps differ by whole ulps).
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS`: as `cagd_curve_reduce`
 ///   for the pair `(n, target)`.
 /// - `CAGD_ERR_CONDITION_NOT_MET`: the exact merge finds joints that do not meet.

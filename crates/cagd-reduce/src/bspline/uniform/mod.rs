@@ -111,19 +111,39 @@ fn apply(a: &[f64], cols: usize, x: &[f64], pdim: usize, out: &mut Vec<f64>) {
     }
 }
 
-/// The uniform knot spacing of `knots`, or an error if they are not uniform (all gaps
-/// equal within `1e-12` relative).
+/// Largest gap deviation accepted as uniform, relative to the spacing `h`: enough for
+/// uniform knots rounded to `f64` up to `|knot| / h` of about `2e6`, and small enough that
+/// the seed's uniform model and the actual spline differ only by rounding (the difference
+/// is bounded and added anyway, see [`uniform_at`]).
+const UNIFORM_GAP_TOL: f64 = 1e-9;
+
+/// The uniform knot spacing of `knots`, or an error if they are not uniform: every gap
+/// within `1e-9 h` of `h`, relative to the spacing itself (a tolerance relative to the
+/// knots' magnitude would call a spacing of a few ulps uniform).
 fn uniform_spacing(knots: &[f64]) -> Result<f64> {
     let h = (knots[knots.len() - 1] - knots[0]) / (knots.len() - 1) as f64;
-    let tol = 1e-12 * (knots[0].abs().max(knots[knots.len() - 1].abs()) + h);
+    let tol = UNIFORM_GAP_TOL * h;
     if h <= 0.0 || knots.windows(2).any(|w| ((w[1] - w[0]) - h).abs() > tol) {
         return Err(Error::BadParameter {
             name: "knots",
             value: h,
-            why: "seed 001 needs uniform (equally spaced, simple) knots",
+            why: "seed 001 needs uniform (equally spaced, simple) knots: every gap within \
+                  1e-9 of the spacing (a spacing of a few ulps of the knots is not uniform)",
         });
     }
     Ok(h)
+}
+
+/// The Bézier pieces of every span of the spline `(degree, knots, work)` in working
+/// coordinates (`pdim`, homogeneous for a NURBS), as flat point lists.
+fn pieces(degree: usize, knots: &[f64], work: &[f64], pdim: usize) -> Result<Vec<Vec<f64>>> {
+    Ok(
+        BSplineCurve::new(degree, knots.to_vec(), work.to_vec(), pdim)?
+            .to_beziers()?
+            .into_iter()
+            .map(|s| s.curve.points().to_vec())
+            .collect(),
+    )
 }
 
 /// Reduces a uniform B-spline (or NURBS: the homogeneous points are reduced) of degree `n`
@@ -212,7 +232,7 @@ fn uniform_at(
 ) -> Result<UniformReduction> {
     let (n, dim, knots) = (curve.degree(), curve.dim(), curve.knots());
     method.check(n, m)?;
-    let h = uniform_spacing(knots)?;
+    uniform_spacing(knots)?;
     let k = method.end_orders(m).0.min(method.end_orders(m).1);
     if merge == Merge::Exact && k < 0 {
         return Err(Error::BadParameter {
@@ -259,14 +279,21 @@ fn uniform_at(
             }
         }
     };
+    // The seed's model takes the knots as exactly uniform; the actual spans of the input
+    // (its knots uniform within `UNIFORM_GAP_TOL`, rounded) may differ from the model's
+    // `S^(n)` pieces: that difference, bounded by the convex hull, is part of every bound.
+    let actual_in = pieces(n, knots, &work, pdim)?;
+    let model_gap_h = actual_in
+        .iter()
+        .zip(&input_bez)
+        .map(|(a, b)| hull_bound(a, b, pdim))
+        .fold(0.0f64, f64::max);
     let all_reduced: Vec<f64> = reduced_work.concat();
-    let segment_bound = to_model(seg_bound_h, &all_reduced);
-    let (lo, hi) = curve.domain();
+    let segment_bound = to_model(seg_bound_h + model_gap_h, &all_reduced);
     let (merged, error_bound) = match merge {
         Merge::Exact => {
-            let breaks: Vec<f64> = (0..=nseg).map(|s| lo + s as f64 * h).collect();
-            let mut breaks = breaks;
-            breaks[nseg] = hi;
+            // The input's own span ends: the output has the input's parameterization.
+            let breaks = knots[n..=n + nseg].to_vec();
             let scale = max_norm(&work, pdim) + 1.0;
             // The joints agree up to the rounding of the reduced points; the merge moves a
             // joint point by at most tol / 2 and the knot removals by at most tol in total.
@@ -304,21 +331,17 @@ fn uniform_at(
             for (p, c) in acc.chunks_exact_mut(pdim).zip(&count) {
                 p.iter_mut().for_each(|x| *x /= *c as f64);
             }
-            let shift = knots[0] + (n - m) as f64 * h;
-            let new_knots: Vec<f64> = (0..npts + m + 1).map(|i| shift + i as f64 * h).collect();
-            let s_m = s_matrix(m)?;
-            let mut bound_h = 0.0f64;
-            let mut span = Vec::new();
-            for (s, bin) in input_bez.iter().enumerate() {
-                apply(
-                    s_m,
-                    m + 1,
-                    &acc[s * pdim..(s + m + 1) * pdim],
-                    pdim,
-                    &mut span,
-                );
-                bound_h = bound_h.max(hull_bound(bin, &span, pdim));
-            }
+            // The input's knots shifted by `n - m` (uniform spacing `h`, the input's
+            // domain), taken from the input rather than recomputed so that no rounding of
+            // `knot + i h` moves them.
+            let new_knots = knots[n - m..n - m + npts + m + 1].to_vec();
+            // Every span of the merged spline against the input's span, both extracted
+            // from the actual knots.
+            let bound_h = actual_in
+                .iter()
+                .zip(pieces(m, &new_knots, &acc, pdim)?)
+                .map(|(bin, span)| hull_bound(bin, &span, pdim))
+                .fold(0.0f64, f64::max);
             let c = match weights {
                 None => BSplineCurve::new(m, new_knots, acc.clone(), dim)?,
                 Some(_) => {

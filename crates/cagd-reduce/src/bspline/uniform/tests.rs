@@ -179,3 +179,73 @@ fn rational_and_errors() {
         Err(Error::BadParameter { .. })
     ));
 }
+
+/// A one-span degree-4 plane curve on the knots `lo + i h` (computed in `f64`), with the
+/// points of the C fuzz case that found a bound below the measured error.
+fn one_span(lo: f64, h: f64) -> Result<BSplineCurve> {
+    let knots: Vec<f64> = (0..10).map(|i| lo + f64::from(i) * h).collect();
+    let pts = vec![0.3, -0.7, 0.9, 0.2, -0.4, 0.8, 0.1, -0.9, -0.6, 0.5];
+    BSplineCurve::new(4, knots, pts, 2)
+}
+
+#[test]
+fn a_spacing_of_a_few_ulps_is_not_uniform() {
+    // The fuzz case (seed 112): a domain ~8 ulps wide at 0.19; its knots, rounded, have
+    // gaps of 7 to 9 ulps, which the old check (1e-12 of the knots' size) called uniform,
+    // and the reduction to a line reported a bound 7x below the measured error.
+    let c = one_span(0.193_378_843_759_196, 2.2e-16).unwrap();
+    for merge in [Merge::Exact, Merge::Lossy] {
+        let r = reduce_uniform_bspline(&c, 1, Method::L2 { r: 0, p: 0 }, merge);
+        assert!(
+            matches!(r, Err(Error::BadParameter { name: "knots", .. })),
+            "{merge:?}: {r:?}"
+        );
+    }
+    // Gaps 1e-9 apart at knots of size 1000 (spacing 1e-6): not uniform either (the old
+    // check accepted 1e-3 of the spacing there).
+    let mut knots: Vec<f64> = (0..10).map(|i| 1000.0 + f64::from(i) * 1e-6).collect();
+    knots[5] += 5e-10;
+    let c = BSplineCurve::new(4, knots, one_span(0.0, 1.0).unwrap().points().to_vec(), 2).unwrap();
+    assert!(matches!(
+        reduce_uniform_bspline(&c, 2, Method::Eck, Merge::Lossy),
+        Err(Error::BadParameter { name: "knots", .. })
+    ));
+}
+
+#[test]
+fn rounded_uniform_knots_far_from_zero_keep_true_bounds() {
+    // Uniform knots rounded to f64 (gaps equal only within a few ulps of 1000) are
+    // accepted; the output has the input's own knots, and every bound holds against the
+    // actual (slightly non-uniform) input.
+    for (lo, h) in [(1000.0, 0.1), (1000.0, 1e-3), (-37.25, 0.01), (0.0, 1.0)] {
+        let c = one_span(lo, h).unwrap();
+        for (m, method) in [
+            (1, Method::L2 { r: 0, p: 0 }),
+            (2, Method::Eck),
+            (3, Method::L2 { r: 1, p: 1 }),
+        ] {
+            for merge in [Merge::Exact, Merge::Lossy] {
+                let Ok(r) = reduce_uniform_bspline(&c, m, method, merge) else {
+                    assert_eq!(merge, Merge::Exact, "{lo} {h} {method:?}");
+                    continue;
+                };
+                assert_eq!(
+                    r.curve.domain(),
+                    c.domain(),
+                    "{lo} {h} {method:?} {merge:?}"
+                );
+                let d = spline_max_deviation(&c, &r.curve).unwrap();
+                assert!(
+                    d <= r.error_bound,
+                    "{lo} {h} {method:?} {merge:?}: {d} > {}",
+                    r.error_bound
+                );
+                assert!(
+                    r.error_bound <= 1.5 * d + 1e-9,
+                    "{lo} {h} {method:?} {merge:?}: {d} vs {}",
+                    r.error_bound
+                );
+            }
+        }
+    }
+}
