@@ -124,9 +124,9 @@ pub unsafe extern "C" fn cagd_nurbs_span_to_bezier(
 /// Returns:
 /// - `CAGD_OK`.
 /// - `CAGD_ERR_NULL_POINTER`: `curve`, `knots` or `span_out` is NULL.
-/// - `CAGD_ERR_CONVERSION_CONDITION`: an inverse weight is `<= 0` (condition 15.1.8 or the
-///   case 15.3.13 / 14 / 15 / 16 that applies; the message gives the weight's index
-///   `w_{n-degree+index}` and its value).
+/// - `CAGD_ERR_CONVERSION_CONDITION`: an inverse weight is `<= 0` or subnormal (condition
+///   15.1.8 or the case 15.3.13 / 14 / 15 / 16 that applies; the message gives the weight's
+///   index `w_{n-degree+index}` and its value).
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`: the curve's degree is not 2 or 3.
 /// - `CAGD_ERR_BAD_KNOTS`, `CAGD_ERR_NON_FINITE`, `CAGD_ERR_INVALID_ARGUMENT`: as for
 ///   `cagd_nurbs_span_to_bezier`; `CAGD_ERR_NON_FINITE` also when the extrapolation factor
@@ -253,7 +253,8 @@ pub unsafe extern "C" fn cagd_nurbs22_span_to_bezier(
 /// Returns:
 /// - `CAGD_OK`: the outputs are written.
 /// - `CAGD_ERR_CONVERSION_CONDITION`: the weights are not rank 1 (condition "15.2 separable
-///   weights"), or an inverse weight is `<= 0` (15.2.11 along `u`, 15.2.12 along `v`).
+///   weights"), or an inverse weight is `<= 0` or subnormal (15.2.11 along `u`, 15.2.12
+///   along `v`).
 /// - `CAGD_ERR_NULL_POINTER`: a knot, point or output pointer is NULL.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `dim == 0`, a zero-length span, outputs that overlap, a
 ///   misaligned pointer.

@@ -189,7 +189,10 @@ fn inverse_direction(
 ) -> Result<([f64; 3], [[f64; 3]; 3])> {
     let mut w = [0.0; 3];
     inverse_map(gaps, &big, 1, &mut w);
-    if let Some(index) = w.iter().position(|x| !(x.is_finite() && *x > 0.0)) {
+    if let Some(index) = w
+        .iter()
+        .position(|x| !(x.is_finite() && *x >= f64::MIN_POSITIVE))
+    {
         return Err(Error::ConversionCondition {
             condition,
             what,

@@ -113,7 +113,10 @@ pub fn to_bezier_pieces_into(curve: &BSplineCurve, out: &mut BezierPieces) -> Re
                     }
                 },
             );
-            if let Some(i) = ws.iter().position(|x| !(x.is_finite() && *x > 0.0)) {
+            if let Some(i) = ws
+                .iter()
+                .position(|x| !(x.is_finite() && *x >= f64::MIN_POSITIVE))
+            {
                 return Err(cagd_core::Error::NonPositiveWeight {
                     index: i,
                     weight: ws[i],

@@ -145,6 +145,26 @@ mod tests {
     }
 
     #[test]
+    fn a_subnormal_inverse_weight_fails_the_condition() {
+        // w_{n-2} = 2 W0 - W1 = 2^-1060, positive but subnormal: no curve takes that weight,
+        // so the condition fails (the C fuzz run found it reported as a bad input weight).
+        let (w0, w1) = (2f64.powi(-1020), 2f64.powi(-1019) - 2f64.powi(-1060));
+        assert!(2.0 * w0 - w1 > 0.0 && 2.0 * w0 - w1 < f64::MIN_POSITIVE);
+        let bez = BezierCurve::new_rational(vec![0.0, 1.0, 2.0], vec![w0, w1, w0], 1).unwrap();
+        let e = bezier_to_quadratic_span(&bez, &[0.0, 1.0, 2.0, 3.0]).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                Error::ConversionCondition {
+                    condition: "15.1.8",
+                    ..
+                }
+            ),
+            "{e}"
+        );
+    }
+
+    #[test]
     fn condition_matches_15_1_8_as_printed() {
         // 15.1.8 is necessary and sufficient (SPEC-convert §15.1): compare on a grid.
         for &(b, c, d) in &[(1.0, 0.5, 2.0), (0.0, 1.0, 1.0), (2.0, 3.0, 0.0)] {

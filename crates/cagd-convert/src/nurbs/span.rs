@@ -106,7 +106,8 @@ pub(crate) fn combine(out: &mut [f64], a: &[f64], x: f64, b: &[f64], y: f64, z: 
 
 /// Splits homogeneous points into a [`NurbsSpan`] after checking that every weight is `> 0`
 /// (the inverse conditions: SPEC-convert §15.1, eq. 15.1.8, and §15.3, eq. 15.3.13–16, hold
-/// exactly when all inverse weights are positive).
+/// exactly when all inverse weights are positive) and not subnormal (below
+/// `f64::MIN_POSITIVE`: no curve takes such a weight, so it fails as zero does).
 ///
 /// # Errors
 /// [`Error::ConversionCondition`] naming `condition` and the first non-positive weight.
@@ -123,7 +124,10 @@ pub(crate) fn span_from_homogeneous(
     for i in 0..n {
         weights[i] = hom[i * (dim + 1) + dim];
     }
-    if let Some(index) = weights.iter().position(|w| !(w.is_finite() && *w > 0.0)) {
+    if let Some(index) = weights
+        .iter()
+        .position(|w| !(w.is_finite() && *w >= f64::MIN_POSITIVE))
+    {
         return Err(Error::ConversionCondition {
             condition,
             what,
