@@ -9,7 +9,7 @@ mod nodes;
 
 use cagd_core::Result;
 
-pub(crate) use nodes::{max_pair_norm, max_value_norm};
+pub(crate) use nodes::{max_pair_norm_t, max_value_norm};
 
 use super::operator::{BoundMap, Operator, check_len, hull_bound, max_norm};
 
@@ -116,7 +116,13 @@ impl Operator {
         let smax = match &bm.split {
             Some((even, odd)) => {
                 let (ce, co) = coef.split_at(even.cols() * dim);
-                max_pair_norm((even.matrix(), ce), (odd.matrix(), co), dim)
+                let rows = even.rows();
+                max_pair_norm_t(
+                    (even.transposed().0, ce),
+                    (odd.transposed().0, co),
+                    rows,
+                    dim,
+                )
             }
             None => max_value_norm(bm.samples.matrix(), basis.rank, coef, dim),
         };
