@@ -9,7 +9,7 @@ mod nodes;
 
 use cagd_core::Result;
 
-pub(crate) use nodes::{max_pair_norm_t, max_value_norm};
+pub(crate) use nodes::{BY_NODES_MIN, max_pair_norm, max_pair_norm_t, max_value_norm};
 
 use super::operator::{BoundMap, Operator, check_len, hull_bound, max_norm};
 
@@ -116,13 +116,17 @@ impl Operator {
         let smax = match &bm.split {
             Some((even, odd)) => {
                 let (ce, co) = coef.split_at(even.cols() * dim);
-                let rows = even.rows();
-                max_pair_norm_t(
-                    (even.transposed().0, ce),
-                    (odd.transposed().0, co),
-                    rows,
-                    dim,
-                )
+                if even.matrix().len() + odd.matrix().len() >= BY_NODES_MIN {
+                    let rows = even.rows();
+                    max_pair_norm_t(
+                        (even.transposed().0, ce),
+                        (odd.transposed().0, co),
+                        rows,
+                        dim,
+                    )
+                } else {
+                    max_pair_norm((even.matrix(), ce), (odd.matrix(), co), dim)
+                }
             }
             None => max_value_norm(bm.samples.matrix(), basis.rank, coef, dim),
         };

@@ -48,6 +48,12 @@ fn fused<const D: usize>(v: &[f64], r: usize, c: &[f64]) -> f64 {
     if bad { f64::NAN } else { best.sqrt() }
 }
 
+/// Fewest entries of the split node maps (`rows r`, multiply-adds per coordinate) for
+/// which [`max_pair_norm_t`] is used; below, [`max_pair_norm`] (measured with callgrind:
+/// at (4,3) and (5,4), 9-11 entries, the node-major loops cost 160-300 instructions more
+/// per curve; from (10,5) fast, 65 entries, they cost less).
+pub(crate) const BY_NODES_MIN: usize = 48;
+
 /// The symmetric split's largest node value norm for one curve (the per-curve bound; the
 /// batch takes its maxima in the lanes kernel): `max_j max(||e_j + o_j||, ||e_j - o_j||)`
 /// with `e_j = sum_k ve_jk ce_k` and `o_j` alike (see `operator/error_map.rs`), the node
@@ -176,9 +182,10 @@ fn part_values_t(vt: &[f64], rows: usize, c: &[f64], dim: usize, out: &mut [f64]
 
 /// The symmetric split's [`max_value_norm`] (see `operator/error_map.rs`): `max_j
 /// max(||e_j + o_j||, ||e_j - o_j||)` with `e_j = sum_k ve_jk ce_k` (`ve` row-major with
-/// `ce.len() / dim` columns) and `o_j` alike; either part may be empty (zero). The test
-/// oracle of [`max_pair_norm_t`].
-#[cfg(test)]
+/// `ce.len() / dim` columns) and `o_j` alike; either part may be empty (zero). Node by
+/// node with the point in registers: the route for small maps (below
+/// [`BY_NODES_MIN`] multiply-adds per coordinate, where [`max_pair_norm_t`]'s set-up
+/// costs more than it saves), and the test oracle of [`max_pair_norm_t`].
 pub(crate) fn max_pair_norm(
     (ve, ce): (&[f64], &[f64]),
     (vo, co): (&[f64], &[f64]),
@@ -211,7 +218,6 @@ pub(crate) fn max_pair_norm(
 }
 
 /// `out = sum_k v_jk c_k` over the `r` columns of row `j` of `v` (zero for `r = 0`).
-#[cfg(test)]
 fn part_value(v: &[f64], r: usize, j: usize, c: &[f64], out: &mut [f64]) {
     out.fill(0.0);
     if r == 0 {
@@ -223,7 +229,6 @@ fn part_value(v: &[f64], r: usize, j: usize, c: &[f64], out: &mut [f64]) {
     }
 }
 
-#[cfg(test)]
 fn pair_fused<const D: usize>((ve, ce): (&[f64], &[f64]), (vo, co): (&[f64], &[f64])) -> f64 {
     let (re, ro) = (ce.len() / D, co.len() / D);
     let rows = ve.len().checked_div(re).unwrap_or(vo.len() / ro.max(1));
