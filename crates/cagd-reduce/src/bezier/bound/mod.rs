@@ -128,6 +128,12 @@ impl Operator {
                     max_pair_norm((even.matrix(), ce), (odd.matrix(), co), dim)
                 }
             }
+            // The full map as an even part with an empty odd part: `e +- 0` squares to
+            // the bits of `e` squared, so this is `max_value_norm`'s result (tested).
+            None if bm.samples.matrix().len() >= BY_NODES_MIN => {
+                let rows = bm.samples.rows();
+                max_pair_norm_t((bm.samples.transposed().0, coef), (&[], &[]), rows, dim)
+            }
             None => max_value_norm(bm.samples.matrix(), basis.rank, coef, dim),
         };
         self.curve_bound(bm, points, dim, smax)

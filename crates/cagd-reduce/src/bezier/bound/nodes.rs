@@ -351,6 +351,38 @@ mod tests {
         }
     }
 
+    /// With an empty odd part the node-major loops give [`max_value_norm`]'s bits (the
+    /// route of the per-curve bound for maps without the symmetric split).
+    #[test]
+    fn full_map_by_nodes_is_max_value_norm_bit_for_bit() {
+        for dim in 1..=6 {
+            for (rows, r) in [(1, 1), (7, 3), (23, 5), (127, 15), (271, 32)] {
+                let v: Vec<f64> = (0..rows * r).map(|i| (i as f64 * 0.917).sin()).collect();
+                let mut vt = vec![0.0; rows * r];
+                for j in 0..rows {
+                    for k in 0..r {
+                        vt[k * rows + j] = v[j * r + k];
+                    }
+                }
+                for bad in [None, Some(f64::NAN), Some(f64::NEG_INFINITY)] {
+                    let mut c: Vec<f64> = (0..r * dim)
+                        .map(|i| (i as f64 * 2.11).cos() * 1e-3)
+                        .collect();
+                    if let Some(x) = bad {
+                        c[r * dim - 1] = x;
+                    }
+                    let want = max_value_norm(&v, r, &c, dim);
+                    let got = max_pair_norm_t((&vt, &c), (&[], &[]), rows, dim);
+                    assert_eq!(
+                        got.to_bits(),
+                        want.to_bits(),
+                        "dim {dim} rows {rows} r {r} {bad:?}: {got} {want}"
+                    );
+                }
+            }
+        }
+    }
+
     /// The pair norm is the norm over the rows of `[ve vo]` and `[ve -vo]` applied to
     /// `[ce; co]`, for every split of the columns (empty parts included), and keeps NaN.
     #[test]
