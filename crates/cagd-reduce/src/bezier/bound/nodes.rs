@@ -1,7 +1,8 @@
 //! The largest norm of the error curve's node values `V c` (goes beyond the seed; see
-//! `operator/error_map.rs`) for one curve: fused (no buffer) for the full map, node by
-//! node in a per-thread scratch for the symmetric split; the batch computes its own in
-//! `lanes.rs`. A NaN value makes the result NaN (never silently skipped), which the bound
+//! `operator/error_map.rs`) for one curve: node by node with the point in registers for
+//! small maps, node-major in a per-thread scratch from [`BY_NODES_MIN`] entries (the
+//! symmetric split's two parts, or the full map as an even part alone), both with the
+//! same sums in the same order; the batch computes its own in `lanes.rs`. A NaN value makes the result NaN (never silently skipped), which the bound
 //! turns into `+inf`.
 
 /// `max_j ||sum_k v_jk c_k||` for `v` row-major with `r` columns and `c` = `r` points of
@@ -48,8 +49,8 @@ fn fused<const D: usize>(v: &[f64], r: usize, c: &[f64]) -> f64 {
     if bad { f64::NAN } else { best.sqrt() }
 }
 
-/// Fewest entries of the split node maps (`rows r`, multiply-adds per coordinate) for
-/// which [`max_pair_norm_t`] is used; below, [`max_pair_norm`] (measured with callgrind:
+/// Fewest entries of the node maps (`rows r`, multiply-adds per coordinate) for which
+/// [`max_pair_norm_t`] is used; below, [`max_pair_norm`] (measured with callgrind:
 /// at (4,3) and (5,4), 9-11 entries, the node-major loops cost 160-300 instructions more
 /// per curve; from (10,5) fast, 65 entries, they cost less).
 pub(crate) const BY_NODES_MIN: usize = 48;
