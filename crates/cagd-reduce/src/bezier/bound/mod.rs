@@ -9,7 +9,7 @@ mod nodes;
 
 use cagd_core::Result;
 
-pub(crate) use nodes::{max_pair_norm, max_value_norm};
+pub(crate) use nodes::{BY_NODES_MIN, max_pair_norm, max_pair_norm_t, max_value_norm};
 
 use super::operator::{BoundMap, Operator, check_len, hull_bound, max_norm};
 
@@ -116,7 +116,23 @@ impl Operator {
         let smax = match &bm.split {
             Some((even, odd)) => {
                 let (ce, co) = coef.split_at(even.cols() * dim);
-                max_pair_norm((even.matrix(), ce), (odd.matrix(), co), dim)
+                if even.matrix().len() + odd.matrix().len() >= BY_NODES_MIN {
+                    let rows = even.rows();
+                    max_pair_norm_t(
+                        (even.transposed().0, ce),
+                        (odd.transposed().0, co),
+                        rows,
+                        dim,
+                    )
+                } else {
+                    max_pair_norm((even.matrix(), ce), (odd.matrix(), co), dim)
+                }
+            }
+            // The full map as an even part with an empty odd part: `e +- 0` squares to
+            // the bits of `e` squared, so this is `max_value_norm`'s result (tested).
+            None if bm.samples.matrix().len() >= BY_NODES_MIN => {
+                let rows = bm.samples.rows();
+                max_pair_norm_t((bm.samples.transposed().0, coef), (&[], &[]), rows, dim)
             }
             None => max_value_norm(bm.samples.matrix(), basis.rank, coef, dim),
         };
