@@ -28,6 +28,7 @@
 //! - Back to degree `M`: the coefficient of `B_s^M` in `p_k` is
 //!   `sum_l c_l C(M-k, s-l) / C(M, s)` (degree elevation).
 
+use super::quadrature;
 use super::rows::{
     Row, Rows, auxiliary, axpy, axpy_window, b, div, dot, end_points, identity, idx, scale,
     scale_cols, to_i, zero,
@@ -312,6 +313,60 @@ fn on_points<B: Base>(
         .collect()
 }
 
+/// The bound terms' functionals `f_k`, `k = M+1..=N`, on the points: the Chebyshev
+/// coefficients by quadrature ([`quadrature::chebyshev`]), in `f64` (on the double-word
+/// route) when the proven errors `coef sum_k ||e_k||_1` stay within 0.9 of what `finish`
+/// accepts (`TOLERANCE max(1, coef sum_k ||f_k||_1)`), else in the base arithmetic (whose
+/// quadrature error is at its
+/// rounding level: the double-word terms no longer lose `4^k` to cancellation); by the
+/// correlation of [`functionals`] for a family without a quadrature (none takes terms today).
+#[allow(clippy::too_many_arguments, reason = "the truncation's own parameters")]
+fn high_terms<B: Base>(
+    family: Family,
+    n: usize,
+    m: usize,
+    r: i32,
+    p: i32,
+    left: &[Row<B>],
+    right: &[Row<B>],
+    coef: f64,
+) -> Vec<Row<B>> {
+    let (ni, mi, ri, pi) = (to_i(n), to_i(m), i64::from(r), i64::from(p));
+    let (nn, mm) = (ni - (ri + pi + 2), mi - (ri + pi + 2));
+    if !matches!(family, Family::Chebyshev) {
+        return on_points(
+            functionals::<B>(family, nn, mm + 1, nn),
+            n,
+            m,
+            r,
+            p,
+            left,
+            right,
+        );
+    }
+    // The double-word route (every pair up to degree 30 that is not `f64`) tries `f64`
+    // first; the 256-bit route, a last resort, keeps its terms at its own rounding level.
+    if std::any::TypeId::of::<B>() == std::any::TypeId::of::<super::dd::Dd>() {
+        if let Some(phi) = quadrature::chebyshev::<f64>(nn, mm + 1, nn) {
+            let l64: Vec<Row<f64>> = left.iter().map(Row::to_f64_row).collect();
+            let r64: Vec<Row<f64>> = right.iter().map(Row::to_f64_row).collect();
+            let g = on_points(phi, n, m, r, p, &l64, &r64);
+            let (mut te, mut ts) = (0.0, 0.0);
+            for row in &g {
+                let (v, e) = row.rounded();
+                te += coef * e;
+                ts += coef * v.iter().map(|x| x.abs()).sum::<f64>();
+            }
+            if te <= 0.9 * super::TOLERANCE * f64::max(ts, 1.0) {
+                return g.iter().map(Row::from_f64_row).collect();
+            }
+        }
+    }
+    let phi = quadrature::chebyshev::<B>(nn, mm + 1, nn)
+        .unwrap_or_else(|| functionals::<B>(family, nn, mm + 1, nn));
+    on_points(phi, n, m, r, p, left, right)
+}
+
 /// A truncation by one degree (`N = M + 1`) from the top (beyond the seed): the highest
 /// coefficient is the ratio of leading power coefficients, `f_N(S) = Delta^N S / lead(p_N)`
 /// with `lead(p_N) = sum_l |c_l|` (`C(2N+a+b, N)` for Jacobi, `2^(2N-1)` for Chebyshev), a
@@ -371,7 +426,8 @@ fn top_complement<B: Base>(
 
 /// Whether the `f64` route of a truncation is sure to be refused, judged by one row: the
 /// proven relative error of the `f64` coefficient functional of degree `k` (the highest the
-/// operator or its bound terms need) on degree-`N` polynomials exceeds `4 tol` (it tracks the
+/// operator needs; bound terms are by quadrature, see [`high_terms`]) on degree-`N`
+/// polynomials exceeds `4 tol` (it tracks the
 /// operator's own proven error within a factor of about 2 at the pairs of the
 /// `operator_build` bench: 7e-10 against 5e-10 at L2-C0 `(30,15)`). Saves the
 /// `f64` attempt where cancellation makes it hopeless (a performance choice only: the
@@ -450,12 +506,12 @@ pub(crate) fn truncated<B: Base>(
             let (u, top) = top_complement(family, n, m, r, p, &left, &right, &input);
             (u, vec![top])
         } else {
-            // The bound terms need every coefficient, the operator only the kept ones.
-            let last = if factor.is_some() { nn } else { mm };
-            let phi = functionals::<B>(family, nn, 0, last);
+            // The operator needs the kept coefficients (the bound terms the others, by
+            // quadrature: `high_terms`).
+            let phi = functionals::<B>(family, nn, 0, mm);
             // Coefficient functionals on P: f_k = sum_i phi_ki P^II_i (P^II = P when
             // r = p = -1).
-            let mut f = on_points(phi, n, m, r, p, &left, &right);
+            let f = on_points(phi, n, m, r, p, &left, &right);
             let u = if mixed {
                 let g: Vec<Row<f64>> = f[..=idx(mm)].iter().map(Row::to_f64_row).collect();
                 back_to_bernstein::<f64>(&conversion_f64(family, mm), mm, last_i - ri - 1, &g)
@@ -466,7 +522,11 @@ pub(crate) fn truncated<B: Base>(
                 let coefs = conversion::<B>(family, mm, last_i - ri - 1);
                 back_to_bernstein(&coefs, mm, last_i - ri - 1, &f[..=idx(mm)])
             };
-            (u, f.split_off(idx(mm) + 1))
+            let high = match factor {
+                Some(coef) => high_terms(family, n, m, r, p, &left, &right, coef),
+                None => Vec::new(),
+            };
+            (u, high)
         };
         // Q_i = U_{i-r-1} C(M, i-r-1) / C(m, i)   (14.5.16)
         for i in (ri + 1)..=(mi - pi - 1) {
