@@ -30,8 +30,8 @@
 
 use super::quadrature;
 use super::rows::{
-    Row, Rows, auxiliary, axpy, axpy_window, b, div, dot, end_points, identity, idx, scale,
-    scale_cols, to_i, zero,
+    Row, Rows, auxiliary, axpy, axpy_window, b, div, dot, end_points, idx, scale, scale_cols, to_i,
+    zero,
 };
 use super::steps::{inverse_elevation, sign_binom};
 use super::tracked::{Base, Tracked};
@@ -113,21 +113,22 @@ fn functionals<B: Base>(family: Family, nn: i64, first: i64, last: i64) -> Vec<R
         .map(|k| {
             let kk = nn + k;
             let c = coefficients::<B>(family, k);
-            // d_s for s = 0..=K and the row's common factor.
-            let (d, factor): (std::sync::Arc<Row<B>>, Tracked<B>) = match family {
+            // d_s for s = 0..=K (entries `off..=off + K` of the row `d`) and the row's
+            // common factor.
+            let (d, off, factor): (std::sync::Arc<Row<B>>, usize, Tracked<B>) = match family {
                 Family::Chebyshev => (
                     chebyshev_d::<B>(kk),
+                    0,
                     Tracked::of(if k == 0 { 1.0 } else { 2.0 }),
                 ),
                 Family::Jacobi { a, b } => {
                     let inv_h = Tracked::small(2 * k + a + b + 1)
                         .mul(Tracked::binom(k + a + b, b))
                         .div(Tracked::binom(k + b, b));
-                    let d: Vec<Tracked<B>> = (0..=kk)
-                        .map(|s| Tracked::recip_binom(kk + a + b, s + a))
-                        .collect();
+                    // d_s = 1 / C(K+a+b, s+a): a window of the reciprocal binomial row.
                     (
-                        std::sync::Arc::new(Row::from_tracked(&d)),
+                        recip_row::<B>(kk + a + b),
+                        idx(a),
                         inv_h.div(Tracked::small(kk + a + b + 1)),
                     )
                 }
@@ -139,21 +140,53 @@ fn functionals<B: Base>(family: Family, nn: i64, first: i64, last: i64) -> Vec<R
             let half = if symmetric { width / 2 + 1 } else { width };
             let mut acc = Row::zeros(half.min(width));
             for (l, cl) in c.iter().enumerate() {
-                axpy_window(&mut acc, *cl, &d, l);
+                axpy_window(&mut acc, *cl, &d, off + l);
             }
             let cols: Vec<Tracked<B>> = (0..=nn)
                 .take(acc.v.len())
                 .map(|j| factor.mul(Tracked::binom(nn, j)))
                 .collect();
-            let mut row = scale_cols(&acc, &cols);
-            for j in row.v.len()..width {
+            let half_row = scale_cols(&acc, &cols);
+            let computed = half_row.v.len();
+            let mut row = Row::zeros(width);
+            row.v[..computed].copy_from_slice(&half_row.v);
+            row.e[..computed].copy_from_slice(&half_row.e);
+            for j in computed..width {
                 let (v, e) = (row.v[width - 1 - j], row.e[width - 1 - j]);
-                row.v.push(if k % 2 == 0 { v } else { B::of(0.0).sub(v) });
-                row.e.push(e);
+                row.v[j] = if k % 2 == 0 { v } else { B::of(0.0).sub(v) };
+                row.e[j] = e;
             }
             row
         })
         .collect()
+}
+
+/// The reciprocal binomials `1 / C(nb, s)`, `s = 0..=nb`, as a row (the Jacobi correlation
+/// rows are windows of it), remembered per `(nb, arithmetic)` for the process like
+/// [`chebyshev_d`] (it was rebuilt, two allocations and `K` table look-ups, per coefficient
+/// functional).
+fn recip_row<B: Base>(nb: i64) -> std::sync::Arc<Row<B>> {
+    use std::any::{Any, TypeId};
+    use std::collections::HashMap;
+    use std::sync::{Arc, OnceLock, RwLock};
+    type Memo = RwLock<HashMap<(TypeId, i64), Arc<dyn Any + Send + Sync>>>;
+    static MEMO: OnceLock<Memo> = OnceLock::new();
+    let memo = MEMO.get_or_init(|| RwLock::new(HashMap::new()));
+    let key = (TypeId::of::<B>(), nb);
+    if let Some(d) = memo
+        .read()
+        .ok()
+        .and_then(|m| m.get(&key).cloned())
+        .and_then(|d| d.downcast::<Row<B>>().ok())
+    {
+        return d;
+    }
+    let d: Vec<Tracked<B>> = (0..=nb).map(|s| Tracked::recip_binom(nb, s)).collect();
+    let d = Arc::new(Row::from_tracked(&d));
+    if let Ok(mut m) = memo.write() {
+        m.insert(key, Arc::clone(&d) as Arc<dyn Any + Send + Sync>);
+    }
+    d
 }
 
 /// The Chebyshev correlation row `d_s = w_s w_(K-s) / C(K, s)`, `s = 0..=K`, with
@@ -486,9 +519,22 @@ pub(crate) fn truncated<B: Base>(
     factor: Option<f64>,
     mixed: bool,
 ) -> Rows<B> {
-    let input = identity::<B>(n + 1);
-    let (left, right) = end_points(n, m, r, p, &input);
     let (ni, mi, ri, pi) = (to_i(n), to_i(m), i64::from(r), i64::from(p));
+    // The unit rows as the input points; only the end points' (`j <= r`, `j >= n - p`) are
+    // read unless the truncation is by one degree (`top_complement` reads them all), so the
+    // others stay empty (no allocation).
+    let by_one = ri + pi + 1 < mi && ni - mi == 1;
+    let input: Vec<Row<B>> = (0..=n)
+        .map(|j| {
+            let j = to_i(j);
+            if by_one || j <= ri || j >= ni - pi {
+                Row::unit(n + 1, idx(j))
+            } else {
+                Row::zeros(0)
+            }
+        })
+        .collect();
+    let (left, right) = end_points(n, m, r, p, &input);
     let mut rows = left.clone();
     let mut terms = Vec::new();
     if ri + pi + 1 < mi {
