@@ -187,7 +187,8 @@ fn pairwise<B: Base>(x: &mut [B]) -> B {
     while len > 1 {
         let pairs = len / 2;
         for i in 0..pairs {
-            x[i] = x[2 * i].add(x[2 * i + 1]);
+            let (a, b) = (x[2 * i], x[2 * i + 1]);
+            x[i] = a.add(b);
         }
         if len % 2 == 1 {
             x[pairs] = x[len - 1];
@@ -240,7 +241,7 @@ pub(crate) fn chebyshev<B: Base>(nn: i64, first: i64, last: i64) -> Option<Vec<R
     let q4 = 4 * q;
     #[allow(clippy::cast_precision_loss, reason = "q <= 65")]
     let qf = q as f64;
-    let mut terms = vec![B::of(0.0); q];
+    let mut terms = vec![B::of(0.0); q.div_ceil(2)];
     let rows = (first..=last)
         .map(|k| {
             let ck = if k == 0 { 1.0 } else { 2.0 };
@@ -263,10 +264,21 @@ pub(crate) fn chebyshev<B: Base>(nn: i64, first: i64, last: i64) -> Option<Vec<R
                 .collect();
             let mut row = Row::zeros(n + 1);
             for j in 0..=half {
-                for ((t, b), c) in terms.iter_mut().zip(&bt[j * q..(j + 1) * q]).zip(&cosk) {
-                    *t = b.mul(*c);
+                // The first level of the pairwise sum fused with the products.
+                let bj = &bt[j * q..(j + 1) * q];
+                let mut len = 0;
+                for (t, (b, c)) in terms
+                    .iter_mut()
+                    .zip(bj.chunks_exact(2).zip(cosk.chunks_exact(2)))
+                {
+                    *t = b[0].mul(c[0]).add(b[1].mul(c[1]));
+                    len += 1;
                 }
-                row.v[j] = pairwise(&mut terms).mul(w);
+                if q % 2 == 1 {
+                    terms[len] = bj[q - 1].mul(cosk[q - 1]);
+                    len += 1;
+                }
+                row.v[j] = pairwise(&mut terms[..len]).mul(w);
                 row.e[j] = w_up * tab.a_up[j] * eta * (1.0 + 1e-8);
             }
             // f_k(B_(N-j)) = (-1)^k f_k(B_j) (the nodes' symmetry; negation is exact).
