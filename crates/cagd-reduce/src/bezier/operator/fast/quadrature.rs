@@ -156,7 +156,7 @@ fn bernstein(n: usize) -> Option<&'static Bernstein> {
                 vals[j * q + node] = b;
             }
         }
-        if !(smallest >= 1e-280 && rel <= 1e-20) {
+        if smallest.is_nan() || smallest < 1e-280 || rel.is_nan() || rel > 1e-20 {
             return None;
         }
         // A_j <= sum_q B̂/(1 - rel); the f64 sum of the rounded values within
@@ -228,7 +228,7 @@ pub(crate) fn chebyshev<B: Base>(nn: i64, first: i64, last: i64) -> Option<Vec<R
     let beta = cos.iter().map(|c| c.1).fold(0.0f64, f64::max);
     let u = B::U;
     let eps_b = (tab.rel + u) * (1.0 + 1e-6);
-    if !(beta <= 1e-10) {
+    if beta.is_nan() || beta > 1e-10 {
         return None;
     }
     let bt: Vec<B> = tab
@@ -316,8 +316,7 @@ mod tests {
             for k in 0..=nn {
                 let row = exact.row(k);
                 let mut row_err = 0.0;
-                for j in 0..=nn {
-                    let ex = &row[j];
+                for (j, ex) in row.iter().enumerate() {
                     for (v, e) in [(f[k].v[j], f[k].e[j]), (d[k].v[j].to_f64(), d[k].e[j])] {
                         let diff = q_to_f64(
                             &(num_rational::BigRational::from_float(v).unwrap() - ex).abs(),
