@@ -30,8 +30,8 @@
 
 use super::quadrature;
 use super::rows::{
-    Row, Rows, auxiliary, axpy, axpy_window, b, div, dot, end_points, idx, scale, scale_cols, to_i,
-    zero,
+    Row, Rows, auxiliary, axpy, axpy_range, axpy_window, b, div, dot, end_points, idx, scale,
+    scale_cols, support, to_i, zero,
 };
 use super::steps::{inverse_elevation, sign_binom};
 use super::tracked::{Base, Tracked};
@@ -332,14 +332,18 @@ fn on_points<B: Base>(
         .iter()
         .map(|(l, _)| (0..=nn).map(|i| b::<B>(mi, ni, *l, ri + 1 + i)).collect())
         .collect();
+    // An end point `Q_l` depends on `P_0..=P_l` (left) or `P_(n-p+l)..` (right) only: its
+    // row is zero (value and error) outside its support, so the updates run there (the
+    // interior entries `r+1..=n-p-1` are disjoint from both ends' supports).
+    let supports: Vec<(usize, usize)> = ends.iter().map(|(_, q)| support(q)).collect();
     phi.iter()
         .map(|ph| {
             let w = scale_cols(ph, &sc);
             let mut row = Row::zeros(n + 1);
             row.v[idx(ri + 1)..=idx(ni - pi - 1)].copy_from_slice(&w.v);
             row.e[idx(ri + 1)..=idx(ni - pi - 1)].copy_from_slice(&w.e);
-            for ((_, q), beta) in ends.iter().zip(&betas) {
-                axpy(&mut row, dot(&w, beta).neg(), q);
+            for (((_, q), beta), &(lo, hi)) in ends.iter().zip(&betas).zip(&supports) {
+                axpy_range(&mut row, dot(&w, beta).neg(), q, lo, hi);
             }
             row
         })
