@@ -117,9 +117,10 @@ struct Bernstein {
 /// [`Bernstein`] for degree `N` with `Q = N + 1` nodes (exact for every `k <= N`); `None` if
 /// a precondition of its bound fails (a value near underflow, or a relative error above
 /// `1e-20`: neither happens at degree `<= 64`). The values are `C(N,j) τ^j (1-τ)^(N-j)` by
-/// repeated products: relative error `z / (1 - z)`, `z = N α + (N + 1) U` (`α` the nodes'
-/// relative error, `N - 2` power roundings and two products; the binomials are exact in
-/// double-word).
+/// repeated products: relative error `z / (1 - z)`, `z = N α + (N + 1) U + β_b` (`α` the
+/// nodes' relative error, `N - 2` power roundings and two products, `β_b` the binomials'
+/// relative error, zero in double-word at degree `<= 64`). Every value and every partial
+/// product is at least `1e-280` (checked), so no double-word part underflows.
 fn bernstein(n: usize) -> Option<&'static Bernstein> {
     use std::sync::OnceLock;
     const LEN: usize = cagd_core::MAX_BINOMIAL_N + 2;
@@ -134,8 +135,17 @@ fn bernstein(n: usize) -> Option<&'static Bernstein> {
             .fold(0.0f64, f64::max)
             * (1.0 + 1e-6);
         let u = <Dd as Base>::U;
+        // The binomials' relative error (zero: exact in double-word below 2^106, i.e. for
+        // every degree <= 64; kept for the bound's sake).
+        let beta_b = (0..=n)
+            .map(|j| {
+                let (c, e) = <Dd as Base>::of_binom(n, j);
+                e / c.hi.abs()
+            })
+            .fold(0.0f64, f64::max)
+            * (1.0 + 1e-6);
         #[allow(clippy::cast_precision_loss, reason = "n <= 130")]
-        let z = (n as f64) * alpha + (n as f64 + 1.0) * u;
+        let z = (n as f64) * alpha + (n as f64 + 1.0) * u + beta_b;
         let rel = z / (1.0 - z) * (1.0 + 1e-6);
         let half = n / 2;
         let mut vals = vec![Dd::from_f64(0.0); (half + 1) * q];
@@ -150,6 +160,8 @@ fn bernstein(n: usize) -> Option<&'static Bernstein> {
                 tp[j] = tp[j - 1].mul(t);
                 sp[j] = sp[j - 1].mul(s);
             }
+            // The smallest powers (the partial products `C(N,j) τ^j >= τ^j` are larger).
+            smallest = smallest.min(tp[n].hi.abs()).min(sp[n].hi.abs());
             for j in 0..=half {
                 let b = <Dd as Base>::of_binom(n, j).0.mul(tp[j]).mul(sp[n - j]);
                 smallest = smallest.min(b.hi.abs());
@@ -279,7 +291,10 @@ pub(crate) fn chebyshev<B: Base>(nn: i64, first: i64, last: i64) -> Option<Vec<R
                     len += 1;
                 }
                 row.v[j] = pairwise(&mut terms[..len]).mul(w);
-                row.e[j] = w_up * tab.a_up[j] * eta * (1.0 + 1e-8);
+                // (+ 1e-300: the products `B̂ ĉ` may be subnormal where a cosine is at its
+                // rounding level, `|ĉ| ~ 1e-32`; each such product and its double-word parts
+                // lose at most `2^-1074` absolutely, far below this allowance.)
+                row.e[j] = w_up * tab.a_up[j] * eta * (1.0 + 1e-8) + 1e-300;
             }
             // f_k(B_(N-j)) = (-1)^k f_k(B_j) (the nodes' symmetry; negation is exact).
             for j in half + 1..=n {
