@@ -12,6 +12,7 @@
 
 mod dd;
 mod ginv_ends;
+mod quadrature;
 mod rows;
 mod steps;
 mod tracked;
@@ -101,7 +102,7 @@ fn rows_of<B: Base>(method: Method, n: usize, m: usize, mixed: bool) -> Option<R
 }
 
 /// The truncation behind a multi-degree method (and Eck's): family, end orders, and whether
-/// it carries bound terms (every coefficient functional then).
+/// it carries bound terms (the coefficient functionals above `M`, by quadrature).
 fn truncation_of(method: Method) -> Option<(Family, i32, i32, bool)> {
     Some(match method {
         Method::Eck | Method::WatkinsWorsey | Method::BogackiWeinsteinXu => {
@@ -211,9 +212,7 @@ pub(crate) fn build(method: Method, n: usize, m: usize) -> Option<Built> {
         let (nn, mm) = (to_i(n) - (r + p + 2), to_i(m) - (r + p + 2));
         let tol = if terms { strict } else { TOLERANCE };
         // A one-degree truncation goes from the top (no alternating sums): always try f64.
-        mm >= 0
-            && n - m > 1
-            && truncation::f64_hopeless(family, nn, if terms { nn } else { mm }, tol)
+        mm >= 0 && n - m > 1 && truncation::f64_hopeless(family, nn, mm, tol)
     });
     if !skip_f64 {
         if let Some((rows, terms)) = rows_of::<f64>(method, n, m, false) {

@@ -137,6 +137,44 @@ pub(crate) fn axpy_window<B: Base>(y: &mut Row<B>, a: Tracked<B>, x: &Row<B>, of
     }
 }
 
+/// `y[lo..=hi] += a x[lo..=hi]` (as [`axpy`]; for an `x` that is zero, value and error,
+/// outside `lo..=hi`, where the full update would only add roundings of `y + 0`; nothing
+/// for an empty range `lo > hi`).
+pub(crate) fn axpy_range<B: Base>(y: &mut Row<B>, a: Tracked<B>, x: &Row<B>, lo: usize, hi: usize) {
+    if lo > hi || hi >= y.v.len() || hi >= x.v.len() {
+        if lo <= hi {
+            axpy(y, a, x);
+        }
+        return;
+    }
+    let (av, ae) = (a.value(), a.bound());
+    let am = mag(av);
+    if am == 0.0 && ae == 0.0 {
+        return;
+    }
+    let u = ru::<B>();
+    let ys = y.v[lo..=hi].iter_mut().zip(y.e[lo..=hi].iter_mut());
+    for ((yv, ye), (xv, xe)) in ys.zip(x.v[lo..=hi].iter().zip(&x.e[lo..=hi])) {
+        let t = av.mul(*xv);
+        *yv = yv.add(t);
+        *ye += am * xe + ae * (mag(*xv) + xe) + u * (mag(t) + mag(*yv));
+    }
+}
+
+/// The smallest `lo..=hi` outside which the row is zero, value and error (`(1, 0)`, an empty
+/// range, for a zero row).
+pub(crate) fn support<B: Base>(x: &Row<B>) -> (usize, usize) {
+    // (A value compares equal to the exact zero only if it is zero: an unusual
+    // representation of zero would only widen the range.)
+    let zero = B::of(0.0);
+    let nz = |c: &usize| x.v[*c] != zero || x.e[*c] != 0.0;
+    let len = x.v.len();
+    match ((0..len).find(nz), (0..len).rev().find(nz)) {
+        (Some(lo), Some(hi)) => (lo, hi),
+        _ => (1, 0),
+    }
+}
+
 /// `y += a x`. Per entry: `|a| e_x + e_a (|x| + e_x)` propagated, plus the roundings of the
 /// product and the sum (`U (|a x| + |y|)`).
 pub(crate) fn axpy<B: Base>(y: &mut Row<B>, a: Tracked<B>, x: &Row<B>) {

@@ -188,16 +188,29 @@ fn multi_word_route_matches_the_exact_oracle() {
 /// The pairs that fell back to the exact rationals at degree 64 (seconds each: the C fuzz
 /// run's slow calls) now take the 256-bit route within the goal (the route's accuracy
 /// against the oracle: `multi_word_route_matches_the_exact_oracle` and the ignored sweep
-/// to degree 64).
+/// to degree 64), and Eck's and the Chebyshev truncations' `(64,10)` the double-word one
+/// (their bound terms by quadrature, no longer by alternating sums).
 #[test]
 fn no_exact_fallback_at_degree_64() {
-    for (method, n, m) in [
-        (Method::Perturb, 64, 32),
-        (Method::Eck, 64, 10),
-        (Method::GeneralizedInverse, 64, 60),
+    for (method, n, m, route) in [
+        (Method::Perturb, 64, 32, OperatorRoute::MultiWord),
+        (Method::GeneralizedInverse, 64, 60, OperatorRoute::MultiWord),
+        (Method::Eck, 64, 10, OperatorRoute::DoubleWord),
+        (
+            Method::BogackiWeinsteinXu,
+            64,
+            10,
+            OperatorRoute::DoubleWord,
+        ),
+        (
+            Method::ConstrainedChebyshev { r: 0, p: 0 },
+            64,
+            10,
+            OperatorRoute::DoubleWord,
+        ),
     ] {
         let op = crate::build_operator(method, n, m, false).unwrap();
-        assert_eq!(op.route(), OperatorRoute::MultiWord, "{method:?} {n}->{m}");
+        assert_eq!(op.route(), route, "{method:?} {n}->{m}");
         assert!(op.construction_error() <= TOLERANCE * op.norm_inf());
     }
 }

@@ -10,7 +10,7 @@ use super::dd::Dd;
 use super::wide::Wide;
 
 /// A base arithmetic: `f64` or double-word, with its proven relative error per operation.
-pub(crate) trait Base: Copy + Send + Sync + 'static {
+pub(crate) trait Base: Copy + PartialEq + Send + Sync + 'static {
     /// Bound of `|fl(x op y) - x op y| / |x op y|` for `+ - * /`.
     const U: f64;
     /// Bound of `|to_f64(x) - x| / |x|` (`0` for `f64` itself: no final rounding).

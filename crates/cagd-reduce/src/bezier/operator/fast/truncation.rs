@@ -28,9 +28,10 @@
 //! - Back to degree `M`: the coefficient of `B_s^M` in `p_k` is
 //!   `sum_l c_l C(M-k, s-l) / C(M, s)` (degree elevation).
 
+use super::quadrature;
 use super::rows::{
-    Row, Rows, auxiliary, axpy, axpy_window, b, div, dot, end_points, identity, idx, scale,
-    scale_cols, to_i, zero,
+    Row, Rows, auxiliary, axpy, axpy_range, axpy_window, b, div, dot, end_points, idx, scale,
+    scale_cols, support, to_i, zero,
 };
 use super::steps::{inverse_elevation, sign_binom};
 use super::tracked::{Base, Tracked};
@@ -112,21 +113,22 @@ fn functionals<B: Base>(family: Family, nn: i64, first: i64, last: i64) -> Vec<R
         .map(|k| {
             let kk = nn + k;
             let c = coefficients::<B>(family, k);
-            // d_s for s = 0..=K and the row's common factor.
-            let (d, factor): (std::sync::Arc<Row<B>>, Tracked<B>) = match family {
+            // d_s for s = 0..=K (entries `off..=off + K` of the row `d`) and the row's
+            // common factor.
+            let (d, off, factor): (std::sync::Arc<Row<B>>, usize, Tracked<B>) = match family {
                 Family::Chebyshev => (
                     chebyshev_d::<B>(kk),
+                    0,
                     Tracked::of(if k == 0 { 1.0 } else { 2.0 }),
                 ),
                 Family::Jacobi { a, b } => {
                     let inv_h = Tracked::small(2 * k + a + b + 1)
                         .mul(Tracked::binom(k + a + b, b))
                         .div(Tracked::binom(k + b, b));
-                    let d: Vec<Tracked<B>> = (0..=kk)
-                        .map(|s| Tracked::recip_binom(kk + a + b, s + a))
-                        .collect();
+                    // d_s = 1 / C(K+a+b, s+a): a window of the reciprocal binomial row.
                     (
-                        std::sync::Arc::new(Row::from_tracked(&d)),
+                        recip_row::<B>(kk + a + b),
+                        idx(a),
                         inv_h.div(Tracked::small(kk + a + b + 1)),
                     )
                 }
@@ -138,21 +140,53 @@ fn functionals<B: Base>(family: Family, nn: i64, first: i64, last: i64) -> Vec<R
             let half = if symmetric { width / 2 + 1 } else { width };
             let mut acc = Row::zeros(half.min(width));
             for (l, cl) in c.iter().enumerate() {
-                axpy_window(&mut acc, *cl, &d, l);
+                axpy_window(&mut acc, *cl, &d, off + l);
             }
             let cols: Vec<Tracked<B>> = (0..=nn)
                 .take(acc.v.len())
                 .map(|j| factor.mul(Tracked::binom(nn, j)))
                 .collect();
-            let mut row = scale_cols(&acc, &cols);
-            for j in row.v.len()..width {
+            let half_row = scale_cols(&acc, &cols);
+            let computed = half_row.v.len();
+            let mut row = Row::zeros(width);
+            row.v[..computed].copy_from_slice(&half_row.v);
+            row.e[..computed].copy_from_slice(&half_row.e);
+            for j in computed..width {
                 let (v, e) = (row.v[width - 1 - j], row.e[width - 1 - j]);
-                row.v.push(if k % 2 == 0 { v } else { B::of(0.0).sub(v) });
-                row.e.push(e);
+                row.v[j] = if k % 2 == 0 { v } else { B::of(0.0).sub(v) };
+                row.e[j] = e;
             }
             row
         })
         .collect()
+}
+
+/// The reciprocal binomials `1 / C(nb, s)`, `s = 0..=nb`, as a row (the Jacobi correlation
+/// rows are windows of it), remembered per `(nb, arithmetic)` for the process like
+/// [`chebyshev_d`] (it was rebuilt, two allocations and `K` table look-ups, per coefficient
+/// functional).
+fn recip_row<B: Base>(nb: i64) -> std::sync::Arc<Row<B>> {
+    use std::any::{Any, TypeId};
+    use std::collections::HashMap;
+    use std::sync::{Arc, OnceLock, RwLock};
+    type Memo = RwLock<HashMap<(TypeId, i64), Arc<dyn Any + Send + Sync>>>;
+    static MEMO: OnceLock<Memo> = OnceLock::new();
+    let memo = MEMO.get_or_init(|| RwLock::new(HashMap::new()));
+    let key = (TypeId::of::<B>(), nb);
+    if let Some(d) = memo
+        .read()
+        .ok()
+        .and_then(|m| m.get(&key).cloned())
+        .and_then(|d| d.downcast::<Row<B>>().ok())
+    {
+        return d;
+    }
+    let d: Vec<Tracked<B>> = (0..=nb).map(|s| Tracked::recip_binom(nb, s)).collect();
+    let d = Arc::new(Row::from_tracked(&d));
+    if let Ok(mut m) = memo.write() {
+        m.insert(key, Arc::clone(&d) as Arc<dyn Any + Send + Sync>);
+    }
+    d
 }
 
 /// The Chebyshev correlation row `d_s = w_s w_(K-s) / C(K, s)`, `s = 0..=K`, with
@@ -298,18 +332,76 @@ fn on_points<B: Base>(
         .iter()
         .map(|(l, _)| (0..=nn).map(|i| b::<B>(mi, ni, *l, ri + 1 + i)).collect())
         .collect();
+    // An end point `Q_l` depends on `P_0..=P_l` (left) or `P_(n-p+l)..` (right) only: its
+    // row is zero (value and error) outside its support, so the updates run there (the
+    // interior entries `r+1..=n-p-1` are disjoint from both ends' supports).
+    let supports: Vec<(usize, usize)> = ends.iter().map(|(_, q)| support(q)).collect();
     phi.iter()
         .map(|ph| {
             let w = scale_cols(ph, &sc);
             let mut row = Row::zeros(n + 1);
             row.v[idx(ri + 1)..=idx(ni - pi - 1)].copy_from_slice(&w.v);
             row.e[idx(ri + 1)..=idx(ni - pi - 1)].copy_from_slice(&w.e);
-            for ((_, q), beta) in ends.iter().zip(&betas) {
-                axpy(&mut row, dot(&w, beta).neg(), q);
+            for (((_, q), beta), &(lo, hi)) in ends.iter().zip(&betas).zip(&supports) {
+                axpy_range(&mut row, dot(&w, beta).neg(), q, lo, hi);
             }
             row
         })
         .collect()
+}
+
+/// The bound terms' functionals `f_k`, `k = M+1..=N`, on the points: the Chebyshev
+/// coefficients by quadrature ([`quadrature::chebyshev`]), in `f64` (on the double-word
+/// route) when the proven errors `coef sum_k ||e_k||_1` stay within 0.9 of what `finish`
+/// accepts (`TOLERANCE max(1, coef sum_k ||f_k||_1)`), else in the base arithmetic (whose
+/// quadrature error is at its
+/// rounding level: the double-word terms no longer lose `4^k` to cancellation); by the
+/// correlation of [`functionals`] for a family without a quadrature (none takes terms today).
+#[allow(clippy::too_many_arguments, reason = "the truncation's own parameters")]
+fn high_terms<B: Base>(
+    family: Family,
+    n: usize,
+    m: usize,
+    r: i32,
+    p: i32,
+    left: &[Row<B>],
+    right: &[Row<B>],
+    coef: f64,
+) -> Vec<Row<B>> {
+    let (ni, mi, ri, pi) = (to_i(n), to_i(m), i64::from(r), i64::from(p));
+    let (nn, mm) = (ni - (ri + pi + 2), mi - (ri + pi + 2));
+    if !matches!(family, Family::Chebyshev) {
+        return on_points(
+            functionals::<B>(family, nn, mm + 1, nn),
+            n,
+            m,
+            r,
+            p,
+            left,
+            right,
+        );
+    }
+    // The double-word route (every pair up to degree 30 that is not `f64`) tries `f64`
+    // first; the 256-bit route, a last resort, keeps its terms at its own rounding level.
+    if std::any::TypeId::of::<B>() == std::any::TypeId::of::<super::dd::Dd>() {
+        if let Some(phi) = quadrature::chebyshev::<f64>(nn, mm + 1, nn) {
+            let l64: Vec<Row<f64>> = left.iter().map(Row::to_f64_row).collect();
+            let r64: Vec<Row<f64>> = right.iter().map(Row::to_f64_row).collect();
+            let g = on_points(phi, n, m, r, p, &l64, &r64);
+            let (mut te, mut ts) = (0.0, 0.0);
+            for row in &g {
+                let (v, e) = row.rounded();
+                te += coef * e;
+                ts += coef * v.iter().map(|x| x.abs()).sum::<f64>();
+            }
+            if te <= 0.9 * super::TOLERANCE * f64::max(ts, 1.0) {
+                return g.iter().map(Row::from_f64_row).collect();
+            }
+        }
+    }
+    let phi = quadrature::chebyshev::<B>(nn, mm + 1, nn)
+        .unwrap_or_else(|| functionals::<B>(family, nn, mm + 1, nn));
+    on_points(phi, n, m, r, p, left, right)
 }
 
 /// A truncation by one degree (`N = M + 1`) from the top (beyond the seed): the highest
@@ -371,7 +463,8 @@ fn top_complement<B: Base>(
 
 /// Whether the `f64` route of a truncation is sure to be refused, judged by one row: the
 /// proven relative error of the `f64` coefficient functional of degree `k` (the highest the
-/// operator or its bound terms need) on degree-`N` polynomials exceeds `4 tol` (it tracks the
+/// operator needs; bound terms are by quadrature, see [`high_terms`]) on degree-`N`
+/// polynomials exceeds `4 tol` (it tracks the
 /// operator's own proven error within a factor of about 2 at the pairs of the
 /// `operator_build` bench: 7e-10 against 5e-10 at L2-C0 `(30,15)`). Saves the
 /// `f64` attempt where cancellation makes it hopeless (a performance choice only: the
@@ -430,9 +523,22 @@ pub(crate) fn truncated<B: Base>(
     factor: Option<f64>,
     mixed: bool,
 ) -> Rows<B> {
-    let input = identity::<B>(n + 1);
-    let (left, right) = end_points(n, m, r, p, &input);
     let (ni, mi, ri, pi) = (to_i(n), to_i(m), i64::from(r), i64::from(p));
+    // The unit rows as the input points; only the end points' (`j <= r`, `j >= n - p`) are
+    // read unless the truncation is by one degree (`top_complement` reads them all), so the
+    // others stay empty (no allocation).
+    let by_one = ri + pi + 1 < mi && ni - mi == 1;
+    let input: Vec<Row<B>> = (0..=n)
+        .map(|j| {
+            let j = to_i(j);
+            if by_one || j <= ri || j >= ni - pi {
+                Row::unit(n + 1, idx(j))
+            } else {
+                Row::zeros(0)
+            }
+        })
+        .collect();
+    let (left, right) = end_points(n, m, r, p, &input);
     let mut rows = left.clone();
     let mut terms = Vec::new();
     if ri + pi + 1 < mi {
@@ -450,12 +556,12 @@ pub(crate) fn truncated<B: Base>(
             let (u, top) = top_complement(family, n, m, r, p, &left, &right, &input);
             (u, vec![top])
         } else {
-            // The bound terms need every coefficient, the operator only the kept ones.
-            let last = if factor.is_some() { nn } else { mm };
-            let phi = functionals::<B>(family, nn, 0, last);
+            // The operator needs the kept coefficients (the bound terms the others, by
+            // quadrature: `high_terms`).
+            let phi = functionals::<B>(family, nn, 0, mm);
             // Coefficient functionals on P: f_k = sum_i phi_ki P^II_i (P^II = P when
             // r = p = -1).
-            let mut f = on_points(phi, n, m, r, p, &left, &right);
+            let f = on_points(phi, n, m, r, p, &left, &right);
             let u = if mixed {
                 let g: Vec<Row<f64>> = f[..=idx(mm)].iter().map(Row::to_f64_row).collect();
                 back_to_bernstein::<f64>(&conversion_f64(family, mm), mm, last_i - ri - 1, &g)
@@ -466,7 +572,11 @@ pub(crate) fn truncated<B: Base>(
                 let coefs = conversion::<B>(family, mm, last_i - ri - 1);
                 back_to_bernstein(&coefs, mm, last_i - ri - 1, &f[..=idx(mm)])
             };
-            (u, f.split_off(idx(mm) + 1))
+            let high = match factor {
+                Some(coef) => high_terms(family, n, m, r, p, &left, &right, coef),
+                None => Vec::new(),
+            };
+            (u, high)
         };
         // Q_i = U_{i-r-1} C(M, i-r-1) / C(m, i)   (14.5.16)
         for i in (ri + 1)..=(mi - pi - 1) {
