@@ -38,15 +38,15 @@ fn prefetch_avx(x: &[f64]) {
     }
 }
 
-/// Runs `$f::<R, C>`, an instance of the kernel with `rows = R`, `cols = C` and `dim = 3`
-/// as constants (its loops unroll and its index checks fold), when the map is `R x C`
-/// with `C <= 11` (degree 10 and below, where the loop overhead of the general instance
+/// Runs `$f::<R, C>($args)`, an instance of the kernel with `rows = R`, `cols = C` and
+/// `dim = 3` as constants (its loops unroll and its index checks fold), when the map
+/// (`rows`, `len` entries) is `R x C` with `C <= 11` (degree 10 and below, where the loop overhead of the general instance
 /// weighs most: 2.4x / 2.0x / 1.7x fewer instructions per curve at (4,3) / (5,4) / (10,5),
 /// callgrind, AVX2), and says whether it did. Same operations in the same order as the
 /// general instance, so the same bits.
 macro_rules! sized {
-    ($f:ident, $at:expr, $rows:expr, $input:expr, $output:expr, $scratch:expr) => {
-        sized!(@ $f, $at, $rows, $input, $output, $scratch;
+    ($f:ident, $rows:expr, $len:expr, $args:tt) => {
+        sized!(@ $f, $rows, $len, $args;
             (1, 2)
             (1, 3) (2, 3)
             (1, 4) (2, 4) (3, 4)
@@ -58,17 +58,19 @@ macro_rules! sized {
             (1, 10) (2, 10) (3, 10) (4, 10) (5, 10) (6, 10) (7, 10) (8, 10) (9, 10)
             (1, 11) (2, 11) (3, 11) (4, 11) (5, 11) (6, 11) (7, 11) (8, 11) (9, 11) (10, 11))
     };
-    (@ $f:ident, $at:expr, $rows:expr, $input:expr, $output:expr, $scratch:expr;
-        $(($r:literal, $c:literal))*) => {
-        match ($rows, $at.len()) {
+    (@ $f:ident, $rows:expr, $len:expr, $args:tt; $(($r:literal, $c:literal))*) => {
+        match ($rows, $len) {
             $(
                 (r, len) if r == $r && len == $r * $c => {
-                    $f::<$r, $c>($at, $input, $output, $scratch);
+                    sized!(@call $f, $r, $c, $args);
                     true
                 }
             )*
             _ => false,
         }
+    };
+    (@call $f:ident, $r:literal, $c:literal, ($($arg:expr),*)) => {
+        $f::<$r, $c>($($arg),*)
     };
 }
 
@@ -121,11 +123,21 @@ pub(crate) fn apply(
     match isa() {
         #[allow(unsafe_code, reason = "the call of a `target_feature` function")]
         // SAFETY: the CPU supports AVX-512F, AVX2 and FMA (detected by `isa`), the only
-        // requirement of the function, which is itself safe code.
-        Isa::Avx512 => unsafe { apply_avx512(at, rows, dim, input, output, scratch) },
+        // requirement of the functions, which are themselves safe code. The sized
+        // instances are chosen here, outside the general one, so that its code is not
+        // changed by them.
+        Isa::Avx512 => unsafe {
+            if !(dim == 3 && sized!(sized_avx512, rows, at.len(), (at, input, output, scratch))) {
+                apply_avx512(at, rows, dim, input, output, scratch);
+            }
+        },
         #[allow(unsafe_code, reason = "the call of a `target_feature` function")]
         // SAFETY: the CPU supports AVX2 and FMA (detected by `isa`), as above.
-        Isa::Avx2 => unsafe { apply_avx2(at, rows, dim, input, output, scratch) },
+        Isa::Avx2 => unsafe {
+            if !(dim == 3 && sized!(sized_avx2, rows, at.len(), (at, input, output, scratch))) {
+                apply_avx2(at, rows, dim, input, output, scratch);
+            }
+        },
         Isa::Portable => {
             apply_generic::<false, 4>(at, rows, dim, input, output, scratch, transpose, |_| {})
         }
@@ -145,9 +157,6 @@ fn apply_avx512(
     output: &mut [f64],
     scratch: &mut Vec<f64>,
 ) {
-    if dim == 3 && sized!(sized_avx512, at, rows, input, output, scratch) {
-        return;
-    }
     // The closure inherits the target features (so the AVX transpose is inlined).
     apply_generic::<true, 8>(
         at,
@@ -194,9 +203,6 @@ fn apply_avx2(
     output: &mut [f64],
     scratch: &mut Vec<f64>,
 ) {
-    if dim == 3 && sized!(sized_avx2, at, rows, input, output, scratch) {
-        return;
-    }
     apply_generic::<true, 4>(
         at,
         rows,
@@ -517,7 +523,21 @@ pub(crate) struct BoundMaps<'a> {
     pub(crate) v: NodeMaps<'a>,
 }
 
+impl BoundMaps<'_> {
+    /// The same maps with `A^T` as a slice of exactly `R * C` entries and `R` rows, so
+    /// that an inlined kernel sees the sizes as constants (the caller checked them).
+    #[inline(always)]
+    fn with_sized_a<const R: usize, const C: usize>(&self) -> BoundMaps<'_> {
+        BoundMaps {
+            a: (&self.a.0[..R * C], R),
+            g: self.g,
+            v: self.v,
+        }
+    }
+}
+
 /// The node map of a batch with bounds (see `operator/error_map.rs`).
+#[derive(Clone, Copy)]
 pub(crate) enum NodeMaps<'a> {
     /// `V^T` and its number of rows (nodes).
     Full(&'a [f64], usize),
@@ -557,11 +577,36 @@ pub(crate) fn apply_with_norms(
     #[cfg(target_arch = "x86_64")]
     match isa() {
         #[allow(unsafe_code, reason = "the call of a `target_feature` function")]
-        // SAFETY: as in `apply`: the CPU has the function's features (detected by `isa`).
-        Isa::Avx512 => unsafe { with_norms_avx512(maps, dim, input, output, norms, scratch) },
+        // SAFETY: as in `apply`: the CPU has the functions' features (detected by `isa`);
+        // the sized instances chosen outside the general one, as there.
+        Isa::Avx512 => unsafe {
+            let (at, rows) = maps.a;
+            if !(dim == 3
+                && sized!(
+                    norms_sized_avx512,
+                    rows,
+                    at.len(),
+                    (maps, input, output, norms, scratch)
+                ))
+            {
+                with_norms_avx512(maps, dim, input, output, norms, scratch);
+            }
+        },
         #[allow(unsafe_code, reason = "the call of a `target_feature` function")]
         // SAFETY: as above.
-        Isa::Avx2 => unsafe { with_norms_avx2(maps, dim, input, output, norms, scratch) },
+        Isa::Avx2 => unsafe {
+            let (at, rows) = maps.a;
+            if !(dim == 3
+                && sized!(
+                    norms_sized_avx2,
+                    rows,
+                    at.len(),
+                    (maps, input, output, norms, scratch)
+                ))
+            {
+                with_norms_avx2(maps, dim, input, output, norms, scratch);
+            }
+        },
         Isa::Portable => {
             with_norms_generic::<false, 4>(maps, dim, input, output, norms, scratch, transpose);
         }
@@ -586,6 +631,23 @@ fn with_norms_avx512(
     });
 }
 
+/// [`with_norms_avx512`] for `dim = 3` and an `R x C` reduction with the sizes as
+/// constants (see [`sized!`]).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx2,fma")]
+fn norms_sized_avx512<const R: usize, const C: usize>(
+    maps: &BoundMaps<'_>,
+    input: &[f64],
+    output: &mut [f64],
+    norms: &mut [CurveNorms],
+    scratch: &mut Vec<f64>,
+) {
+    let maps = maps.with_sized_a::<R, C>();
+    with_norms_generic::<true, 8>(&maps, 3, input, output, norms, scratch, |a, b, c, d| {
+        transpose_avx(a, b, c, d)
+    });
+}
+
 /// [`apply_with_norms`] compiled with AVX2 and FMA, 4 lanes.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
@@ -598,6 +660,22 @@ fn with_norms_avx2(
     scratch: &mut Vec<f64>,
 ) {
     with_norms_generic::<true, 4>(maps, dim, input, output, norms, scratch, |a, b, c, d| {
+        transpose_avx(a, b, c, d)
+    });
+}
+
+/// [`with_norms_avx2`] for `dim = 3` and an `R x C` reduction with the sizes as constants.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn norms_sized_avx2<const R: usize, const C: usize>(
+    maps: &BoundMaps<'_>,
+    input: &[f64],
+    output: &mut [f64],
+    norms: &mut [CurveNorms],
+    scratch: &mut Vec<f64>,
+) {
+    let maps = maps.with_sized_a::<R, C>();
+    with_norms_generic::<true, 4>(&maps, 3, input, output, norms, scratch, |a, b, c, d| {
         transpose_avx(a, b, c, d)
     });
 }
@@ -1092,6 +1170,88 @@ mod tests {
                 apply_with_norms(&maps, dim, &bad, &mut out, &mut norms, &mut scratch);
                 let last = norms[curves - 1];
                 assert!(last.smax.is_nan() && last.pmax.is_nan() && last.amax.is_nan());
+            }
+        }
+    }
+
+    #[test]
+    fn sized_norm_instances_are_the_general_instance_bit_for_bit() {
+        // Every reduction map of the `sized!` table with a full and a split node map,
+        // dim 3: the dispatch (sized instance) gives the general instance's bits, outputs
+        // and norms alike.
+        #[cfg(target_arch = "x86_64")]
+        {
+            let i = isa();
+            if i == Isa::Portable {
+                return;
+            }
+            let mk = |r: usize, c: usize, s: f64| -> Vec<f64> {
+                (0..r * c).map(|i| (i as f64 * s).sin()).collect()
+            };
+            let mut scratch = Vec::new();
+            for cols in 2..=12 {
+                for rows in 1..cols {
+                    let (rank, nodes) = (cols - rows, 2 * cols + 1);
+                    let at = transpose(&mk(rows, cols, 0.37), rows, cols);
+                    let gt = transpose(&mk(rank, cols, 0.53), rank, cols);
+                    let vt = transpose(&mk(nodes, rank, 0.71), nodes, rank);
+                    let re = rank.div_ceil(2);
+                    let vet = transpose(&mk(nodes, re, 0.29), nodes, re);
+                    let vot = transpose(&mk(nodes, rank - re, 0.31), nodes, rank - re);
+                    for v in [
+                        NodeMaps::Full(&vt, nodes),
+                        NodeMaps::Split(&vet, &vot, re, nodes),
+                    ] {
+                        let maps = BoundMaps {
+                            a: (&at, rows),
+                            g: (&gt, rank),
+                            v,
+                        };
+                        for curves in [1, 8, 13] {
+                            let input: Vec<f64> = (0..curves * cols * 3)
+                                .map(|i| (i as f64 * 1.7).cos() * 3.0)
+                                .collect();
+                            let run = |general: bool, scratch: &mut Vec<f64>| {
+                                let mut out = vec![0.0; curves * rows * 3];
+                                let mut norms = vec![CurveNorms::default(); curves];
+                                let (o, n) = (&mut out, &mut norms);
+                                match (general, i) {
+                                    (false, _) => apply_with_norms(&maps, 3, &input, o, n, scratch),
+                                    (true, Isa::Avx512) => with_norms_generic::<true, 8>(
+                                        &maps,
+                                        3,
+                                        &input,
+                                        o,
+                                        n,
+                                        scratch,
+                                        super::transpose,
+                                    ),
+                                    (true, _) => with_norms_generic::<true, 4>(
+                                        &maps,
+                                        3,
+                                        &input,
+                                        o,
+                                        n,
+                                        scratch,
+                                        super::transpose,
+                                    ),
+                                }
+                                let bits =
+                                    |x: &[f64]| x.iter().map(|y| y.to_bits()).collect::<Vec<_>>();
+                                let nb: Vec<[u64; 3]> = norms
+                                    .iter()
+                                    .map(|c| [c.smax.to_bits(), c.pmax.to_bits(), c.amax.to_bits()])
+                                    .collect();
+                                (bits(&out), nb)
+                            };
+                            assert_eq!(
+                                run(false, &mut scratch),
+                                run(true, &mut scratch),
+                                "{rows}x{cols} curves {curves}"
+                            );
+                        }
+                    }
+                }
             }
         }
     }
