@@ -706,18 +706,19 @@ mod tests {
     /// of it (a dense sample misses a quadratic maximum by `~(pi / samples per pair)^2`).
     #[test]
     fn the_pruned_measurement_is_the_dense_maximum() {
-        for case in 0..8u64 {
-            let p = 6 + case as usize;
-            let spans = 3 + case as usize % 4;
+        for case in 0..8usize {
+            let p = 6 + case;
+            let spans = 3 + case % 4;
             let mut knots = vec![0.0; p + 1];
             knots.extend((1..spans).map(|i| (i as f64 + 0.2) / spans as f64));
             knots.extend(std::iter::repeat_n(1.0, p + 1));
             let n = knots.len() - p - 1;
-            let pts = random_input(3 * n, 900 + case);
+            let seed = 900 + case as u64;
+            let pts = random_input(3 * n, seed);
             let c = if case % 2 == 0 {
                 BSplineCurve::new(p, knots, pts, 3).unwrap()
             } else {
-                let w: Vec<f64> = random_input(n, 950 + case)
+                let w: Vec<f64> = random_input(n, seed + 50)
                     .iter()
                     .map(|x| 2f64.powf(*x))
                     .collect();

@@ -122,7 +122,7 @@ pub(crate) fn predicted_knots(src: &Source, m: usize, budget: f64, limit: usize)
                 let mut worst: f64 = 0.0;
                 for (dv, pv) in value.chunks_exact(blk).zip(point.chunks_exact(blk)) {
                     let (w, dw) = (pv[blk - 1], dv[blk - 1]);
-                    if !(w > 0.0) {
+                    if w.is_nan() || w <= 0.0 {
                         return Vec::new();
                     }
                     let (mut sq, mut cx) = (0.0, 0.0);
