@@ -106,7 +106,13 @@ pub fn spline_max_deviation(a: &BSplineCurve, b: &BSplineCurve) -> Result<f64> {
         SampleTable::lobatto(a.degree(), nodes),
         SampleTable::lobatto(b.degree(), nodes),
     );
-    let mut scratch = PairScratch::default();
+    // Distances in units of a power of two `unit` at least the curves' size (exact, so the
+    // same maxima as in model units; the squares of a curve at 1e300 do not overflow).
+    let unit = measure_unit(a, b);
+    let mut scratch = PairScratch {
+        inv: 1.0 / unit,
+        ..PairScratch::default()
+    };
     let mut d2 = Vec::with_capacity(samples + 1);
     let mut best = 0.0f64;
     let mut ranked = Vec::with_capacity(pairs.len());
@@ -126,7 +132,13 @@ pub fn spline_max_deviation(a: &BSplineCurve, b: &BSplineCurve) -> Result<f64> {
         SampleTable::new(a.degree(), samples),
         SampleTable::new(b.degree(), samples),
     );
-    let eval_piece = |piece: &PieceEval, t: f64, out: &mut [f64]| piece.eval(t, out);
+    let inv = scratch.inv;
+    let eval_piece = |piece: &PieceEval, t: f64, out: &mut [f64]| {
+        piece.eval(t, out);
+        for x in out.iter_mut() {
+            *x *= inv;
+        }
+    };
     let mut refined = 0;
     for &(_, reach, idx) in &ranked {
         if refined == SPLINE_MEASURED_PIECES {
@@ -149,7 +161,24 @@ pub fn spline_max_deviation(a: &BSplineCurve, b: &BSplineCurve) -> Result<f64> {
         );
         best = best.max(d * d);
     }
-    Ok(best.sqrt())
+    Ok(best.sqrt() * unit)
+}
+
+/// The smallest power of two at least the largest absolute control point coordinate of
+/// `a` and `b` (model space; both curves lie in their control points' hulls; within
+/// `2^-1000 ..= 2^1000`), or one when that is zero or not finite: [`spline_max_deviation`]'s
+/// unit.
+fn measure_unit(a: &BSplineCurve, b: &BSplineCurve) -> f64 {
+    let size = a
+        .points()
+        .iter()
+        .chain(b.points())
+        .fold(0.0f64, |m, x| m.max(x.abs()));
+    if size > 0.0 && size.is_finite() {
+        // 2^-1000 ..= 2^1000: the unit and its inverse are normal numbers.
+        return size.log2().ceil().clamp(-1000.0, 1000.0).exp2();
+    }
+    1.0
 }
 
 /// Chebyshev–Lobatto nodes per degree of the difference in [`spline_max_deviation`]'s
@@ -210,9 +239,12 @@ impl SampleTable {
     }
 }
 
-/// Buffers of [`PairScratch::max_sampled`], reused over the pairs.
+/// Buffers of [`PairScratch::sampled`], reused over the pairs, and the measurement's unit.
 #[derive(Default)]
 struct PairScratch {
+    /// `1 / S`, `S` the power of two of [`measure_unit`]: distances are taken in units of
+    /// `S` (exactly: a power of two), so that their squares do not overflow.
+    inv: f64,
     a: Vec<f64>,
     b: Vec<f64>,
     left: Vec<f64>,
@@ -270,7 +302,7 @@ impl PairScratch {
             let (xa, xb) = (weight(pa, ha), weight(pb, hb));
             let v: f64 = (0..dim)
                 .map(|c| {
-                    let d = ha[c] * xb - hb[c] * xa;
+                    let d = (ha[c] * xb - hb[c] * xa) * self.inv;
                     d * d
                 })
                 .sum();
@@ -279,8 +311,8 @@ impl PairScratch {
         Ok(top / (wa * wb * wa * wb))
     }
 
-    /// `d2[k] = ||a(t_k) - b(t_k)||^2` at `t_k = lo + (hi - lo) k / n` (`n + 1` the tables'
-    /// rows): each piece's (homogeneous) points restricted to `[lo, hi]` by de Casteljau
+    /// `d2[k] = ||a(t_k) - b(t_k)||^2` (in units of `1 / self.inv`) at `t_k = lo + (hi -
+    /// lo) k / n` (`n + 1` the tables' rows): each piece's (homogeneous) points restricted to `[lo, hi]` by de Casteljau
     /// (exact up to rounding; none when the piece is the interval), then all its samples by
     /// the table's map.
     ///
@@ -298,6 +330,7 @@ impl PairScratch {
         d2: &mut Vec<f64>,
     ) -> Result<()> {
         let Self {
+            inv,
             a,
             b,
             left,
@@ -305,6 +338,7 @@ impl PairScratch {
             va,
             vb,
         } = self;
+        let inv = *inv;
         pa.restrict(lo, hi, a, left, right);
         pb.restrict(lo, hi, b, left, right);
         let samples = ta.0.rows();
@@ -317,7 +351,7 @@ impl PairScratch {
         for (k, (ha, hb)) in rows.enumerate() {
             let v: f64 = (0..dim)
                 .map(|c| {
-                    let d = pa.coordinate(ha, c) - pb.coordinate(hb, c);
+                    let d = (pa.coordinate(ha, c) - pb.coordinate(hb, c)) * inv;
                     d * d
                 })
                 .sum();
