@@ -3,8 +3,21 @@
 //!
 //! The Bézier points of the piece on `[a, b] = [u_s, u_{s+1}]` are the blossom values
 //! `b_i = P[a^(p-i), b^i]`, `i = 0..=p` (Ramshaw; the same points that inserting every
-//! interior knot up to multiplicity `p` produces). Each is a de Boor triangle of convex
-//! combinations, so the points carry a relative error of a few `p` ulp.
+//! interior knot up to multiplicity `p` produces). They come from two de Boor triangles
+//! (ADDED: `O(p^2)` per span; one de Boor triangle per point, `O(p^3)`, was a third of
+//! the reduction of degree 4–15 curves in issue 17's real-CAD-file row): the triangle at
+//! `a` on the span's `p + 1` points leaves, as the last point of level `r`, `V_(p-r) =
+//! P[a^r, u_{s+1}, ..., u_{s+p-r}]` (the points after inserting `a` up to multiplicity
+//! `p`); the triangle at `b` on `V` (knots `a^p, u_{s+1}, ..., u_{s+p}`) leaves `b_r` as
+//! the first point of level `r`. Both are convex combinations, so the points carry a
+//! relative error of a few `p` ulp.
+//!
+//! The end points are the de Boor values `P[a^p]`, `P[b^p]` themselves and are shared:
+//! the last point of a piece is the first point of the next one (the triangle at the next
+//! span's start, which is the spline's value there), the last piece's last point a de Boor
+//! evaluation at the domain's end. So adjacent pieces meet exactly, as the spline does
+//! (a version whose pieces' shared end points differed by rounding failed a `C^0` merge
+//! of the pieces within `1e-12` of the size: `bspline_laws`' regression in cagd-reduce).
 
 use super::eval::blossom;
 use crate::validate::check_points;
@@ -31,25 +44,81 @@ pub(crate) fn extract_work(
     pdim: usize,
 ) -> Vec<(f64, f64, Vec<f64>)> {
     let n = work.len() / pdim;
-    let mut out = Vec::new();
+    let mut out: Vec<(f64, f64, Vec<f64>)> = Vec::new();
+    let mut tri = vec![0.0; (p + 1) * pdim];
     for s in p..n {
         let (a, b) = (u[s], u[s + 1]);
         if a >= b {
             continue;
         }
-        let mut bez = Vec::with_capacity((p + 1) * pdim);
-        let mut args = vec![a; p];
-        for i in 0..=p {
-            let mut local = work[(s - p) * pdim..(s + 1) * pdim].to_vec();
-            blossom(u, s, p, &mut local, pdim, &args);
-            bez.extend_from_slice(&local[p * pdim..]);
-            if i < p {
-                args[i] = b;
-            }
+        let mut v = vec![0.0; (p + 1) * pdim];
+        span_bezier_into(
+            u,
+            p,
+            &work[(s - p) * pdim..(s + 1) * pdim],
+            pdim,
+            s,
+            &mut tri,
+            &mut v,
+        );
+        if let Some((_, _, prev)) = out.last_mut() {
+            // The previous piece ends where this one starts: the spline's value there.
+            let len = prev.len();
+            prev[len - pdim..].copy_from_slice(&v[..pdim]);
         }
-        out.push((a, b, bez));
+        out.push((a, b, v));
+    }
+    // The last piece's end: the de Boor value at the domain's end on its span.
+    if let Some(s) = (p..n).rev().find(|&s| u[s] < u[s + 1]) {
+        let mut local = work[(s - p) * pdim..(s + 1) * pdim].to_vec();
+        blossom(u, s, p, &mut local, pdim, &vec![u[s + 1]; p]);
+        if let Some((_, _, last)) = out.last_mut() {
+            let len = last.len();
+            last[len - pdim..].copy_from_slice(&local[p * pdim..]);
+        }
     }
     out
+}
+
+/// The Bézier points of the non-empty span `s` of the degree-`p` spline with knots `u` into
+/// `out` (`(p + 1) pdim` values), `local` its points `s - p ..= s`, `tri` scratch of the
+/// same length (the two de Boor triangles of the module docs; the last point is the
+/// triangle's, which [`extract_work`] replaces by the shared end point).
+fn span_bezier_into(
+    u: &[f64],
+    p: usize,
+    local: &[f64],
+    pdim: usize,
+    s: usize,
+    tri: &mut [f64],
+    out: &mut [f64],
+) {
+    let (a, b) = (u[s], u[s + 1]);
+    let blend = |x: &mut [f64], j: usize, alpha: f64| {
+        let (lo, hi) = x.split_at_mut(j * pdim);
+        let prev = &lo[(j - 1) * pdim..];
+        for (y, z) in hi[..pdim].iter_mut().zip(prev) {
+            *y = (1.0 - alpha) * z + alpha * *y;
+        }
+    };
+    // De Boor at `a`: the last point of level r is V_(p-r) (level p: P[a^p], the same
+    // operations as a de Boor evaluation at `a`).
+    tri.copy_from_slice(local);
+    out[p * pdim..].copy_from_slice(&tri[p * pdim..]);
+    for r in 1..=p {
+        for j in (r..=p).rev() {
+            let lo = u[s + j - p];
+            blend(tri, j, (a - lo) / (u[s + 1 + j - r] - lo));
+        }
+        out[(p - r) * pdim..(p - r + 1) * pdim].copy_from_slice(&tri[p * pdim..]);
+    }
+    // De Boor at `b` on V (knots a^p, u_{s+1}, ..., u_{s+p}): point r of level r is the
+    // Bézier point b_r, which stays in place for the later levels.
+    for r in 1..=p {
+        for j in (r..=p).rev() {
+            blend(out, j, (b - a) / (u[s + j - r + 1] - a));
+        }
+    }
 }
 
 impl BSplineCurve {
@@ -101,6 +170,63 @@ mod tests {
     use super::*;
     use crate::bspline::insert::tests::curve_strategy;
     use proptest::prelude::*;
+
+    /// The two-triangle extraction against the definition, one blossom `P[a^(p-i), b^i]`
+    /// per Bézier point (the route it replaced), at degrees 4–15 with unclamped ends,
+    /// knots of multiplicity 1..p and rational points: the same points to a few `p` ulp,
+    /// the end points bitwise (so adjacent pieces meet exactly).
+    #[test]
+    fn pieces_are_the_blossoms_at_high_degree() {
+        use crate::bspline::eval::blossom;
+        for p in [4usize, 7, 11, 15] {
+            let mut knots: Vec<f64> = (0..p).map(|i| -0.3 * (p - i) as f64).collect();
+            for (j, mult) in [1usize, p, 2, 1, p - 1].into_iter().enumerate() {
+                knots.extend(std::iter::repeat_n(
+                    1.0 + 0.7 * j as f64 + 0.01 * j as f64 * j as f64,
+                    mult,
+                ));
+            }
+            knots.extend((0..=p).map(|i| 5.0 + 0.4 * i as f64));
+            let n = knots.len() - p - 1;
+            let pts: Vec<f64> = (0..3 * n)
+                .map(|i| ((i * 37 % 23) as f64 - 11.0) * 3.5)
+                .collect();
+            let w: Vec<f64> = (0..n).map(|i| 0.5 + (i * 7 % 5) as f64 * 0.35).collect();
+            let c = BSplineCurve::new_rational(p, knots.clone(), pts, w, 3).unwrap();
+            let (work, pdim) = c.work_points();
+            let scale = work.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+            let pieces = extract_work(&knots, p, &work, pdim);
+            let mut k = 0;
+            for s in p..n {
+                let (a, b) = (knots[s], knots[s + 1]);
+                if a >= b {
+                    continue;
+                }
+                let (pa, pb, bez) = &pieces[k];
+                k += 1;
+                assert_eq!((*pa, *pb), (a, b));
+                for i in 0..=p {
+                    let mut args = vec![a; p - i];
+                    args.extend(std::iter::repeat_n(b, i));
+                    let mut local = work[(s - p) * pdim..(s + 1) * pdim].to_vec();
+                    blossom(&knots, s, p, &mut local, pdim, &args);
+                    for (x, y) in bez[i * pdim..(i + 1) * pdim].iter().zip(&local[p * pdim..]) {
+                        // The end points are the de Boor values themselves (shared
+                        // with the neighbours); the others convex combinations of the
+                        // same points: a few p ulp.
+                        if i == 0 || i == p {
+                            assert_eq!(x.to_bits(), y.to_bits(), "p={p} s={s} i={i}");
+                        }
+                        assert!(
+                            (x - y).abs() <= 8.0 * p as f64 * f64::EPSILON * scale,
+                            "p={p} s={s} i={i}: {x} vs {y}"
+                        );
+                    }
+                }
+            }
+            assert_eq!(k, pieces.len());
+        }
+    }
 
     proptest! {
         #[test]

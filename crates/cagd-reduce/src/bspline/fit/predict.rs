@@ -44,13 +44,19 @@ pub(crate) fn error_constant(m: usize) -> f64 {
 /// degree-`m` fit on them has, by the model of the module docs, every span's error near
 /// [`PREDICT_TARGET`] `* budget`: per piece, `J = ceil(integral of g)` spans (none added
 /// when `J = 1`) equidistributing the density `g`, sampled at the midpoints of
-/// `3 (p - m) + 8` equal parts of the piece. Empty for rational sources (the homogeneous
-/// error is not the model-space one), when the model cannot be evaluated (non-finite
-/// values), or when more than `limit` knots would be added (the refinement then starts
+/// `3 (p - m) + 8` equal parts of the piece. For a rational source (a NURBS in
+/// homogeneous coordinates `(A, W)`, blocks of `dim + 1`) the density is that of the
+/// model-space error: the homogeneous fit's error is the model's in every coordinate,
+/// `e_A = K h^(m+1) A^(m+1) B~`, `e_W = K h^(m+1) W^(m+1) B~` (one Bernoulli factor), and
+/// `C - S = (e_A - C e_W) / W` to first order, so `||C^(m+1)||` is replaced by
+/// `||A^(m+1) - C W^(m+1)|| / W` (ADDED, issue 17's real-CAD-file row: the NURBS fit
+/// started from the input's knots and took several rounds and more spans than OCCT).
+/// Empty when the model cannot be evaluated (non-finite values, a weight that is not
+/// positive), or when more than `limit` knots would be added (the refinement then starts
 /// from the input's knots, as without a prediction).
 pub(crate) fn predicted_knots(src: &Source, m: usize, budget: f64, limit: usize) -> Vec<f64> {
     let (p, d, blk) = (src.degree, src.pdim, src.block);
-    if src.rational || m >= p || budget.is_nan() || budget <= 0.0 {
+    if m >= p || budget.is_nan() || budget <= 0.0 {
         return Vec::new();
     }
     // The derivative's Bézier points are `fac / h^(m+1)` times the (m+1)-th differences
@@ -70,6 +76,14 @@ pub(crate) fn predicted_knots(src: &Source, m: usize, budget: f64, limit: usize)
     let binom: Vec<f64> = (0..=q).map(|i| binomial_f64(q, i)).collect();
     let samples = SAMPLES_PER_DEGREE * (q + 1) + 5;
     let (mut delta, mut bern, mut value) = (vec![0.0; (q + 1) * d], vec![0.0; q + 1], vec![0.0; d]);
+    // Rational: the piece's own values (`C = A / W` at the sample), degree `p`.
+    let rational = src.rational;
+    let binom_p: Vec<f64> = if rational {
+        (0..=p).map(|i| binomial_f64(p, i)).collect()
+    } else {
+        Vec::new()
+    };
+    let (mut bern_p, mut point) = (vec![0.0; binom_p.len()], vec![0.0; d]);
     let mut density = vec![0.0; samples];
     let mut out = Vec::new();
     for k in 0..src.breaks.len() - 1 {
@@ -97,11 +111,38 @@ pub(crate) fn predicted_knots(src: &Source, m: usize, budget: f64, limit: usize)
                     *v += b * x;
                 }
             }
-            let norm = value
-                .chunks_exact(blk)
-                .map(|c| c.iter().map(|x| x * x).sum::<f64>().sqrt())
-                .fold(0.0, f64::max);
-            let x = (norm - noise).max(0.0);
+            let x = if rational {
+                bernstein_with(&binom_p, u, &mut bern_p);
+                point.fill(0.0);
+                for (b, pi) in bern_p.iter().zip(piece.chunks_exact(d)) {
+                    for (v, x) in point.iter_mut().zip(pi) {
+                        *v += b * x;
+                    }
+                }
+                let mut worst: f64 = 0.0;
+                for (dv, pv) in value.chunks_exact(blk).zip(point.chunks_exact(blk)) {
+                    let (w, dw) = (pv[blk - 1], dv[blk - 1]);
+                    if w.is_nan() || w <= 0.0 {
+                        return Vec::new();
+                    }
+                    let (mut sq, mut cx) = (0.0, 0.0);
+                    for (da, a) in dv[..blk - 1].iter().zip(&pv[..blk - 1]) {
+                        let c = a / w;
+                        let e = da - c * dw;
+                        sq += e * e;
+                        cx += c * c;
+                    }
+                    // The rounding of `A^(m+1) - C W^(m+1)`: that of each part.
+                    worst = worst.max((sq.sqrt() - noise * (1.0 + cx.sqrt())).max(0.0) / w);
+                }
+                worst
+            } else {
+                let norm = value
+                    .chunks_exact(blk)
+                    .map(|c| c.iter().map(|x| x * x).sum::<f64>().sqrt())
+                    .fold(0.0, f64::max);
+                (norm - noise).max(0.0)
+            };
             // The root by square roots where it is one (lines, cubics): `powf` is a
             // `libm` call several times their cost.
             *g = match order {
