@@ -259,9 +259,12 @@ fn exact_case(
         // evaluating `sum w N P / sum w N` beside `sum N P` (de Boor, a few (p + 2) ulps of
         // the largest point). The bound covers that rounding, so it is never below a
         // measurement (the fuzz harness measured 5.7e-17 beside a reported 0).
-        // Overflow-safe: a coordinate of 1e300 made this `+inf` (C ABI fuzz run).
-        let pmax = cagd_core::max_point_norm(curve.points(), curve.dim());
-        let rounding = 8.0 * (p as f64 + 2.0) * f64::EPSILON * pmax;
+        // Overflow-safe: a coordinate of 1e300 made this `+inf` (C ABI fuzz run), and so
+        // did a point of norm above `f64::MAX` (two coordinates at -1.7e308, a later run):
+        // the largest coordinate times `sqrt(dim)`, the small factor applied first.
+        let amax = curve.points().iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let dim = curve.dim() as f64;
+        let rounding = (8.0 * (p as f64 + 2.0) * f64::EPSILON * dim.sqrt()) * amax;
         let bound = rounding.max(max_error);
         return Ok(PolynomialReduction {
             report: PolynomialReport {

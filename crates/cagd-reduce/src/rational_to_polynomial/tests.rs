@@ -431,3 +431,34 @@ fn equal_weights_with_huge_coordinates_give_a_finite_bound() {
         r.report.error_bound
     );
 }
+
+#[test]
+fn equal_weights_with_a_point_norm_above_the_largest_double_give_a_finite_bound() {
+    // C ABI fuzz (seed 115): a point at (-1.7e308, -1.7e308), whose norm overflows; the
+    // bound was `+inf` with success.
+    let knots = vec![
+        0.0,
+        0.0,
+        0.375_567_289_332_096_7,
+        0.892_253_525_870_262_7,
+        1.275,
+        1.275,
+    ];
+    let pts = vec![
+        -1.726_876_898_925_010_6e308,
+        -1.726_876_898_925_010_6e308,
+        100.0,
+        1e-8,
+        -72.36,
+        -1.741e16,
+    ];
+    let c = BSplineCurve::new_rational(2, knots, pts, vec![1.0; 3], 2).unwrap();
+    let r = rational_to_polynomial(&c, None, 1.3e-6).unwrap();
+    for b in [r.report.error_bound, r.report.segment_bound] {
+        assert!(
+            b.is_finite() && b >= r.report.max_error,
+            "{b:e} vs {:e}",
+            r.report.max_error
+        );
+    }
+}
