@@ -4933,8 +4933,10 @@ CagdStatus cagd_report_patch(const struct CagdReport *report,
  * (joints where the input is only `C^0` interpolated), a certified bound per span of
  * `|A - W S| / W` on Bézier pieces, refinement until every span is within the tolerance,
  * then certified knot removal. Weights all equal (or none) are recognised exactly: the
- * polynomial spline of the same control points is returned (its knots unchanged, bound
- * 0) when `target >= p`, reduced as by `cagd_bspline_reduce` when `target < p`.
+ * polynomial spline of the same control points is returned (its knots unchanged; its
+ * bound the rounding level of evaluating the rational form beside it, `8 (p + 2) eps
+ * sqrt(dim) max |x|`, or the measured distance if larger) when `target >= p`, reduced as
+ * by `cagd_bspline_reduce` when `target < p`.
  *
  * Parameters:
  * - `spline` (in): the curve (rational or not, clamped or not).
@@ -4961,7 +4963,8 @@ CagdStatus cagd_report_patch(const struct CagdReport *report,
  * - `CAGD_ERR_BAD_KNOTS`: an interior knot of multiplicity `p + 1` (the input may jump
  *   there).
  * - `CAGD_ERR_CONDITION_NOT_MET`: the tolerance is below the rounding level of the curve
- *   or needs more than `2^20` spans, or too much work (bounded work: more than `2^19`
+ *   (weights all equal too: the same curve, whose bound is that rounding level, so that
+ *   `CAGD_OK` always means a bound `<= tolerance`) or needs more than `2^20` spans, or too much work (bounded work: more than `2^19`
  *   spans fitted over the refinement rounds, a span counted `(p + target + 1)^2 / 16`
  *   times (at least once) and in more than 3D `ceil((dim + 1) / 4)` times;
  *   equal weights reduced below `p`: as `cagd_bspline_reduce`'s global fit).

@@ -17,8 +17,41 @@
 //! `||D|| / W <= max_j ||D_j(u)|| / W_j(u)` (mediant inequality): the largest curve bound
 //! over the rows, or over the columns, whichever is smaller.
 
-use cagd_core::binomial_f64;
 use cagd_core::kernel::{bounding_box_centre, subdivide};
+use cagd_core::{Error, Result, binomial_f64};
+
+/// The bound of an exact conversion (weights all equal, kept at their degree: the same
+/// curve or surface), `max(8 terms eps sqrt(dim) max |x|, measured)`: the true error is 0,
+/// and what a caller measures is the rounding of evaluating `sum w N P / sum w N` beside
+/// `sum N P` (de Boor, a few `terms = p + 2` (curve) or `p + q + 2` (surface) ulps of the
+/// largest point; the fuzz harness measured 5.7e-17 beside a reported 0), so the bound
+/// covers it and is never below a measurement. Overflow-safe: the largest coordinate
+/// times `sqrt(dim)`, the small factor applied first (a point norm overflowed to `+inf` at
+/// coordinates of -1.7e308, C ABI fuzz run).
+///
+/// # Errors
+/// [`Error::ConditionNotMet`] when that bound exceeds `tol` (the tolerance is below the
+/// rounding level of the curve: the rule of every other input, so that a success always
+/// means `bound <= tol`).
+pub(crate) fn exact_bound(
+    points: &[f64],
+    dim: usize,
+    terms: usize,
+    measured: f64,
+    tol: f64,
+) -> Result<f64> {
+    let amax = points.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let factor = 8.0 * terms as f64 * f64::EPSILON * (dim.max(1) as f64).sqrt();
+    let bound = (factor * amax).max(measured);
+    if bound <= tol {
+        Ok(bound)
+    } else {
+        Err(Error::ConditionNotMet {
+            eq: "tolerance",
+            why: "the tolerance is below the rounding level of the curve (weights all equal: the same curve, whose bound is the rounding of evaluating it)",
+        })
+    }
+}
 
 /// Subdivision depth of the ratio bound (at most `2^5` sub-pieces per row).
 const DEPTH: usize = 5;

@@ -2,6 +2,7 @@
 
 use cagd_core::{BSplineCurve, Error, MAX_DEGREE, Result, check_tolerance};
 
+use super::bound::exact_bound;
 use super::curve_fit::fit_to_budget;
 use super::pieces::RationalPieces;
 use crate::{BSplineOptions, LocalBounds, Raw, order_at, reduce_bspline, spline_max_deviation};
@@ -169,7 +170,8 @@ pub(crate) fn target_degree(p: usize, m: Option<usize>) -> Result<usize> {
 ///
 /// Weights all equal (or no weights) are recognised exactly: the polynomial spline of the
 /// same control points is returned unchanged when `m >= p` (bound at the rounding level of
-/// evaluating the rational form, no spans added) and
+/// evaluating the rational form, no spans added; [`Error::ConditionNotMet`] when that
+/// level is above `tol`, as for any other input) and
 /// reduced by [`crate::reduce_bspline`] when `m < p`.
 ///
 /// # Errors
@@ -255,17 +257,7 @@ fn exact_case(
     let continuity = continuity_report(curve.knots(), p, m.min(p), breaks)?;
     if m >= p {
         let max_error = spline_max_deviation(curve, &poly)?;
-        // The same curve: the true error is 0, and what a caller measures is the rounding of
-        // evaluating `sum w N P / sum w N` beside `sum N P` (de Boor, a few (p + 2) ulps of
-        // the largest point). The bound covers that rounding, so it is never below a
-        // measurement (the fuzz harness measured 5.7e-17 beside a reported 0).
-        // Overflow-safe: a coordinate of 1e300 made this `+inf` (C ABI fuzz run), and so
-        // did a point of norm above `f64::MAX` (two coordinates at -1.7e308, a later run):
-        // the largest coordinate times `sqrt(dim)`, the small factor applied first.
-        let amax = curve.points().iter().fold(0.0f64, |m, x| m.max(x.abs()));
-        let dim = curve.dim() as f64;
-        let rounding = (8.0 * (p as f64 + 2.0) * f64::EPSILON * dim.sqrt()) * amax;
-        let bound = rounding.max(max_error);
+        let bound = exact_bound(curve.points(), curve.dim(), p + 2, max_error, tol)?;
         return Ok(PolynomialReduction {
             report: PolynomialReport {
                 degree_from: p,

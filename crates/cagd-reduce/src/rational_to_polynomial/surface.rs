@@ -3,6 +3,7 @@
 
 use cagd_core::{BSplineCurve, BSplineSurface, Result, check_tolerance};
 
+use super::bound::exact_bound;
 use super::curve::{continuity_report, span_count, start_knots, target_degree};
 use super::surface_fit::{RationalPatches, fit_to_budget};
 use crate::{
@@ -204,12 +205,8 @@ fn exact_case(
         (r.surface, r.error_bound)
     };
     let max_error = surface_max_deviation(s, &surface)?;
-    // The same surface (target (p, q)): the true error is 0 and a measurement is the
-    // rounding of evaluating the rational form beside the polynomial one, a few (p + q + 2)
-    // ulps of the largest point; the bound covers it, so it is never below a measurement.
     let bound = if target == (p, q) {
-        let pmax = cagd_core::max_point_norm(s.points(), s.dim());
-        (8.0 * (p + q + 2) as f64 * f64::EPSILON * pmax).max(max_error)
+        exact_bound(s.points(), s.dim(), p + q + 2, max_error, tol)?
     } else {
         bound
     };

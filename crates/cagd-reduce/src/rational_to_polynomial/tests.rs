@@ -409,27 +409,29 @@ fn many_span_spiral_gets_fewer_spans() {
 
 /// Equal weights and a coordinate of 1e300 (C ABI fuzz run): the rounding bound was
 /// `8 (p + 2) eps sqrt(sum x^2)` with an overflowing square, so `+inf` with `Ok`. It is
-/// finite now, and still at least the measurement.
+/// finite now and still at least the measurement; a tolerance below it (the rounding level
+/// of the curve) is refused, as for any other input, so a success means `bound <= tol`.
 #[test]
 fn equal_weights_with_huge_coordinates_give_a_finite_bound() {
     let knots = vec![0.0, 0.0, 0.0, 0.0, 0.0, 1.5, 3.0, 3.0, 3.0, 3.0, 3.0];
     let pts = vec![-0.372, -0.0826, 0.1236, 1e300, -0.346, 0.00883];
     let c = BSplineCurve::new_rational(4, knots, pts, vec![1.0; 6], 1).unwrap();
-    let r = rational_to_polynomial(&c, None, 5.1e-7).unwrap();
+    assert!(matches!(
+        rational_to_polynomial(&c, None, 5.1e-7),
+        Err(Error::ConditionNotMet { .. })
+    ));
+    // Above the rounding level of the largest point: the same curve.
+    let tol = 1e-12 * 1e300;
+    let r = rational_to_polynomial(&c, None, tol).unwrap();
     assert!(r.report.equal_weights);
     for b in [r.report.error_bound, r.report.segment_bound] {
         assert!(
-            b.is_finite() && b >= r.report.max_error,
+            b.is_finite() && b >= r.report.max_error && b <= tol,
             "{b:e} vs {:e}",
             r.report.max_error
         );
     }
-    // The rounding level of the largest point, not more.
-    assert!(
-        r.report.error_bound <= 1e-12 * 1e300,
-        "{:e}",
-        r.report.error_bound
-    );
+    assert_eq!(r.curve.points(), c.points());
 }
 
 #[test]
@@ -453,10 +455,15 @@ fn equal_weights_with_a_point_norm_above_the_largest_double_give_a_finite_bound(
         -1.741e16,
     ];
     let c = BSplineCurve::new_rational(2, knots, pts, vec![1.0; 3], 2).unwrap();
-    let r = rational_to_polynomial(&c, None, 1.3e-6).unwrap();
+    // Below the rounding level of those points: refused (was success with `+inf`).
+    assert!(matches!(
+        rational_to_polynomial(&c, None, 1.3e-6),
+        Err(Error::ConditionNotMet { .. })
+    ));
+    let r = rational_to_polynomial(&c, None, 1e296).unwrap();
     for b in [r.report.error_bound, r.report.segment_bound] {
         assert!(
-            b.is_finite() && b >= r.report.max_error,
+            b.is_finite() && b >= r.report.max_error && b <= 1e296,
             "{b:e} vs {:e}",
             r.report.max_error
         );

@@ -280,3 +280,24 @@ fn high_degree_surfaces_answer_or_refuse_by_name() {
         }
     }
 }
+
+/// Weights all equal, kept at `(p, q)`: the exact case follows the rule of every other
+/// input — refused below the rounding level of the net (here points at 1e300), the same
+/// net with `bound <= tol` above it.
+#[test]
+fn equal_weight_surface_below_its_rounding_level_is_refused() {
+    let knots = vec![0.0, 0.0, 1.0, 1.0];
+    let pts = vec![
+        0.0, 0.0, 1e300, 1.0, 0.0, 2.0, 0.0, 1.0, 3.0, 1.0, 1.0, -1e300,
+    ];
+    let s =
+        BSplineSurface::new_rational((1, 1), knots.clone(), knots, pts, vec![2.0; 4], (2, 2), 3)
+            .unwrap();
+    assert!(matches!(
+        rational_surface_to_polynomial(&s, None, 1e-6),
+        Err(cagd_core::Error::ConditionNotMet { .. })
+    ));
+    let r = rational_surface_to_polynomial(&s, None, 1e288).unwrap();
+    assert!(r.equal_weights && r.error_bound <= 1e288 && r.error_bound >= r.max_error);
+    assert_eq!(r.surface.points(), s.points());
+}
