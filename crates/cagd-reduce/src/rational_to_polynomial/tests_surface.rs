@@ -295,7 +295,7 @@ fn equal_weight_surface_below_its_rounding_level_is_refused() {
             .unwrap();
     assert!(matches!(
         rational_surface_to_polynomial(&s, None, 1e-6),
-        Err(cagd_core::Error::ConditionNotMet { .. })
+        Err(Error::ConditionNotMet { .. })
     ));
     let r = rational_surface_to_polynomial(&s, None, 1e288).unwrap();
     assert!(r.equal_weights && r.error_bound <= 1e288 && r.error_bound >= r.max_error);
