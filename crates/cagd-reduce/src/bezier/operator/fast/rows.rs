@@ -262,17 +262,13 @@ pub(crate) fn scale<B: Base>(x: &Row<B>, a: Tracked<B>) -> Row<B> {
     out
 }
 
-/// `x_c * a_c` column by column (`a` tracked scalars, one per column).
-pub(crate) fn scale_cols<B: Base>(x: &Row<B>, a: &[Tracked<B>]) -> Row<B> {
-    let u = ru::<B>();
-    let mut out = x.clone();
-    for ((v, e), c) in out.v.iter_mut().zip(out.e.iter_mut()).zip(a) {
-        let (av, ae) = (c.value(), c.bound());
-        let t = av.mul(*v);
-        *e = mag(av) * *e + ae * (mag(*v) + *e) + u * mag(t);
-        *v = t;
-    }
-    out
+/// `x_c *= a` for one entry `c` in place (as [`scale`] entrywise).
+pub(crate) fn scale_entry<B: Base>(x: &mut Row<B>, c: usize, a: Tracked<B>) {
+    let (av, ae) = (a.value(), a.bound());
+    let v = x.v[c];
+    let t = av.mul(v);
+    x.e[c] = mag(av) * x.e[c] + ae * (mag(v) + x.e[c]) + ru::<B>() * mag(t);
+    x.v[c] = t;
 }
 
 /// `sum_c x_c a_c` (`a` tracked scalars, one per column) as a tracked number.
@@ -280,6 +276,18 @@ pub(crate) fn dot<B: Base>(x: &Row<B>, a: &[Tracked<B>]) -> Tracked<B> {
     let mut s = Tracked::of(0.0);
     for (c, ac) in a.iter().enumerate().take(x.v.len()) {
         s = s.fma(x.at(c), *ac);
+    }
+    s
+}
+
+/// `sum_i x_(off+i) a_i` (`a` tracked scalars) as a tracked number (as [`dot`] on a window
+/// of `x`).
+pub(crate) fn dot_window<B: Base>(x: &Row<B>, off: usize, a: &[Tracked<B>]) -> Tracked<B> {
+    let mut s = Tracked::of(0.0);
+    for (c, ac) in a.iter().enumerate() {
+        if let Some(xv) = x.v.get(off + c) {
+            s = s.fma(Tracked::from_parts(*xv, x.e[off + c]), *ac);
+        }
     }
     s
 }
