@@ -31,7 +31,7 @@
 //! double-word route: of the same order, far below the rounding to `f64` that follows.
 
 use super::dd::Dd;
-use super::rows::Row;
+use super::rows::{Row, recycle_f64, scratch_f64};
 
 /// `u = 2^-53`.
 const U: f64 = f64::EPSILON / 2.0;
@@ -62,50 +62,60 @@ pub(crate) fn compensated(
     #[allow(clippy::cast_precision_loss, reason = "n <= 200")]
     let kappa = 3.0 * (n as f64 + 1.0) * (n as f64 + 3.0) * U * U;
     let span = &d.v[off..need];
-    // The high words' splits, the low words and the error weights `κ |y| + e`, once per
-    // entry of `d` (not per product).
-    let mut yh = Vec::with_capacity(span.len());
-    let mut yl = Vec::with_capacity(span.len());
-    let mut w = Vec::with_capacity(span.len());
-    for (x, e) in span.iter().zip(&d.e[off..need]) {
+    let m = span.len();
+    // Scratch (one pooled buffer): the high words' splits, the low words and the error
+    // weights `κ |y| + e`, once per entry of `d` (not per product), then `π` and `σ`.
+    let mut scratch = scratch_f64(5 * m + 2 * len);
+    let (yh, rest) = scratch.split_at_mut(m);
+    let (yl, rest) = rest.split_at_mut(m);
+    let (ylo, rest) = rest.split_at_mut(m);
+    let (yhi, rest) = rest.split_at_mut(m);
+    let (w, rest) = rest.split_at_mut(m);
+    let (pi, sigma) = rest.split_at_mut(len);
+    for (i, (x, e)) in span.iter().zip(&d.e[off..need]).enumerate() {
         let (h, l) = split(x.hi);
-        yh.push(h);
-        yl.push(l);
-        w.push(kappa * x.hi.abs() + e);
+        yh[i] = h;
+        yl[i] = l;
+        yhi[i] = x.hi;
+        ylo[i] = x.lo;
+        w[i] = kappa * x.hi.abs() + e;
     }
-    let mut pi = vec![0.0f64; len];
-    let mut sigma = vec![0.0f64; len];
-    let mut err = Vec::with_capacity(cap.max(len));
-    err.resize(len, 0.0f64);
+    let mut out = Row::<Dd>::zeros(cap.max(len));
+    let err = &mut out.e[..len];
     for (l, &cl) in c.iter().enumerate() {
         let (ch, cm) = split(cl);
         let ca = cl.abs();
-        let ys = &span[l..l + len];
-        let (yhs, yls, ws) = (&yh[l..l + len], &yl[l..l + len], &w[l..l + len]);
-        for j in 0..len {
-            let y = ys[j].hi;
+        let ys = yhi[l..l + len]
+            .iter()
+            .zip(&ylo[l..l + len])
+            .zip(yh[l..l + len].iter().zip(&yl[l..l + len]))
+            .zip(&w[l..l + len]);
+        let acc = pi.iter_mut().zip(sigma.iter_mut()).zip(err.iter_mut());
+        for (((p0, s0), e0), (((&y, &z), (&ys_h, &ys_l)), &wt)) in acc.zip(ys) {
             // TwoProduct (Dekker, the splits precomputed).
             let h = cl * y;
-            let r = ((ch * yhs[j] - h) + ch * yls[j] + cm * yhs[j]) + cm * yls[j];
+            let r = ((ch * ys_h - h) + ch * ys_l + cm * ys_h) + cm * ys_l;
             // TwoSum (Knuth).
-            let p = pi[j] + h;
-            let bb = p - pi[j];
-            let q = (pi[j] - (p - bb)) + (h - bb);
-            pi[j] = p;
-            sigma[j] += (q + r) + cl * ys[j].lo;
-            err[j] += ca * ws[j];
+            let p = *p0 + h;
+            let bb = p - *p0;
+            let q = (*p0 - (p - bb)) + (h - bb);
+            *p0 = p;
+            *s0 += (q + r) + cl * z;
+            *e0 += ca * wt;
         }
     }
-    let mut v = Vec::with_capacity(cap.max(len));
-    v.extend(pi.iter().zip(&sigma).map(|(&p, &s)| {
+    for ((o, &p), &s) in out.v.iter_mut().zip(pi.iter()).zip(sigma.iter()) {
         let hi = p + s;
         let bb = hi - p;
-        Dd {
+        *o = Dd {
             hi,
             lo: (p - (hi - bb)) + (s - bb),
-        }
-    }));
-    Some(Row { v, e: err })
+        };
+    }
+    recycle_f64(scratch);
+    out.v.truncate(len);
+    out.e.truncate(len);
+    Some(out)
 }
 
 #[cfg(test)]

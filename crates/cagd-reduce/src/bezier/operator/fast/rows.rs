@@ -12,8 +12,8 @@ use super::tracked::{Base, Tracked};
 /// arithmetic and, beside each, a bound of its distance from the exact coefficient (a
 /// running error analysis as [`Tracked`]'s, kept as two plain arrays so that the row
 /// operations below are straight loops without per-number bookkeeping).
-#[derive(Debug, Clone)]
-pub(crate) struct Row<B> {
+#[derive(Debug)]
+pub(crate) struct Row<B: 'static> {
     /// The computed coefficients.
     pub(crate) v: Vec<B>,
     /// `e[c] >= |v[c] - exact_c|` (raw: the final rounding to `f64` and the rounding of
@@ -35,13 +35,115 @@ fn mag<B: Base>(x: B) -> f64 {
     x.to_f64().abs()
 }
 
-impl<B: Base> Row<B> {
-    /// `len` exact zeros.
-    pub(crate) fn zeros(len: usize) -> Self {
-        Self {
-            v: vec![B::of(0.0); len],
-            e: vec![0.0; len],
+/// The most buffers [`pool`] keeps per element type (a build at degree 64 holds a few
+/// hundred rows at once; beyond this, dropped rows free their buffers as usual).
+const POOL_CAP: usize = 256;
+
+thread_local! {
+    /// Spare `f64` buffers (error arrays, and values of `f64` rows).
+    static POOL_F64: std::cell::RefCell<Vec<Vec<f64>>> = const { std::cell::RefCell::new(Vec::new()) };
+    /// Spare double-word buffers (values of double-word rows).
+    static POOL_DD: std::cell::RefCell<Vec<Vec<super::dd::Dd>>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// A per-thread pool of row buffers (goes beyond the seed: a performance device only). A
+/// stepwise build makes and drops hundreds of short rows (each step's output replaces its
+/// input), and `malloc` / `free` were 30–45 % of an `f64` stepwise build; a dropped row's
+/// buffers are kept here and [`Row::zeros`] takes them back, cleared and refilled with
+/// zeros, so the values are exactly those of a fresh allocation.
+mod pool {
+    use super::{POOL_CAP, POOL_DD, POOL_F64};
+    use std::any::Any;
+
+    /// An empty buffer of capacity `>= len` if the pool has one of `T`'s kind.
+    pub(super) fn take<T: 'static>(len: usize) -> Option<Vec<T>> {
+        let mut out: Option<Vec<T>> = None;
+        {
+            let slot: &mut dyn Any = &mut out;
+            if let Some(o) = slot.downcast_mut::<Option<Vec<f64>>>() {
+                *o = POOL_F64
+                    .try_with(|p| p.try_borrow_mut().ok()?.pop())
+                    .ok()
+                    .flatten();
+            } else if let Some(o) = slot.downcast_mut::<Option<Vec<super::super::dd::Dd>>>() {
+                *o = POOL_DD
+                    .try_with(|p| p.try_borrow_mut().ok()?.pop())
+                    .ok()
+                    .flatten();
+            }
         }
+        out.map(|mut v| {
+            v.clear();
+            v.reserve(len);
+            v
+        })
+    }
+
+    /// Keeps `v`'s buffer for a later [`take`] (if the pool has room and `T` a pool).
+    pub(super) fn give<T: 'static>(v: &mut Vec<T>) {
+        if v.capacity() == 0 {
+            return;
+        }
+        let slot: &mut dyn Any = v;
+        if let Some(v) = slot.downcast_mut::<Vec<f64>>() {
+            let _ = POOL_F64.try_with(|p| {
+                if let Ok(mut p) = p.try_borrow_mut() {
+                    if p.len() < POOL_CAP {
+                        p.push(std::mem::take(v));
+                    }
+                }
+            });
+        } else if let Some(v) = slot.downcast_mut::<Vec<super::super::dd::Dd>>() {
+            let _ = POOL_DD.try_with(|p| {
+                if let Ok(mut p) = p.try_borrow_mut() {
+                    if p.len() < POOL_CAP {
+                        p.push(std::mem::take(v));
+                    }
+                }
+            });
+        }
+    }
+}
+
+/// `len` zeros in a buffer from the per-thread pool (scratch space; give it back with
+/// [`recycle_f64`]).
+pub(crate) fn scratch_f64(len: usize) -> Vec<f64> {
+    let mut v = pool::take::<f64>(len).unwrap_or_default();
+    v.resize(len, 0.0);
+    v
+}
+
+/// Returns a scratch buffer to the per-thread pool.
+pub(crate) fn recycle_f64(mut v: Vec<f64>) {
+    pool::give(&mut v);
+}
+
+impl<B: 'static> Drop for Row<B> {
+    fn drop(&mut self) {
+        pool::give(&mut self.v);
+        pool::give(&mut self.e);
+    }
+}
+
+impl<B: Base> Clone for Row<B> {
+    /// A copy in buffers from the per-thread [`pool`] when it has some.
+    fn clone(&self) -> Self {
+        let mut v = pool::take::<B>(self.v.len()).unwrap_or_default();
+        v.extend_from_slice(&self.v);
+        let mut e = pool::take::<f64>(self.e.len()).unwrap_or_default();
+        e.extend_from_slice(&self.e);
+        Self { v, e }
+    }
+}
+
+impl<B: Base> Row<B> {
+    /// `len` exact zeros (buffers from the per-thread [`pool`] when it has some).
+    pub(crate) fn zeros(len: usize) -> Self {
+        let mut v = pool::take::<B>(len).unwrap_or_default();
+        v.resize(len, B::of(0.0));
+        let mut e = pool::take::<f64>(len).unwrap_or_default();
+        e.resize(len, 0.0);
+        Self { v, e }
     }
 
     /// The unit row `e_i` of length `len`.

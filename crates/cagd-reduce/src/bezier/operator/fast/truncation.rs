@@ -177,16 +177,35 @@ fn functionals<B: Base>(family: Family, nn: i64, first: i64, last: i64) -> Vec<R
 }
 
 /// `c_l` as `f64`s if every one is an integer below `2^53` (so exactly an `f64`), else
-/// `None`.
-fn exact_f64(family: Family, k: i64) -> Option<Vec<f64>> {
+/// `None`; remembered per `(family, k)` for the process (a constant, like the binomials).
+fn exact_f64(family: Family, k: i64) -> Option<std::sync::Arc<Vec<f64>>> {
+    use std::collections::HashMap;
+    use std::sync::{Arc, OnceLock, RwLock};
+    type Memo = RwLock<HashMap<(i64, i64, i64), Option<Arc<Vec<f64>>>>>;
+    static MEMO: OnceLock<Memo> = OnceLock::new();
+    let memo = MEMO.get_or_init(|| RwLock::new(HashMap::new()));
+    let key = match family {
+        Family::Chebyshev => (-1, -1, k),
+        Family::Jacobi { a, b } => (a, b, k),
+    };
+    if let Some(c) = memo.read().ok().and_then(|m| m.get(&key).cloned()) {
+        return c;
+    }
     #[allow(clippy::cast_precision_loss, reason = "|c| < 2^53: exact")]
-    integer_coefficients(family, k)?
-        .into_iter()
-        .map(|c| {
-            let c = i64::try_from(c).ok()?;
-            (c.unsigned_abs() < 1u64 << 53).then_some(c as f64)
+    let c: Option<Arc<Vec<f64>>> = integer_coefficients(family, k)
+        .and_then(|c| {
+            c.into_iter()
+                .map(|c| {
+                    let c = i64::try_from(c).ok()?;
+                    (c.unsigned_abs() < 1u64 << 53).then_some(c as f64)
+                })
+                .collect::<Option<Vec<f64>>>()
         })
-        .collect()
+        .map(Arc::new);
+    if let Ok(mut m) = memo.write() {
+        m.insert(key, c.clone());
+    }
+    c
 }
 
 /// [`correlation::compensated`] when `B` is double-word (`None` otherwise: the caller runs
@@ -382,9 +401,11 @@ fn back_to_bernstein_f64<B: Base>(
                 let (av, am, ae) = (a.value(), a.value().abs(), a.bound());
                 let span = k * len..(k + 1) * len;
                 let (g, x1, x2) = (&gv[span.clone()], &h1[span.clone()], &h2[span]);
-                for c in 0..len {
-                    v[c] += av * g[c];
-                    e[c] += am * x1[c] + ae * x2[c];
+                for ((vc, ec), ((gc, x1c), x2c)) in
+                    v.iter_mut().zip(e.iter_mut()).zip(g.iter().zip(x1).zip(x2))
+                {
+                    *vc += av * gc;
+                    *ec += am * x1c + ae * x2c;
                 }
             }
             Row {
