@@ -383,15 +383,34 @@ pub(crate) fn dot<B: Base>(x: &Row<B>, a: &[Tracked<B>]) -> Tracked<B> {
 }
 
 /// `sum_i x_(off+i) a_i` (`a` tracked scalars) as a tracked number (as [`dot`] on a window
-/// of `x`).
+/// of `x`, with an a-priori bound instead of [`Tracked`]'s running one): the value is the
+/// recursive sum of the rounded products in the base arithmetic, whose rounding is at most
+/// `γ_L(U) sum |x̂ â|` (`L` terms, `γ_L(U) = L U / (1 - L U)`, Higham, *Accuracy and
+/// Stability*, eq. 3.5, for any arithmetic with relative error `U` per operation), and the
+/// inputs' errors add `sum (|x̂| e_a + e_x (|â| + e_a))`. The magnitudes are taken in `f64`
+/// (within a relative `2u` of the base values), allowed for by a factor `1 + 4u`.
 pub(crate) fn dot_window<B: Base>(x: &Row<B>, off: usize, a: &[Tracked<B>]) -> Tracked<B> {
-    let mut s = Tracked::of(0.0);
-    for (c, ac) in a.iter().enumerate() {
-        if let Some(xv) = x.v.get(off + c) {
-            s = s.fma(Tracked::from_parts(*xv, x.e[off + c]), *ac);
-        }
+    let end = (off + a.len()).min(x.v.len());
+    if off >= end {
+        return Tracked::of(0.0);
     }
-    s
+    let (xv, xe) = (&x.v[off..end], &x.e[off..end]);
+    let mut s = B::of(0.0);
+    let (mut mags, mut prop) = (0.0f64, 0.0f64);
+    for ((xv, xe), ac) in xv.iter().zip(xe).zip(a) {
+        let (av, ae) = (ac.value(), ac.bound());
+        s = s.add(xv.mul(av));
+        let (xm, am) = (mag(*xv), mag(av));
+        mags += xm * am;
+        prop += xm * ae + xe * (am + ae);
+    }
+    #[allow(clippy::cast_precision_loss, reason = "L <= 200")]
+    let l = (end - off) as f64;
+    let gamma = l * B::U / (1.0 - l * B::U);
+    Tracked::from_parts(
+        s,
+        (prop + gamma * mags * (1.0 + 4.0 * f64::EPSILON)) * (1.0 + 4.0 * f64::EPSILON),
+    )
 }
 
 /// `i64` of an index (indices here are at most 130).
