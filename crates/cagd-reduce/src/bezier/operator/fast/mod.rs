@@ -10,6 +10,7 @@
 //! The proven errors travel with the operator (`Operator::own_bound` adds them), so a
 //! method's own bound stays a true bound for the matrix actually used.
 
+mod correlation;
 mod dd;
 mod ginv_ends;
 mod quadrature;

@@ -12,8 +12,8 @@ use super::tracked::{Base, Tracked};
 /// arithmetic and, beside each, a bound of its distance from the exact coefficient (a
 /// running error analysis as [`Tracked`]'s, kept as two plain arrays so that the row
 /// operations below are straight loops without per-number bookkeeping).
-#[derive(Debug, Clone)]
-pub(crate) struct Row<B> {
+#[derive(Debug)]
+pub(crate) struct Row<B: 'static> {
     /// The computed coefficients.
     pub(crate) v: Vec<B>,
     /// `e[c] >= |v[c] - exact_c|` (raw: the final rounding to `f64` and the rounding of
@@ -35,13 +35,115 @@ fn mag<B: Base>(x: B) -> f64 {
     x.to_f64().abs()
 }
 
-impl<B: Base> Row<B> {
-    /// `len` exact zeros.
-    pub(crate) fn zeros(len: usize) -> Self {
-        Self {
-            v: vec![B::of(0.0); len],
-            e: vec![0.0; len],
+/// The most buffers [`pool`] keeps per element type (a build at degree 64 holds a few
+/// hundred rows at once; beyond this, dropped rows free their buffers as usual).
+const POOL_CAP: usize = 256;
+
+thread_local! {
+    /// Spare `f64` buffers (error arrays, and values of `f64` rows).
+    static POOL_F64: std::cell::RefCell<Vec<Vec<f64>>> = const { std::cell::RefCell::new(Vec::new()) };
+    /// Spare double-word buffers (values of double-word rows).
+    static POOL_DD: std::cell::RefCell<Vec<Vec<super::dd::Dd>>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// A per-thread pool of row buffers (goes beyond the seed: a performance device only). A
+/// stepwise build makes and drops hundreds of short rows (each step's output replaces its
+/// input), and `malloc` / `free` were 30–45 % of an `f64` stepwise build; a dropped row's
+/// buffers are kept here and [`Row::zeros`] takes them back, cleared and refilled with
+/// zeros, so the values are exactly those of a fresh allocation.
+mod pool {
+    use super::{POOL_CAP, POOL_DD, POOL_F64};
+    use std::any::Any;
+
+    /// An empty buffer of capacity `>= len` if the pool has one of `T`'s kind.
+    pub(super) fn take<T: 'static>(len: usize) -> Option<Vec<T>> {
+        let mut out: Option<Vec<T>> = None;
+        {
+            let slot: &mut dyn Any = &mut out;
+            if let Some(o) = slot.downcast_mut::<Option<Vec<f64>>>() {
+                *o = POOL_F64
+                    .try_with(|p| p.try_borrow_mut().ok()?.pop())
+                    .ok()
+                    .flatten();
+            } else if let Some(o) = slot.downcast_mut::<Option<Vec<super::super::dd::Dd>>>() {
+                *o = POOL_DD
+                    .try_with(|p| p.try_borrow_mut().ok()?.pop())
+                    .ok()
+                    .flatten();
+            }
         }
+        out.map(|mut v| {
+            v.clear();
+            v.reserve(len);
+            v
+        })
+    }
+
+    /// Keeps `v`'s buffer for a later [`take`] (if the pool has room and `T` a pool).
+    pub(super) fn give<T: 'static>(v: &mut Vec<T>) {
+        if v.capacity() == 0 {
+            return;
+        }
+        let slot: &mut dyn Any = v;
+        if let Some(v) = slot.downcast_mut::<Vec<f64>>() {
+            let _ = POOL_F64.try_with(|p| {
+                if let Ok(mut p) = p.try_borrow_mut() {
+                    if p.len() < POOL_CAP {
+                        p.push(std::mem::take(v));
+                    }
+                }
+            });
+        } else if let Some(v) = slot.downcast_mut::<Vec<super::super::dd::Dd>>() {
+            let _ = POOL_DD.try_with(|p| {
+                if let Ok(mut p) = p.try_borrow_mut() {
+                    if p.len() < POOL_CAP {
+                        p.push(std::mem::take(v));
+                    }
+                }
+            });
+        }
+    }
+}
+
+/// `len` zeros in a buffer from the per-thread pool (scratch space; give it back with
+/// [`recycle_f64`]).
+pub(crate) fn scratch_f64(len: usize) -> Vec<f64> {
+    let mut v = pool::take::<f64>(len).unwrap_or_default();
+    v.resize(len, 0.0);
+    v
+}
+
+/// Returns a scratch buffer to the per-thread pool.
+pub(crate) fn recycle_f64(mut v: Vec<f64>) {
+    pool::give(&mut v);
+}
+
+impl<B: 'static> Drop for Row<B> {
+    fn drop(&mut self) {
+        pool::give(&mut self.v);
+        pool::give(&mut self.e);
+    }
+}
+
+impl<B: Base> Clone for Row<B> {
+    /// A copy in buffers from the per-thread [`pool`] when it has some.
+    fn clone(&self) -> Self {
+        let mut v = pool::take::<B>(self.v.len()).unwrap_or_default();
+        v.extend_from_slice(&self.v);
+        let mut e = pool::take::<f64>(self.e.len()).unwrap_or_default();
+        e.extend_from_slice(&self.e);
+        Self { v, e }
+    }
+}
+
+impl<B: Base> Row<B> {
+    /// `len` exact zeros (buffers from the per-thread [`pool`] when it has some).
+    pub(crate) fn zeros(len: usize) -> Self {
+        let mut v = pool::take::<B>(len).unwrap_or_default();
+        v.resize(len, B::of(0.0));
+        let mut e = pool::take::<f64>(len).unwrap_or_default();
+        e.resize(len, 0.0);
+        Self { v, e }
     }
 
     /// The unit row `e_i` of length `len`.
@@ -262,17 +364,13 @@ pub(crate) fn scale<B: Base>(x: &Row<B>, a: Tracked<B>) -> Row<B> {
     out
 }
 
-/// `x_c * a_c` column by column (`a` tracked scalars, one per column).
-pub(crate) fn scale_cols<B: Base>(x: &Row<B>, a: &[Tracked<B>]) -> Row<B> {
-    let u = ru::<B>();
-    let mut out = x.clone();
-    for ((v, e), c) in out.v.iter_mut().zip(out.e.iter_mut()).zip(a) {
-        let (av, ae) = (c.value(), c.bound());
-        let t = av.mul(*v);
-        *e = mag(av) * *e + ae * (mag(*v) + *e) + u * mag(t);
-        *v = t;
-    }
-    out
+/// `x_c *= a` for one entry `c` in place (as [`scale`] entrywise).
+pub(crate) fn scale_entry<B: Base>(x: &mut Row<B>, c: usize, a: Tracked<B>) {
+    let (av, ae) = (a.value(), a.bound());
+    let v = x.v[c];
+    let t = av.mul(v);
+    x.e[c] = mag(av) * x.e[c] + ae * (mag(v) + x.e[c]) + ru::<B>() * mag(t);
+    x.v[c] = t;
 }
 
 /// `sum_c x_c a_c` (`a` tracked scalars, one per column) as a tracked number.
@@ -282,6 +380,37 @@ pub(crate) fn dot<B: Base>(x: &Row<B>, a: &[Tracked<B>]) -> Tracked<B> {
         s = s.fma(x.at(c), *ac);
     }
     s
+}
+
+/// `sum_i x_(off+i) a_i` (`a` tracked scalars) as a tracked number (as [`dot`] on a window
+/// of `x`, with an a-priori bound instead of [`Tracked`]'s running one): the value is the
+/// recursive sum of the rounded products in the base arithmetic, whose rounding is at most
+/// `γ_L(U) sum |x̂ â|` (`L` terms, `γ_L(U) = L U / (1 - L U)`, Higham, *Accuracy and
+/// Stability*, eq. 3.5, for any arithmetic with relative error `U` per operation), and the
+/// inputs' errors add `sum (|x̂| e_a + e_x (|â| + e_a))`. The magnitudes are taken in `f64`
+/// (within a relative `2u` of the base values), allowed for by a factor `1 + 4u`.
+pub(crate) fn dot_window<B: Base>(x: &Row<B>, off: usize, a: &[Tracked<B>]) -> Tracked<B> {
+    let end = (off + a.len()).min(x.v.len());
+    if off >= end {
+        return Tracked::of(0.0);
+    }
+    let (xv, xe) = (&x.v[off..end], &x.e[off..end]);
+    let mut s = B::of(0.0);
+    let (mut mags, mut prop) = (0.0f64, 0.0f64);
+    for ((xv, xe), ac) in xv.iter().zip(xe).zip(a) {
+        let (av, ae) = (ac.value(), ac.bound());
+        s = s.add(xv.mul(av));
+        let (xm, am) = (mag(*xv), mag(av));
+        mags += xm * am;
+        prop += xm * ae + xe * (am + ae);
+    }
+    #[allow(clippy::cast_precision_loss, reason = "L <= 200")]
+    let l = (end - off) as f64;
+    let gamma = l * B::U / (1.0 - l * B::U);
+    Tracked::from_parts(
+        s,
+        (prop + gamma * mags * (1.0 + 4.0 * f64::EPSILON)) * (1.0 + 4.0 * f64::EPSILON),
+    )
 }
 
 /// `i64` of an index (indices here are at most 130).

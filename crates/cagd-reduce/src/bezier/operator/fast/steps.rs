@@ -11,7 +11,7 @@ use super::tracked::{Base, Tracked};
 use crate::bezier::method::Method;
 
 /// One step's output rows and its bound terms `(exact coefficient or None, functional)`.
-pub(crate) struct Step<B> {
+pub(crate) struct Step<B: 'static> {
     pub(crate) rows: Vec<Row<B>>,
     /// `(coef, g)`: the term `coef ||g . P||` of the step's own bound, `g` a functional of
     /// the original points; `coef` is an `f64` upper bound.
@@ -62,7 +62,7 @@ fn delta_k_symmetric<B: Base>(s: &[Row<B>]) -> Row<B> {
 
 /// `Delta^k` of a step's input rows, computed on first use and shared by the step and its
 /// bound term.
-pub(crate) struct Delta<'a, B> {
+pub(crate) struct Delta<'a, B: 'static> {
     s: &'a [Row<B>],
     symmetric: bool,
     cell: std::cell::OnceCell<Row<B>>,
@@ -76,6 +76,12 @@ impl<'a, B: Base> Delta<'a, B> {
             symmetric,
             cell: std::cell::OnceCell::new(),
         }
+    }
+
+    /// The row `Delta^k s`, taken out (no copy when it was computed already).
+    pub(crate) fn into_row(self) -> Row<B> {
+        self.get();
+        self.cell.into_inner().unwrap_or_else(|| Row::zeros(0))
     }
 
     /// The row `Delta^k s`.
@@ -525,7 +531,7 @@ pub(crate) fn stepwise<B: Base>(
                 // O(k) work: always in double-word, so the coefficient is tight even when
                 // it is tiny beside the step's entries.
                 match residual_coef_cached(method, k) {
-                    Some(c) => terms.push((c, delta.get().clone())),
+                    Some(c) => terms.push((c, delta.into_row())),
                     None => valid = false,
                 }
             } else {

@@ -28,10 +28,12 @@
 //! - Back to degree `M`: the coefficient of `B_s^M` in `p_k` is
 //!   `sum_l c_l C(M-k, s-l) / C(M, s)` (degree elevation).
 
+use super::correlation;
+use super::dd::Dd;
 use super::quadrature;
 use super::rows::{
-    Row, Rows, auxiliary, axpy, axpy_range, axpy_window, b, div, dot, end_points, idx, scale,
-    scale_cols, support, to_i, zero,
+    Row, Rows, auxiliary, axpy, axpy_range, axpy_window, b, div, dot_window, end_points, idx,
+    scale, scale_entry, support, to_i, zero,
 };
 use super::steps::{inverse_elevation, sign_binom};
 use super::tracked::{Base, Tracked};
@@ -48,6 +50,14 @@ pub(crate) enum Family {
         /// Exponent of `1 - t`.
         b: i64,
     },
+}
+
+/// Whether the weight is symmetric (`p_k(1-t) = (-1)^k p_k(t)`).
+fn symmetric_weight(family: Family) -> bool {
+    match family {
+        Family::Chebyshev => true,
+        Family::Jacobi { a, b } => a == b,
+    }
 }
 
 /// `c_l`, `l = 0..=k`, of the family's `p_k` (see the module docs).
@@ -137,21 +147,26 @@ fn functionals<B: Base>(family: Family, nn: i64, first: i64, last: i64) -> Vec<R
             // (-1)^k phi_k(j)`: only the first half is computed, the rest mirrored (the
             // mirrored error bounds hold for the mirrored exact entries; negation is exact
             // in every base).
-            let half = if symmetric { width / 2 + 1 } else { width };
-            let mut acc = Row::zeros(half.min(width));
-            for (l, cl) in c.iter().enumerate() {
-                axpy_window(&mut acc, *cl, &d, off + l);
+            let half = (if symmetric { width / 2 + 1 } else { width }).min(width);
+            // The correlation into the first `half` entries of the row (one allocation):
+            // compensated for double-word rows with exact `f64` coefficients
+            // ([`compensated_dd`]), else one row update per coefficient.
+            let mut row = exact_f64(family, k)
+                .and_then(|ce| compensated_dd(&ce, &d, off, half, width))
+                .unwrap_or_else(|| {
+                    let mut acc = Row::zeros(half);
+                    for (l, cl) in c.iter().enumerate() {
+                        axpy_window(&mut acc, *cl, &d, off + l);
+                    }
+                    acc
+                });
+            // The column factors `factor C(N, j)`, in place.
+            for j in 0..half {
+                scale_entry(&mut row, j, factor.mul(Tracked::binom(nn, to_i(j))));
             }
-            let cols: Vec<Tracked<B>> = (0..=nn)
-                .take(acc.v.len())
-                .map(|j| factor.mul(Tracked::binom(nn, j)))
-                .collect();
-            let half_row = scale_cols(&acc, &cols);
-            let computed = half_row.v.len();
-            let mut row = Row::zeros(width);
-            row.v[..computed].copy_from_slice(&half_row.v);
-            row.e[..computed].copy_from_slice(&half_row.e);
-            for j in computed..width {
+            row.v.resize(width, B::of(0.0));
+            row.e.resize(width, 0.0);
+            for j in half..width {
                 let (v, e) = (row.v[width - 1 - j], row.e[width - 1 - j]);
                 row.v[j] = if k % 2 == 0 { v } else { B::of(0.0).sub(v) };
                 row.e[j] = e;
@@ -159,6 +174,54 @@ fn functionals<B: Base>(family: Family, nn: i64, first: i64, last: i64) -> Vec<R
             row
         })
         .collect()
+}
+
+/// `c_l` as `f64`s if every one is an integer below `2^53` (so exactly an `f64`), else
+/// `None`; remembered per `(family, k)` for the process (a constant, like the binomials).
+fn exact_f64(family: Family, k: i64) -> Option<std::sync::Arc<Vec<f64>>> {
+    use std::collections::HashMap;
+    use std::sync::{Arc, OnceLock, RwLock};
+    type Memo = RwLock<HashMap<(i64, i64, i64), Option<Arc<Vec<f64>>>>>;
+    static MEMO: OnceLock<Memo> = OnceLock::new();
+    let memo = MEMO.get_or_init(|| RwLock::new(HashMap::new()));
+    let key = match family {
+        Family::Chebyshev => (-1, -1, k),
+        Family::Jacobi { a, b } => (a, b, k),
+    };
+    if let Some(c) = memo.read().ok().and_then(|m| m.get(&key).cloned()) {
+        return c;
+    }
+    #[allow(clippy::cast_precision_loss, reason = "|c| < 2^53: exact")]
+    let c: Option<Arc<Vec<f64>>> = integer_coefficients(family, k)
+        .and_then(|c| {
+            c.into_iter()
+                .map(|c| {
+                    let c = i64::try_from(c).ok()?;
+                    (c.unsigned_abs() < 1u64 << 53).then_some(c as f64)
+                })
+                .collect::<Option<Vec<f64>>>()
+        })
+        .map(Arc::new);
+    if let Ok(mut m) = memo.write() {
+        m.insert(key, c.clone());
+    }
+    c
+}
+
+/// [`correlation::compensated`] when `B` is double-word (`None` otherwise: the caller runs
+/// the row updates).
+fn compensated_dd<B: Base>(
+    c: &[f64],
+    d: &Row<B>,
+    off: usize,
+    len: usize,
+    cap: usize,
+) -> Option<Row<B>> {
+    use std::any::Any;
+    let d: &dyn Any = d;
+    let row = correlation::compensated(c, d.downcast_ref::<Row<Dd>>()?, off, len, cap)?;
+    let boxed: Box<dyn Any> = Box::new(row);
+    boxed.downcast::<Row<B>>().ok().map(|b| *b)
 }
 
 /// The reciprocal binomials `1 / C(nb, s)`, `s = 0..=nb`, as a row (the Jacobi correlation
@@ -295,19 +358,88 @@ fn back_to_bernstein<B: Base>(
     out
 }
 
+/// The mixed route's back conversion (see [`truncated`]): the rows
+/// `scales_s sum_k conv_ks f_k`, `s = 0..scales.len()`, with the coefficient functionals
+/// `f_k` rounded to `f64` (`|ĝ - f| <= e_f + eps |ĝ|`, as [`Row::to_f64_row`]) and the sums in
+/// `f64`. Each output entry is a recursive sum of `K = M + 1` rounded products
+/// `fl(a_ks ĝ_kc)`, `a_ks = conv_ks scales_s` (tracked: value `â`, bound `ε_a`), so its error
+/// is at most `γ_K sum_k |â| |ĝ| + sum_k (|â| e_ĝ + ε_a (|ĝ| + e_ĝ))` (Higham, *Accuracy and
+/// Stability*, eq. 3.5 for the rounding; `γ_K = K u / (1 - K u) <= K u (1 + 1e-10)` at
+/// `K <= 200`), computed as `sum_k |â| (e_ĝ + γ_K |ĝ|) + ε_a (|ĝ| + e_ĝ)`: three `f64`
+/// operations per term and no per-entry bookkeeping (the bound's own rounding is covered by
+/// the margin of [`Row::rounded`]).
+fn back_to_bernstein_f64<B: Base>(
+    conv: &[Vec<Tracked<f64>>],
+    scales: &[Tracked<f64>],
+    f: &[Row<B>],
+) -> Vec<Row<B>> {
+    let len = f.first().map_or(0, |r| r.v.len());
+    #[allow(clippy::cast_precision_loss, reason = "K <= 200")]
+    let gamma = f.len() as f64 * (f64::EPSILON / 2.0) * (1.0 + 1e-10);
+    // Per functional: the rounded values, `e + γ |ĝ|` and `|ĝ| + e` (one buffer each).
+    let mut gv = Vec::with_capacity(f.len() * len);
+    let mut h1 = Vec::with_capacity(f.len() * len);
+    let mut h2 = Vec::with_capacity(f.len() * len);
+    for row in f {
+        for (x, e) in row.v.iter().zip(&row.e) {
+            let g = x.to_f64();
+            let e = e + f64::EPSILON * (1.0 + 1e-9) * g.abs();
+            gv.push(g);
+            h1.push(e + gamma * g.abs());
+            h2.push(g.abs() + e);
+        }
+    }
+    scales
+        .iter()
+        .enumerate()
+        .map(|(s, sc)| {
+            let mut v = vec![0.0f64; len];
+            let mut e = vec![0.0f64; len];
+            for (k, ck) in conv.iter().enumerate().take(f.len()) {
+                let Some(c) = ck.get(s) else { continue };
+                let a = c.mul(*sc);
+                let (av, am, ae) = (a.value(), a.value().abs(), a.bound());
+                let span = k * len..(k + 1) * len;
+                let (g, x1, x2) = (&gv[span.clone()], &h1[span.clone()], &h2[span]);
+                for ((vc, ec), ((gc, x1c), x2c)) in
+                    v.iter_mut().zip(e.iter_mut()).zip(g.iter().zip(x1).zip(x2))
+                {
+                    *vc += av * gc;
+                    *ec += am * x1c + ae * x2c;
+                }
+            }
+            Row {
+                v: v.into_iter().map(B::of).collect(),
+                e,
+            }
+        })
+        .collect()
+}
+
 /// The coefficient functionals on `P`, `f_k = sum_i phi_ki P^II_i`, with
 /// `P^II_i = C(n, r+1+i) / C(N, i) A_(r+1+i)` and the auxiliary points
 /// `A_j = P_j - sum_l b_lj Q_l` over the fixed end points (see `rows::auxiliary`): expanded as
 /// `w_k = phi_k C(n, r+1+i) / C(N, i)` on `P_(r+1+i)` minus one scalar `w_k . b_l` per end
-/// point, `O(N (r + p + 2))` per functional instead of a dense product.
+/// point, `O(N (r + p + 2))` per functional instead of a dense product. `phi[t]` is the
+/// functional of degree `k = first + t` (its parity gives the mirror sign below).
+///
+/// The scalars run over the band of Lemma 14.5.1 only (`b_lj = 0` unless
+/// `l <= j <= l + n - m`). For a symmetric problem (`r = p`, a symmetric weight: `phi_k(N-i) =
+/// (-1)^k phi_k(i)` exactly, `C(n, r+1+i) / C(N, i)` symmetric, and `b_(m-l, j) = b_(l, n-j)`)
+/// the right end point `m - l`'s scalar is exactly `(-1)^k` times the left end point `l`'s,
+/// so the computed left scalar with its proven bound serves for both (the identity holds for
+/// the exact values, whatever the rounding of the computed rows).
+#[allow(clippy::too_many_arguments, reason = "the truncation's own parameters")]
 fn on_points<B: Base>(
     phi: Vec<Row<B>>,
+    first: i64,
     n: usize,
     m: usize,
     r: i32,
     p: i32,
     left: &[Row<B>],
     right: &[Row<B>],
+    symmetric_weight: bool,
 ) -> Vec<Row<B>> {
     let (ni, mi, ri, pi) = (to_i(n), to_i(m), i64::from(r), i64::from(p));
     if ri == -1 && pi == -1 {
@@ -328,22 +460,45 @@ fn on_points<B: Base>(
                 .map(|(l, q)| (mi - pi + to_i(l), q)),
         )
         .collect();
-    let betas: Vec<Vec<Tracked<B>>> = ends
+    // Per end point: the band `lo..=hi` of `i` where `b_(l, r+1+i) != 0`, and those `b`.
+    let bands: Vec<(usize, Vec<Tracked<B>>)> = ends
         .iter()
-        .map(|(l, _)| (0..=nn).map(|i| b::<B>(mi, ni, *l, ri + 1 + i)).collect())
+        .map(|(l, _)| {
+            let lo = (l - ri - 1).max(0);
+            let hi = (l - ri - 1 + ni - mi).min(nn);
+            let beta = (lo..=hi).map(|i| b::<B>(mi, ni, *l, ri + 1 + i)).collect();
+            (idx(lo.min(nn + 1)), beta)
+        })
         .collect();
     // An end point `Q_l` depends on `P_0..=P_l` (left) or `P_(n-p+l)..` (right) only: its
     // row is zero (value and error) outside its support, so the updates run there (the
     // interior entries `r+1..=n-p-1` are disjoint from both ends' supports).
     let supports: Vec<(usize, usize)> = ends.iter().map(|(_, q)| support(q)).collect();
+    let mirrored = symmetric_weight && ri == pi;
+    let n_left = left.len();
+    let (lo_w, hi_w) = (idx(ri + 1), idx(ni - pi - 1));
     phi.iter()
-        .map(|ph| {
-            let w = scale_cols(ph, &sc);
+        .zip(first..)
+        .map(|(ph, k)| {
             let mut row = Row::zeros(n + 1);
-            row.v[idx(ri + 1)..=idx(ni - pi - 1)].copy_from_slice(&w.v);
-            row.e[idx(ri + 1)..=idx(ni - pi - 1)].copy_from_slice(&w.e);
-            for (((_, q), beta), &(lo, hi)) in ends.iter().zip(&betas).zip(&supports) {
-                axpy_range(&mut row, dot(&w, beta).neg(), q, lo, hi);
+            row.v[lo_w..=hi_w].copy_from_slice(&ph.v);
+            row.e[lo_w..=hi_w].copy_from_slice(&ph.e);
+            for (i, s) in sc.iter().enumerate() {
+                scale_entry(&mut row, lo_w + i, *s);
+            }
+            let mut scalars: Vec<Tracked<B>> = Vec::with_capacity(ends.len());
+            for (t, (lo, beta)) in bands.iter().enumerate() {
+                let x = if mirrored && t >= n_left {
+                    // Right end point `m - p + (t - n_left)` mirrors left `p - (t - n_left)`.
+                    let y = scalars[idx(pi) - (t - n_left)];
+                    if k % 2 == 0 { y } else { y.neg() }
+                } else {
+                    dot_window(&row, lo_w + lo, beta)
+                };
+                scalars.push(x);
+            }
+            for ((x, (_, q)), &(lo, hi)) in scalars.iter().zip(&ends).zip(&supports) {
+                axpy_range(&mut row, x.neg(), q, lo, hi);
             }
             row
         })
@@ -373,21 +528,23 @@ fn high_terms<B: Base>(
     if !matches!(family, Family::Chebyshev) {
         return on_points(
             functionals::<B>(family, nn, mm + 1, nn),
+            mm + 1,
             n,
             m,
             r,
             p,
             left,
             right,
+            symmetric_weight(family),
         );
     }
     // The double-word route (every pair up to degree 30 that is not `f64`) tries `f64`
     // first; the 256-bit route, a last resort, keeps its terms at its own rounding level.
-    if std::any::TypeId::of::<B>() == std::any::TypeId::of::<super::dd::Dd>() {
+    if std::any::TypeId::of::<B>() == std::any::TypeId::of::<Dd>() {
         if let Some(phi) = quadrature::chebyshev::<f64>(nn, mm + 1, nn) {
             let l64: Vec<Row<f64>> = left.iter().map(Row::to_f64_row).collect();
             let r64: Vec<Row<f64>> = right.iter().map(Row::to_f64_row).collect();
-            let g = on_points(phi, n, m, r, p, &l64, &r64);
+            let g = on_points(phi, mm + 1, n, m, r, p, &l64, &r64, true);
             let (mut te, mut ts) = (0.0, 0.0);
             for row in &g {
                 let (v, e) = row.rounded();
@@ -401,7 +558,7 @@ fn high_terms<B: Base>(
     }
     let phi = quadrature::chebyshev::<B>(nn, mm + 1, nn)
         .unwrap_or_else(|| functionals::<B>(family, nn, mm + 1, nn));
-    on_points(phi, n, m, r, p, left, right)
+    on_points(phi, mm + 1, n, m, r, p, left, right, true)
 }
 
 /// A truncation by one degree (`N = M + 1`) from the top (beyond the seed): the highest
@@ -561,13 +718,12 @@ pub(crate) fn truncated<B: Base>(
             let phi = functionals::<B>(family, nn, 0, mm);
             // Coefficient functionals on P: f_k = sum_i phi_ki P^II_i (P^II = P when
             // r = p = -1).
-            let f = on_points(phi, n, m, r, p, &left, &right);
+            let f = on_points(phi, 0, n, m, r, p, &left, &right, symmetric_weight(family));
             let u = if mixed {
-                let g: Vec<Row<f64>> = f[..=idx(mm)].iter().map(Row::to_f64_row).collect();
-                back_to_bernstein::<f64>(&conversion_f64(family, mm), mm, last_i - ri - 1, &g)
-                    .iter()
-                    .map(Row::from_f64_row)
-                    .collect()
+                let scales: Vec<Tracked<f64>> = ((ri + 1)..=last_i)
+                    .map(|i| Tracked::binom(mm, i - ri - 1).div(Tracked::binom(mi, i)))
+                    .collect();
+                back_to_bernstein_f64(&conversion_f64(family, mm), &scales, &f[..=idx(mm)])
             } else {
                 let coefs = conversion::<B>(family, mm, last_i - ri - 1);
                 back_to_bernstein(&coefs, mm, last_i - ri - 1, &f[..=idx(mm)])
@@ -578,17 +734,21 @@ pub(crate) fn truncated<B: Base>(
             };
             (u, high)
         };
-        // Q_i = U_{i-r-1} C(M, i-r-1) / C(m, i)   (14.5.16)
+        // Q_i = U_{i-r-1} C(M, i-r-1) / C(m, i)   (14.5.16; the mixed route's rows come
+        // scaled)
+        let mut u = u.into_iter();
         for i in (ri + 1)..=(mi - pi - 1) {
             if i > last_i {
                 rows.push(rows[idx(mi - i)].reversed());
                 continue;
             }
             let s = i - ri - 1;
-            rows.push(scale(
-                &u[idx(s)],
-                Tracked::binom(mm, s).div(Tracked::binom(mi, i)),
-            ));
+            let ui = u.next().unwrap_or_else(|| Row::zeros(n + 1));
+            rows.push(if mixed && nn != mm + 1 {
+                ui
+            } else {
+                scale(&ui, Tracked::binom(mm, s).div(Tracked::binom(mi, i)))
+            });
         }
         if let Some(coef) = factor {
             terms.extend(high.into_iter().map(|g| (coef, g)));
