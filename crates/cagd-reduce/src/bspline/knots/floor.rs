@@ -38,8 +38,8 @@ impl Raw {
         let work = |i: usize, out: &mut [f64]| match &self.weights {
             None => out.copy_from_slice(&self.points[i * d..(i + 1) * d]),
             Some(w) => {
-                for c in 0..d {
-                    out[c] = w[i] * self.points[i * d + c];
+                for (o, x) in out.iter_mut().zip(&self.points[i * d..(i + 1) * d]) {
+                    *o = w[i] * x;
                 }
                 out[d] = w[i];
             }
