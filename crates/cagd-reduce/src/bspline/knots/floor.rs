@@ -3,17 +3,18 @@
 //! tries after its last round mostly fail, and each built a window curve, removed, rebuilt
 //! and re-inserted: 11 % of a degree 4–15 NURBS's reduction to cubics at 1e-3).
 //!
-//! [`BSplineCurve::remove_knot`] (cagd-core `bspline/removal`) removes one copy of the knot
-//! `t` (last index `r`, multiplicity `s`) by solving the knot-insertion equations `P_i = a_i
-//! Q_i + (1 - a_i) Q_{i-1}`, `i = r-p..=r-s`, from both ends, all but equation `k` (where
-//! `a_i` crosses 1/2), and reports `max_i ||P_i - P'_i||` over the new points re-inserted
-//! (for NURBS the centred model-space form `(max ||dA_i - c dW_i|| + R max |dW_i|) / min
-//! w'`). Every equation but `k` holds by construction, so the term of `i = k` is the
-//! report up to rounding; it needs only the points `Q_{k-1}` and `Q_k` of the two sweeps,
-//! computed here by the same operations in the same order (so bitwise the same values),
-//! with the centre, radius and smallest new weight of the removal's own window. The term
-//! is at most the report (the report is a maximum over terms that include it), so a
-//! removal whose term exceeds the room left cannot succeed and is skipped.
+//! [`cagd_core::BSplineCurve::remove_knot`] (cagd-core `bspline/removal`) removes one copy
+//! of the knot `t` (last index `r`, multiplicity `s`) by solving the knot-insertion
+//! equations `P_i = a_i Q_i + (1 - a_i) Q_{i-1}`, `i = r-p..=r-s`, from both ends, all but
+//! equation `k` (where `a_i` crosses 1/2), and reports `max_i ||P_i - P'_i||` over the
+//! new points re-inserted (for NURBS the centred model-space form of that change, `(max
+//! ||dA_i - c dW_i|| + R max |dW_i|) / min w'`). Every equation but `k` holds by
+//! construction, so the term of `i = k` is the report up to rounding; it needs only the
+//! points `Q_{k-1}` and `Q_k` of the two sweeps, computed here by the same operations in
+//! the same order (so bitwise the same values), with the centre, radius and smallest new
+//! weight of the removal's own window. The term is at most the report (the report is a
+//! maximum over terms that include it), so a removal whose term exceeds the room left
+//! cannot succeed and is skipped.
 
 use cagd_core::{ModelFrame, centred_rational_bound};
 
