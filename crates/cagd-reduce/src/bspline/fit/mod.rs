@@ -28,6 +28,7 @@ use cagd_core::{BSplineCurve, Result};
 
 mod banded_lsq;
 mod node_bound;
+mod numerator_bound;
 mod predict;
 mod span_rows;
 mod spans;
@@ -271,7 +272,8 @@ pub(crate) fn span_bounds(
 /// while the largest node value is not, also by the refined convex hull of the difference
 /// with `S` elevated to degree `p` ([`crate::bezier::hull_bound`]), the smaller of the two;
 /// the largest over the blocks. For NURBS by [`rational_bound`] (centred, in model space, node bounds with
-/// the hulls above `sharpen`: `rational_span.rs`).
+/// the hulls above `sharpen`: `rational_span.rs`; a single curve by its numerator,
+/// `numerator_bound.rs`).
 /// A span on which a control weight of `S` is not positive gets an infinite bound.
 /// `attained` receives per span a value the error attains up to rounding (the largest
 /// node value; the bound itself where a span has no node bound): no sharper bound of the
@@ -306,6 +308,7 @@ pub(crate) fn span_bounds_restricted(
     let (mut qb, mut pb) = (vec![0.0; (m + 1) * blk], vec![0.0; (p + 1) * blk]);
     let nodes = NodeBound::cached(p, m);
     let mut vals = Vec::new();
+    let mut scratch3 = [Vec::new(), Vec::new(), Vec::new()];
     for s in m..n {
         let (a, b) = (knots[s], knots[s + 1]);
         if a >= b {
@@ -342,8 +345,7 @@ pub(crate) fn span_bounds_restricted(
                 tgt: &tgt,
                 fit: span_points,
             };
-            let (bound, floor) = rational_bound(&span, &nodes, (d, blk, p), vmin, sharpen);
-            (bound, floor, bound)
+            rational_bound(&span, (d, blk, p), vmin, sharpen, &mut scratch3)
         } else {
             let (mut eps, mut floor, mut seen): (f64, f64, f64) = (0.0, 0.0, 0.0);
             let span_points = &points[(s - m) * d..(s + 1) * d];
@@ -373,10 +375,11 @@ pub(crate) fn span_bounds_restricted(
 }
 
 /// The refined-hull bound ([`crate::bezier::hull_bound`]) of `max ||C - S||` on the span
-/// `[a, b]` of the polynomial fit `(knots, points)` of degree `m` (`a` a knot; the largest
-/// over the blocks): the sharper bound a knot removal asks for where the node bound of
-/// [`span_bounds_restricted`] leaves it no room. `+inf` for rational input (its bound has no node
-/// route to sharpen).
+/// `[a, b]` of the fit `(knots, points)` of degree `m` (`a` a knot; the largest over the
+/// blocks): the sharper bound a knot removal asks for where the node bound of
+/// [`span_bounds_restricted`] leaves it no room. For a single NURBS the smaller of the
+/// numerator's node bound and its refined hull (`rational_span.rs`); `+inf` for a rational
+/// bundle (its bound has no node route to sharpen).
 pub(crate) fn hull_span_bound(
     src: &Source,
     m: usize,
@@ -384,7 +387,7 @@ pub(crate) fn hull_span_bound(
     (a, b): (f64, f64),
 ) -> f64 {
     let (p, d, blk) = (src.degree, src.pdim, src.block);
-    if src.rational {
+    if src.rational && d != blk {
         return f64::INFINITY;
     }
     let s = knots.partition_point(|x| *x <= a) - 1;
@@ -392,7 +395,23 @@ pub(crate) fn hull_span_bound(
     span_bezier((knots, points, d, m), s, &mut tgt, &mut work);
     let mut sub = Vec::with_capacity((p + 1) * d);
     let mut tmp = [Vec::new(), Vec::new(), Vec::new()];
-    src.restrict_into(src.piece_of(a, b), (a, b), &mut sub, &mut tmp);
+    let k = src.piece_of(a, b);
+    src.restrict_into(k, (a, b), &mut sub, &mut tmp);
+    if src.rational {
+        let fit = &points[(s - m) * d..(s + 1) * d];
+        let vmin = fit
+            .chunks_exact(blk)
+            .map(|q| q[blk - 1])
+            .fold(f64::INFINITY, f64::min);
+        let span = RationalSpan {
+            sub: &sub,
+            piece: src.piece(k),
+            tgt: &tgt,
+            fit,
+        };
+        let mut scratch = [Vec::new(), Vec::new(), Vec::new()];
+        return rational_bound(&span, (d, blk, p), vmin, 0.0, &mut scratch).0;
+    }
     let (mut sb, mut tb) = (vec![0.0; (p + 1) * blk], vec![0.0; (m + 1) * blk]);
     let mut worst: f64 = 0.0;
     for j in 0..d / blk {

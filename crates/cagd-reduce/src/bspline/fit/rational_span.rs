@@ -8,18 +8,20 @@
 //! min w - h_W)` ([`cagd_core::centred_rational_bound`]). Centring makes the bound
 //! independent of where the model sits.
 //!
-//! For a single curve, `h_A` and `h_W` are node bounds ([`NodeBound`]: the polynomial
-//! differences at Chebyshev–Lobatto nodes times the Ehlich–Zeller factor, at most 1.075
-//! times their maxima, rounding included), and where the resulting bound is above the
-//! budget also refined convex hulls ([`crate::bezier::hull_bound`]), the smaller of the
-//! two — the polynomial spans' rule, so an offending span's split count still follows the
-//! hull. A bundle (a surface's rows) takes the refined hulls alone, as before.
-//! ADDED (issue 17, real-CAD-file row): the hull alone, an elevation and several
-//! subdivisions per span, was 35 % of the reduction of degree 4–15 NURBS to cubics.
+//! That is the bound of a bundle (a surface's rows), with `h_A`, `h_W` refined convex
+//! hulls ([`crate::bezier::hull_bound`]). A single curve takes the numerator route
+//! instead ([`NumeratorNodes`], `numerator_bound.rs`: `max ||A_c W' - A'_c W|| / min (W
+//! W')`, node values of the degree-`p + m` numerator times the Ehlich–Zeller factor,
+//! rounding included), which keeps the cancellation of the homogeneous errors that the
+//! two separate terms lose (up to 2.2 times the measured error at 1e-3 on the
+//! `cad_curves` NURBS), and where that bound is above the budget also the refined hull of
+//! the numerator, the smaller of the two — the polynomial spans' rule, so an offending
+//! span's split count follows the hull.
+//! ADDED (issue 17, real-CAD-file row).
 
 use cagd_core::{ModelFrame, centred_rational_bound};
 
-use super::node_bound::NodeBound;
+use super::numerator_bound::{CentredSpan, NumeratorNodes};
 use crate::bezier::{hull_bound, max_norm};
 
 /// The data of one span: `sub` the input's Bézier points on the span (`p + 1` points of
@@ -33,18 +35,23 @@ pub(super) struct RationalSpan<'a> {
     pub(super) fit: &'a [f64],
 }
 
-/// `(bound, floor)` of `max ||C - S||` (model space) on one span of a rational bundle (the
-/// module docs): `(d, blk, p)` the point layout and the input degree, `vmin` the smallest
-/// control weight of the fit on the span, `sharpen` the value above which the refined hulls
-/// are computed as well. The floor is the rounding part no fit can get below.
+/// `(bound, floor, attained)` of `max ||C - S||` (model space) on one span of a rational
+/// bundle (the module docs): `(d, blk, p)` the point layout and the input degree, `vmin`
+/// the smallest control weight of the fit on the span, `sharpen` the value above which the
+/// refined hulls are computed as well. The floor is the rounding part no fit can get below;
+/// `attained` a value the error attains up to rounding (the bound itself for a bundle).
+/// `scratch` is reused between spans.
 pub(super) fn rational_bound(
     span: &RationalSpan<'_>,
-    nodes: &NodeBound,
     (d, blk, p): (usize, usize, usize),
     vmin: f64,
     sharpen: f64,
-) -> (f64, f64) {
+    scratch: &mut [Vec<f64>; 3],
+) -> (f64, f64, f64) {
     let dim = blk - 1;
+    if d == blk {
+        return single_bound(span, (dim, p), vmin, sharpen, scratch);
+    }
     let eps = f64::EPSILON;
     let mut model = Vec::with_capacity(span.sub.len() / blk * dim);
     let mut wmin = f64::INFINITY;
@@ -65,40 +72,19 @@ pub(super) fn rational_bound(
             w.push(b[dim]);
         }
     };
-    // The sizes of the node bound's rounding model: the points the centred values come
-    // from, `||A_i|| + ||c|| |W_i|` (the restriction's and the extraction's rounding of
-    // `A` and `W` reach `A_c` through `c W`), and the weights.
-    let sizes = |from: &[f64], j: usize| {
-        from.chunks_exact(d).fold((0.0f64, 0.0f64), |(a, w), q| {
-            let b = &q[j * blk..(j + 1) * blk];
-            let wa = b[dim].abs();
-            let norm = b[..dim].iter().map(|x| x * x).sum::<f64>().sqrt();
-            (a.max(norm + cnorm * wa), w.max(wa))
-        })
-    };
+    let blocks = d / blk;
     let (n_sub, n_tgt) = (span.sub.len() / d, span.tgt.len() / d);
     let (mut sa, mut sw) = (Vec::with_capacity(n_sub * dim), Vec::with_capacity(n_sub));
     let (mut ta, mut tw) = (Vec::with_capacity(n_tgt * dim), Vec::with_capacity(n_tgt));
-    let mut vals = Vec::new();
-    let blocks = d / blk;
-    // Node bounds for a single curve only: their rounding model charges the restriction of
-    // the uncentred homogeneous points, which grows with the distance from the origin, so
-    // the curve fit runs in its frame (`crate::bspline::reduce`); a bundle (the rows of a
-    // surface fit, not framed) keeps the refined hulls on the computed points.
-    let single = blocks == 1;
+    // A bundle (the rows of a surface fit, not framed) keeps the refined hulls on the
+    // computed points.
     let (mut node_a, mut node_w) = (vec![0.0; blocks], vec![0.0; blocks]);
     let mut size: f64 = 0.0;
     for j in 0..blocks {
         split(span.sub, j, &mut sa, &mut sw);
         split(span.tgt, j, &mut ta, &mut tw);
-        let ((pa, pw), (qa, qw)) = (sizes(span.piece, j), sizes(span.fit, j));
-        if single {
-            node_a[j] = nodes.bound(&sa, &ta, dim, (pa, qa), &mut vals).1;
-            node_w[j] = nodes.bound(&sw, &tw, 1, (pw, qw), &mut vals).1;
-        } else {
-            node_a[j] = hull_bound(&sa, &ta, dim);
-            node_w[j] = hull_bound(&sw, &tw, 1);
-        }
+        node_a[j] = hull_bound(&sa, &ta, dim);
+        node_w[j] = hull_bound(&sw, &tw, 1);
         let wmax = sw.iter().chain(&tw).fold(0.0f64, |m, x| m.max(x.abs()));
         let amax = max_norm(&sa, dim).max(max_norm(&ta, dim));
         size = size.max(amax + cnorm * wmax);
@@ -107,24 +93,79 @@ pub(super) fn rational_bound(
     let shift = 4.0 * eps * size;
     let floor = 2.0 * (p as f64 + 3.0) * eps * size / wmin;
     if vmin <= 0.0 {
-        return (f64::INFINITY, floor);
+        return (f64::INFINITY, floor, f64::INFINITY);
     }
     let combine = |ha: &[f64], hw: &[f64]| {
         let fold = |x: &[f64]| x.iter().copied().fold(0.0f64, f64::max);
         centred_rational_bound(fold(ha) + shift, fold(hw), radius, wmin, vmin)
     };
     let bound = combine(&node_a, &node_w);
-    if bound <= sharpen || !single {
-        return (bound, floor);
+    (bound, floor, bound)
+}
+
+/// [`rational_bound`] for a single curve: the numerator route ([`NumeratorNodes`]), and
+/// where its bound is above `sharpen` also the refined hull of the numerator, the smaller
+/// of the two.
+fn single_bound(
+    span: &RationalSpan<'_>,
+    (dim, p): (usize, usize),
+    vmin: f64,
+    sharpen: f64,
+    [sub, tgt, vals]: &mut [Vec<f64>; 3],
+) -> (f64, f64, f64) {
+    let blk = dim + 1;
+    // Any centre gives the same numerator (module docs of `numerator_bound.rs`); the
+    // input's first model point keeps the centred values, and so their rounding, small.
+    let first = &span.sub[..blk];
+    let (mut small, mut heap) = ([0.0f64; 8], Vec::new());
+    let centre: &mut [f64] = if dim <= small.len() {
+        &mut small[..dim]
+    } else {
+        heap.resize(dim, 0.0);
+        &mut heap
+    };
+    for (c, x) in centre.iter_mut().zip(&first[..dim]) {
+        *c = x / first[dim];
     }
-    // Over the budget: per block the smaller of the node bound and the refined hull.
-    for j in 0..blocks {
-        split(span.sub, j, &mut sa, &mut sw);
-        split(span.tgt, j, &mut ta, &mut tw);
-        node_a[j] = node_a[j].min(hull_bound(&sa, &ta, dim));
-        node_w[j] = node_w[j].min(hull_bound(&sw, &tw, 1));
+    let centre: &[f64] = centre;
+    let cnorm = centre.iter().map(|x| x * x).sum::<f64>().sqrt();
+    let wmin = span
+        .sub
+        .chunks_exact(blk)
+        .map(|q| q[dim])
+        .fold(f64::INFINITY, f64::min);
+    let centred = |from: &[f64], out: &mut Vec<f64>| {
+        out.clear();
+        for b in from.chunks_exact(blk) {
+            out.extend((0..dim).map(|c| b[c] - centre[c] * b[dim]));
+            out.push(b[dim]);
+        }
+    };
+    // `max ||A_i|| + ||c|| |W_i|` and `max |W_i|`: the sizes the rounding is measured in.
+    let sizes = |from: &[f64]| {
+        from.chunks_exact(blk).fold((0.0f64, 0.0f64), |(a, w), b| {
+            let wa = b[dim].abs();
+            let norm = b[..dim].iter().map(|x| x * x).sum::<f64>().sqrt();
+            (a.max(norm + cnorm * wa), w.max(wa))
+        })
+    };
+    centred(span.sub, sub);
+    centred(span.tgt, tgt);
+    let m = span.tgt.len() / blk - 1;
+    let nodes = NumeratorNodes::cached(p, m);
+    let data = CentredSpan {
+        sub,
+        tgt,
+        piece: sizes(span.piece),
+        fit: sizes(span.fit),
+        vmin,
+    };
+    let (seen, low, mut bound) = nodes.bound(&data, vals);
+    let floor = 2.0 * (p as f64 + 3.0) * f64::EPSILON * data.piece.0 / wmin;
+    if bound > sharpen {
+        bound = bound.min(nodes.hull(&data, low, vals));
     }
-    (bound.min(combine(&node_a, &node_w)), floor)
+    (bound, floor, seen.min(bound))
 }
 
 #[cfg(test)]

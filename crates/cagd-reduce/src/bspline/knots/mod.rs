@@ -9,6 +9,8 @@ use cagd_core::{BSplineCurve, BezierCurve, Error, Result, knot_multiplicity};
 use super::measure::euclidean_from_homogeneous;
 use crate::bezier::max_norm;
 
+mod floor;
+
 /// Passes of the greedy knot removal (a later pass rarely removes more than a few knots).
 const MAX_PASSES: usize = 3;
 
@@ -98,6 +100,10 @@ impl LocalBounds {
             return Ok(false);
         }
         let (lo, hi) = (r.saturating_sub(2 * m + 1), (r + m + 2 - s).min(n));
+        if c.removal_floor(r, s, (lo, hi)) > avail {
+            // The removal's own bound is at least this (`floor.rs`): it cannot succeed.
+            return Ok(false);
+        }
         let window = c.window(lo, hi)?;
         let out = match c.bundle {
             None => window.remove_knot(v, 1, avail)?,
