@@ -29,14 +29,80 @@ use cagd_core::binomial_f64;
 pub(crate) const RATIO: f64 = 1.075;
 
 /// Nodes evaluated together (one register block of accumulators per coordinate).
-const LANES: usize = 4;
+pub(super) const LANES: usize = 4;
 
 /// Most coordinates of the blocked evaluation (more take the axpy route).
-const BLOCK_DIM: usize = 4;
+pub(super) const BLOCK_DIM: usize = 4;
 
 /// Angle margin added to `pi / (2N)` for the rounding of the `f64` nodes (`|theta^_j -
 /// theta_j|` is a few ulps of `theta_j`, far below it).
 const NODE_ANGLE_MARGIN: f64 = 1e-9;
+
+/// The Chebyshev–Lobatto nodes `t_j = sin^2(j pi / (2N))`, `j = 0..=N`, of a polynomial of
+/// degree `deg`: the fewest (at least `deg + 1`) for which the Ehlich–Zeller factor
+/// `sec(deg (pi / (2N) + margin))` is at most [`RATIO`]; shared by this bound and the
+/// rational span's numerator bound (`numerator_bound.rs`).
+pub(super) struct NodeGrid {
+    /// `N`.
+    big_n: usize,
+    /// `N + 1` rounded up to a multiple of [`LANES`] (the padding columns are zero).
+    pub(super) nodes: usize,
+    /// `sec(deg (pi / (2N) + margin))`, rounded up.
+    pub(super) sec: f64,
+}
+
+impl NodeGrid {
+    /// The nodes for degree `deg >= 1`.
+    pub(super) fn for_degree(deg: usize) -> Self {
+        let df = deg as f64;
+        let half = (1.0 / RATIO).acos() / df - NODE_ANGLE_MARGIN;
+        #[allow(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "deg <= 128 and RATIO = 1.075 give N < 600"
+        )]
+        let big_n = ((std::f64::consts::FRAC_PI_2 / half).ceil() as usize).max(deg + 1);
+        let angle = df * (std::f64::consts::PI / (2.0 * big_n as f64) + NODE_ANGLE_MARGIN);
+        let sec = (1.0 / angle.cos()) * (1.0 + 8.0 * f64::EPSILON);
+        let nodes = (big_n + 1).div_ceil(LANES) * LANES;
+        Self { big_n, nodes, sec }
+    }
+
+    /// The Bernstein matrix of degree `n` at the nodes: `(n + 1) x nodes`, row `i` the
+    /// values `B^n_i(t_j)` ([`push_bernstein`]), zero in the padding columns.
+    pub(super) fn bernstein(&self, n: usize) -> Vec<f64> {
+        let mut b = vec![0.0; (n + 1) * self.nodes];
+        let mut row = Vec::with_capacity(n + 1);
+        for j in 0..=self.big_n {
+            row.clear();
+            push_bernstein(n, lobatto_node(j, self.big_n), &mut row);
+            for (i, v) in row.iter().enumerate() {
+                b[i * self.nodes + j] = *v;
+            }
+        }
+        b
+    }
+}
+
+/// The value in this thread's one-entry cache `cell` when `hit` accepts it, else `build`'s,
+/// which then replaces it (a fit asks for the same degrees every span and round).
+pub(super) fn cached<T>(
+    cell: &'static std::thread::LocalKey<RefCell<Option<Rc<T>>>>,
+    hit: impl Fn(&T) -> bool,
+    build: impl FnOnce() -> T,
+) -> Rc<T> {
+    cell.with(|c| {
+        let mut c = c.borrow_mut();
+        match c.as_ref() {
+            Some(v) if hit(v) => Rc::clone(v),
+            _ => {
+                let v = Rc::new(build());
+                *c = Some(Rc::clone(&v));
+                v
+            }
+        }
+    })
+}
 
 /// The Bernstein matrices of degrees `p` and `m` at the nodes and the bound's constants.
 #[derive(Debug, Clone)]
@@ -63,56 +129,20 @@ thread_local! {
 impl NodeBound {
     /// The nodes for `(p, m)`, from this thread's one-entry cache or built.
     pub(crate) fn cached(p: usize, m: usize) -> Rc<Self> {
-        LAST.with(|c| {
-            let mut c = c.borrow_mut();
-            match c.as_ref() {
-                Some(nb) if nb.p == p && nb.m == m => Rc::clone(nb),
-                _ => {
-                    let nb = Rc::new(Self::new(p, m));
-                    *c = Some(Rc::clone(&nb));
-                    nb
-                }
-            }
-        })
+        cached(&LAST, |nb| nb.p == p && nb.m == m, || Self::new(p, m))
     }
 
     /// The nodes for a degree-`p` error curve of a degree-`m` fit (`m < p`), with secant
     /// factor at most [`RATIO`].
     pub(crate) fn new(p: usize, m: usize) -> Self {
-        let pf = p as f64;
-        let half = (1.0 / RATIO).acos() / pf - NODE_ANGLE_MARGIN;
-        #[allow(
-            clippy::cast_possible_truncation,
-            clippy::cast_sign_loss,
-            reason = "p <= 64 and RATIO = 1.075 give N < 300"
-        )]
-        let big_n = ((std::f64::consts::FRAC_PI_2 / half).ceil() as usize).max(p + 1);
-        let angle = pf * (std::f64::consts::PI / (2.0 * big_n as f64) + NODE_ANGLE_MARGIN);
-        let sec = (1.0 / angle.cos()) * (1.0 + 8.0 * f64::EPSILON);
-        // Padded to whole blocks of LANES with zero columns (zero node values).
-        let nodes = (big_n + 1).div_ceil(LANES) * LANES;
-        let (mut bp, mut bm) = (vec![0.0; (p + 1) * nodes], vec![0.0; (m + 1) * nodes]);
-        let (mut rp, mut rm) = (Vec::with_capacity(p + 1), Vec::with_capacity(m + 1));
-        for j in 0..=big_n {
-            let t = lobatto_node(j, big_n);
-            rp.clear();
-            rm.clear();
-            push_bernstein(p, t, &mut rp);
-            push_bernstein(m, t, &mut rm);
-            for (i, v) in rp.iter().enumerate() {
-                bp[i * nodes + j] = *v;
-            }
-            for (i, v) in rm.iter().enumerate() {
-                bm[i * nodes + j] = *v;
-            }
-        }
+        let grid = NodeGrid::for_degree(p);
         Self {
             p,
             m,
-            nodes,
-            bp,
-            bm,
-            sec,
+            nodes: grid.nodes,
+            bp: grid.bernstein(p),
+            bm: grid.bernstein(m),
+            sec: grid.sec,
         }
     }
 

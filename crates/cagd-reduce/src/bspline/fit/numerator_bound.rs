@@ -27,19 +27,9 @@
 use std::cell::RefCell;
 use std::rc::Rc;
 
-use super::node_bound::{RATIO, push_bernstein};
-use crate::bezier::{hull_bound, lobatto_node};
+use super::node_bound::{BLOCK_DIM, LANES, NodeGrid, cached};
+use crate::bezier::hull_bound;
 use cagd_core::binomial_f64;
-
-/// Angle margin added to `pi / (2N)` for the rounding of the `f64` nodes (as in
-/// [`super::node_bound`]).
-const NODE_ANGLE_MARGIN: f64 = 1e-9;
-
-/// Nodes evaluated together (one register block of accumulators per coordinate).
-const LANES: usize = 4;
-
-/// Most coordinates of the blocked evaluation (more take the axpy route).
-const BLOCK_DIM: usize = 4;
 
 /// The Bernstein matrix of degree `p + m` at its nodes, the product's coefficient table
 /// and the secant factor.
@@ -86,43 +76,14 @@ pub(crate) struct CentredSpan<'a> {
 impl NumeratorNodes {
     /// The nodes for `(p, m)`, from this thread's one-entry cache or built.
     pub(crate) fn cached(p: usize, m: usize) -> Rc<Self> {
-        LAST.with(|c| {
-            let mut c = c.borrow_mut();
-            match c.as_ref() {
-                Some(nb) if nb.p == p && nb.m == m => Rc::clone(nb),
-                _ => {
-                    let nb = Rc::new(Self::new(p, m));
-                    *c = Some(Rc::clone(&nb));
-                    nb
-                }
-            }
-        })
+        cached(&LAST, |nb| nb.p == p && nb.m == m, || Self::new(p, m))
     }
 
     /// The nodes for the degree-`(p + m)` numerator of a degree-`p` input's span and its
-    /// degree-`m` fit, with secant factor at most [`RATIO`].
+    /// degree-`m` fit, with secant factor at most [`super::node_bound::RATIO`].
     pub(crate) fn new(p: usize, m: usize) -> Self {
         let deg = p + m;
-        let df = deg as f64;
-        let half = (1.0 / RATIO).acos() / df - NODE_ANGLE_MARGIN;
-        #[allow(
-            clippy::cast_possible_truncation,
-            clippy::cast_sign_loss,
-            reason = "p + m <= 128 and RATIO = 1.075 give N < 600"
-        )]
-        let big_n = ((std::f64::consts::FRAC_PI_2 / half).ceil() as usize).max(deg + 1);
-        let angle = df * (std::f64::consts::PI / (2.0 * big_n as f64) + NODE_ANGLE_MARGIN);
-        let sec = (1.0 / angle.cos()) * (1.0 + 8.0 * f64::EPSILON);
-        let nodes = (big_n + 1).div_ceil(LANES) * LANES;
-        let mut bn = vec![0.0; (deg + 1) * nodes];
-        let mut row = Vec::with_capacity(deg + 1);
-        for j in 0..=big_n {
-            row.clear();
-            push_bernstein(deg, lobatto_node(j, big_n), &mut row);
-            for (k, v) in row.iter().enumerate() {
-                bn[k * nodes + j] = *v;
-            }
-        }
+        let grid = NodeGrid::for_degree(deg);
         let mut prod = vec![0.0; (p + 1) * (m + 1)];
         for i in 0..=p {
             for j in 0..=m {
@@ -133,10 +94,10 @@ impl NumeratorNodes {
         Self {
             p,
             m,
-            nodes,
-            bn,
+            nodes: grid.nodes,
+            bn: grid.bernstein(deg),
             prod,
-            sec,
+            sec: grid.sec,
         }
     }
 
@@ -345,6 +306,7 @@ impl NumeratorNodes {
 
 #[cfg(test)]
 mod tests {
+    use super::super::node_bound::RATIO;
     use super::super::{Source, fit, span_bounds};
     use super::*;
     use cagd_core::BSplineCurve;
@@ -393,7 +355,7 @@ mod tests {
     /// 1e4 inside a piece, near pairs as a fit leaves them, 2-D and 3-D, sizes 1e-3 to
     /// 1e3): the bound is never below the densely measured error, the node value never
     /// above it (it is one), the hull never below it either, and the bound within the node
-    /// factor [`RATIO`] times the weights' variation on the piece (`max w max w' / (min w
+    /// factor [`super::node_bound::RATIO`] times the weights' variation on the piece (`max w max w' / (min w
     /// min w')`) of the measured error.
     #[test]
     fn the_numerator_bound_covers_the_measured_error() {
