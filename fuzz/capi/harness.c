@@ -356,6 +356,15 @@ const double *fz_knots(size_t n_knots, size_t degree) {
     if (!impossible) {
         if (fz_r(4) == 0 || degree >= n_knots) {
             fz_fill(p, n_knots, FZ_SORTED);
+        } else if (fz_r(4) == 0) {
+            /* Uniform, unclamped (seed 001's uniform B-splines, the only input
+             * cagd_bspline_reduce_uniform accepts): a + i h, sometimes far from zero or
+             * with an extreme spacing. */
+            double a = fz_r(2) == 0 ? 0.0 : fz_double() * 1e3;
+            double h = fz_r(4) == 0 ? fz_extreme() : 0.25 * (double)(1 + fz_r(4));
+            for (size_t i = 0; i < n_knots; ++i) {
+                p[i] = a + h * (double)i;
+            }
         } else {
             /* Clamped: degree + 1 equal ends, interior increasing (with some repeats). */
             size_t m = degree + 1;
