@@ -9,18 +9,8 @@ use cagd_testkit::bench::random_input;
 
 /// The largest distance at `count + 1` equidistant parameters (model space).
 fn dense(a: &BSplineCurve, b: &BSplineCurve, count: u32) -> f64 {
-    let (lo, hi) = a.domain();
-    (0..=count)
-        .map(|i| {
-            let t = lo + (hi - lo) * f64::from(i) / f64::from(count);
-            let (x, y) = (a.eval(t).unwrap(), b.eval(t).unwrap());
-            x.iter()
-                .zip(&y)
-                .map(|(u, v)| (u - v) * (u - v))
-                .sum::<f64>()
-                .sqrt()
-        })
-        .fold(0.0, f64::max)
+    let (ea, eb) = (|t| a.eval(t).unwrap(), |t| b.eval(t).unwrap());
+    cagd_testkit::sampled_max_distance(ea, eb, a.domain(), count)
 }
 
 /// The pruned measurement (node values, Ehlich–Zeller bounds, at most 16 pairs refined)

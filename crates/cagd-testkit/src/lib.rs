@@ -177,3 +177,25 @@ pub fn clamped_knots(n_points: usize, p: usize) -> impl Strategy<Value = Vec<f64
         knots
     })
 }
+
+/// The largest Euclidean distance between `a(t)` and `b(t)` at `count + 1` equidistant
+/// parameters of `[lo, hi]`: the dense reference the tests hold measured errors and
+/// certified bounds against (`a` and `b` return the points, e.g. a curve's `eval`).
+pub fn sampled_max_distance(
+    a: impl Fn(f64) -> Vec<f64>,
+    b: impl Fn(f64) -> Vec<f64>,
+    (lo, hi): (f64, f64),
+    count: u32,
+) -> f64 {
+    (0..=count)
+        .map(|i| {
+            let t = lo + (hi - lo) * f64::from(i) / f64::from(count);
+            let (x, y) = (a(t), b(t));
+            x.iter()
+                .zip(&y)
+                .map(|(u, v)| (u - v) * (u - v))
+                .sum::<f64>()
+                .sqrt()
+        })
+        .fold(0.0, f64::max)
+}

@@ -176,22 +176,17 @@ mod tests {
 
     /// `max ||C - S||` on `[a, b]` in model space, sampled at 4 000 parameters: `c` and
     /// `s` homogeneous polynomial splines (last coordinate the weight).
-    fn measured(c: &BSplineCurve, s: &BSplineCurve, (a, b): (f64, f64)) -> f64 {
+    fn measured(c: &BSplineCurve, s: &BSplineCurve, span: (f64, f64)) -> f64 {
         let model = |h: Vec<f64>| {
             let w = h[h.len() - 1];
             h[..h.len() - 1].iter().map(|x| x / w).collect::<Vec<_>>()
         };
-        (0..=4000)
-            .map(|i| {
-                let t = a + (b - a) * f64::from(i) / 4000.0;
-                let (x, y) = (model(c.eval(t).unwrap()), model(s.eval(t).unwrap()));
-                x.iter()
-                    .zip(&y)
-                    .map(|(u, v)| (u - v) * (u - v))
-                    .sum::<f64>()
-                    .sqrt()
-            })
-            .fold(0.0, f64::max)
+        cagd_testkit::sampled_max_distance(
+            |t| model(c.eval(t).unwrap()),
+            |t| model(s.eval(t).unwrap()),
+            span,
+            4000,
+        )
     }
 
     /// NURBS of degree 4–14 (weights in [0.5, 2], 3-D, far from the origin, sizes 1e-2 to
