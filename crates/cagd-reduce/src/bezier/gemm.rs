@@ -19,8 +19,11 @@ use cagd_core::all_finite;
 
 use super::lanes;
 
-/// Fewest curves per block (one group of the lanes kernel).
-const MIN_BLOCK: usize = 4;
+/// Curves per block are a multiple of this (the widest group of the lanes kernel: 8 curves
+/// with AVX-512, 4 with AVX2), so that only the last block of a batch has curves that do
+/// not fill a group (those run the kernel's slower one-curve loop): e.g. (5,4), 455 curves
+/// per block of 64 KiB, sent 7 of each 455 through that loop.
+const GROUP: usize = 8;
 
 /// Target size in bytes of the input of one block of curves: the block's input and output
 /// stay in L2 between the kernel and the finiteness check.
@@ -71,9 +74,11 @@ impl LinearMap {
         (&self.at, self.rows)
     }
 
-    /// Curves per block for points of `dim` coordinates (at least one).
+    /// Curves per block for points of `dim` coordinates: a multiple of [`GROUP`], at least
+    /// one group.
     pub(crate) fn block_curves(&self, dim: usize) -> usize {
-        (BLOCK_BYTES / (8 * self.cols * dim).max(1)).max(MIN_BLOCK)
+        let fit = BLOCK_BYTES / (8 * self.cols * dim).max(1);
+        (fit / GROUP * GROUP).max(GROUP)
     }
 
     /// Applies the map to every curve of `input` (`curves * cols * dim` doubles,
