@@ -4,17 +4,20 @@
 //! §14.4's criterion applied to the whole spline space instead of one segment), with the
 //! end points kept (`S(a) = C(a)`, `S(b) = C(b)`).
 //!
-//! Every knot of `S` is a break of `C`'s pieces or lies inside one, so on each span of `S`
-//! the integrand `||C - S||^2 = ||C||^2 - 2 C.S + ||S||^2` is a polynomial; its part that
-//! depends on `S` has degree `p + m` (`m < p`), which the `k`-point Gauss–Legendre rule
-//! of each span, `k = ceil((p + m + 1) / 2)`, integrates exactly (the `||C||^2` part, of
-//! degree `2p`, is a constant of the minimisation and need not be). The integral is
-//! therefore, up to that constant, the squared norm of the residual of a weighted
-//! collocation system with one row per (span, node) — weight `sqrt(w_q h)` — and the fit
+//! The domain is cut into *cells*, the spans of `S` cut at the breaks of `C`'s pieces
+//! ([`Cells`], `spans.rs`; the spans themselves when every break is a knot of `S`), so on
+//! each cell the integrand `||C - S||^2 = ||C||^2 - 2 C.S + ||S||^2` is a polynomial; its
+//! part that depends on `S` has degree `p + m` (`m < p`), which the `k`-point
+//! Gauss–Legendre rule of each cell, `k = ceil((p + m + 1) / 2)`, integrates exactly (the
+//! `||C||^2` part, of degree `2p`, is a constant of the minimisation and need not be). The
+//! integral is therefore, up to that constant, the squared norm of the residual of a
+//! weighted collocation system with one row per (cell, node) — weight `sqrt(w_q h)` — and
+//! the fit
 //! is that system's least-squares solution, computed by banded Givens QR
-//! ([`banded_lsq`]), each span's rows first compressed to `m + 1` by an orthogonal
+//! ([`banded_lsq`]), each cell's rows first compressed to `m + 1` by an orthogonal
 //! transformation fixed per `(p, m)` ([`span_rows`]; the source enters through its
-//! restriction to the span, which the span's bound uses too). No normal equations are
+//! restriction to the cell, which the span's bound uses too: a span's bound is the
+//! largest of its cells'). No normal equations are
 //! formed. (The `(p + 1)`-point rule, exact for
 //! the whole integrand, gives the same minimiser with up to twice the rows; it was used
 //! until issue 17.)
@@ -36,10 +39,13 @@ mod spans;
 use crate::bezier::{hull_bound, max_norm};
 pub(crate) use banded_lsq::BandedLsq;
 use node_bound::NodeBound;
+pub(crate) use predict::Density;
+#[cfg(test)]
 pub(crate) use predict::predicted_knots;
 use span_rows::SpanRows;
+pub(crate) use spans::Cells;
 pub(crate) use spans::SpanData;
-use spans::{Cells, Part, casteljau_part};
+use spans::{Part, casteljau_part};
 
 /// The spline to approximate, as Bézier pieces in working coordinates.
 #[derive(Debug, Clone)]
@@ -138,8 +144,8 @@ impl Source {
     }
 }
 
-/// The L2-best degree-`m` spline on the clamped knot vector `knots` (domain and every break
-/// of `src` among its knots) with the end points of `src`: its control points
+/// The L2-best degree-`m` spline on the clamped knot vector `knots` (on the domain of
+/// `src`; its spans may straddle the breaks of `src`) with the end points of `src`: its control points
 /// (`knots.len() - m - 1` points of `src.pdim` coordinates).
 ///
 /// # Errors
@@ -152,7 +158,7 @@ pub(crate) fn fit(src: &Source, m: usize, knots: &[f64]) -> Result<Vec<f64>> {
     fit_restricted(src, m, knots, &data)
 }
 
-/// `fit` with the spans' [`SpanData`] given: per span, its `m + 1`
+/// `fit` with the cells' [`SpanData`] given: per cell, its `m + 1`
 /// compressed Gauss rows ([`SpanRows`]: `ceil((p + m + 1) / 2)` nodes, exact for every
 /// term that depends on the fit) into the banded QR.
 ///
@@ -256,7 +262,9 @@ pub(crate) fn span_bounds(
 
 /// The spans `[a, b]` of the degree-`m` spline `(knots, points)` (working coordinates of
 /// `src`) with a certified bound of `max ||C - S||` on each (Euclidean, model space): per
-/// span, the piece of `C` restricted to it minus the piece of `S`, bounded by its values
+/// cell of the span ([`Cells`]: the span itself, or its parts between the breaks of
+/// `src`, the largest of their bounds), the piece of `C` restricted to it minus the piece
+/// of `S`, bounded by its values
 /// at Chebyshev–Lobatto nodes ([`node_bound`], rounding included, within
 /// [`node_bound::RATIO`] of the true maximum) and, where that bound is above `sharpen`
 /// while the largest node value is not, also by the refined convex hull of the difference

@@ -105,7 +105,7 @@ impl Iterator for Cells<'_> {
 /// sharing.
 #[derive(Debug, Default)]
 pub(crate) struct SpanData {
-    pub(super) cells: Vec<Cell>,
+    pub(crate) cells: Vec<Cell>,
     subs: Vec<f64>,
     pub(super) exts: Vec<f64>,
     pub(super) stored: bool,
