@@ -13,8 +13,7 @@
 use cagd_core::{BSplineCurve, Error, Result, knot_multiplicity};
 
 use super::fit::{
-    Source, SpanBound, SpanData, fit_restricted, hull_span_bound, predicted_knots,
-    span_bounds_restricted,
+    Density, Source, SpanBound, SpanData, fit_restricted, hull_span_bound, span_bounds_restricted,
 };
 use super::grading::{GRADE, grading_breaks};
 use super::knots::order_at;
@@ -132,6 +131,66 @@ pub(crate) fn initial_knots(
         knots.extend(std::iter::repeat_n(t, m - keep));
     }
     knots.extend(std::iter::repeat_n(b[b.len() - 1], m + 1));
+    Ok(knots)
+}
+
+/// The first knot vector of the global fit of `src` (the working form of a degree-`p`
+/// input with knots `input_knots`) to degree `m` with continuity `k` within `budget`:
+/// knots placed where the error model wants them ([`Density`], `fit/predict.rs`: one round
+/// instead of four on the a2 row's curves, issue 17), in one of two ways:
+/// - on the input's breaks ([`initial_knots`]) plus, per piece, the predicted knots
+///   inside it ([`Density::per_piece`]);
+/// - or only the breaks where the fit must be less smooth than `C^(m-1)` (multiplicity
+///   above one) plus knots predicted across the pieces between them
+///   ([`Density::across`]): the fit's spans then straddle the other breaks (its rows and
+///   bounds are per cell, `fit/spans.rs`), and where the input has many short pieces it
+///   needs fewer spans than one knot per break and a rounding up per piece (ADDED, issue
+///   17's real-CAD-file row: NURBS at 1e-3 had 11 % more spans than OCCT, whose knots
+///   ignore the input's).
+///
+/// The second when the model predicts fewer spans for it. Without a model (see
+/// [`Density::new`]) or past the prediction's limit, the input's breaks alone.
+fn first_knots(
+    input_knots: &[f64],
+    src: &Source,
+    m: usize,
+    k: usize,
+    budget: f64,
+) -> Result<Vec<f64>> {
+    let p = src.degree;
+    let limit = MAX_PREDICTED_KNOTS.min(MAX_FIT_WORK / 2 / span_unit(src).max(1));
+    let mut knots = initial_knots(input_knots, p, src, m, k)?;
+    let Some(density) = Density::new(src, m, budget) else {
+        return Ok(knots);
+    };
+    let b = &src.breaks;
+    // The interior breaks that stay knots: multiple knots of the fit (continuity below
+    // C^(m-1)), and breaks where the input is less than C^m: there its m-th derivative
+    // jumps, an error source the model's density (of the (m+1)-th) does not see (a
+    // degree-elevated degree-m spline has no density at all, and its breaks are its knots).
+    let mut kept = Vec::new();
+    for (i, &t) in b.iter().enumerate().take(b.len() - 1).skip(1) {
+        let smooth = p.saturating_sub(knot_multiplicity(input_knots, t));
+        if order_at(input_knots, p, k, t)?.min(m - 1) < m - 1 || smooth < m {
+            kept.push(i);
+        }
+    }
+    let (per_piece, across) = density.span_counts(&kept);
+    if across < per_piece {
+        if let Some(inner) = density.across(src, &kept, limit) {
+            // The domain's ends and the kept breaks, at their multiplicities.
+            let stay: Vec<f64> = kept.iter().map(|&i| b[i]).collect();
+            let (lo, hi) = (b[0], b[b.len() - 1]);
+            knots.retain(|t| {
+                *t == lo || *t == hi || stay.binary_search_by(|x| x.total_cmp(t)).is_ok()
+            });
+            knots.extend(inner);
+            knots.sort_by(f64::total_cmp);
+            return Ok(knots);
+        }
+    }
+    knots.extend(density.per_piece(src, limit));
+    knots.sort_by(f64::total_cmp);
     Ok(knots)
 }
 
@@ -277,12 +336,7 @@ pub(crate) fn reduce_global(
         curve.dim() + usize::from(rational),
         rational,
     )?;
-    let mut knots = initial_knots(curve.knots(), p, &src, m, k)?;
-    // The first fit on knots placed where the error model wants them: one round instead
-    // of four on the a2 row's curves (issue 17).
-    let limit = MAX_PREDICTED_KNOTS.min(MAX_FIT_WORK / 2 / span_unit(&src).max(1));
-    knots.extend(predicted_knots(&src, m, FIT_SHARE * tol, limit));
-    knots.sort_by(f64::total_cmp);
+    let knots = first_knots(curve.knots(), &src, m, k, FIT_SHARE * tol)?;
     let mut attained = Vec::new();
     let (knots, points, bounds) =
         fit_to_budget_attained(&src, m, knots, FIT_SHARE * tol, &mut attained)?;

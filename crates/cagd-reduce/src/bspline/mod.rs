@@ -21,6 +21,8 @@ mod segments;
 mod surface;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_straddle;
 mod uniform;
 
 pub use measure::{

@@ -16,10 +16,15 @@ use crate::Method;
 ///
 /// [`BSplineStrategy::GlobalFit`] (default):
 /// 1. **Knots**: the input's breaks with multiplicity `m - min(k, p - s, m - 1)`, so the
-///    degree-`m` space has exactly the continuity to keep.
+///    degree-`m` space has exactly the continuity to keep, plus knots predicted by an
+///    error model (`fit/predict.rs`) inside the pieces; or, where the model predicts
+///    fewer spans that way, only the breaks of multiplicity above one (the input less
+///    smooth than `C^(m-1)`) plus knots predicted across the pieces, so that spans
+///    straddle the other breaks (the fit is `C^(m-1)` there, which is all the input's
+///    continuity a degree-`m` spline can keep).
 /// 2. **Fit**: the spline of that space nearest to the input in the parameter L2 norm with
-///    the end points kept (exact Gauss–Legendre quadrature, banded Givens QR; NURBS in
-///    homogeneous coordinates).
+///    the end points kept (exact Gauss–Legendre quadrature per span and input piece,
+///    banded Givens QR; NURBS in homogeneous coordinates).
 /// 3. **Certify and refine**: every span gets a certified bound (input piece minus fit, its
 ///    values at Chebyshev–Lobatto nodes times the Ehlich–Zeller factor, at most 1.075× the
 ///    error; the refined convex hull where that is above the share, and for NURBS); spans

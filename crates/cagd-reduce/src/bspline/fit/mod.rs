@@ -4,17 +4,20 @@
 //! §14.4's criterion applied to the whole spline space instead of one segment), with the
 //! end points kept (`S(a) = C(a)`, `S(b) = C(b)`).
 //!
-//! Every knot of `S` is a break of `C`'s pieces or lies inside one, so on each span of `S`
-//! the integrand `||C - S||^2 = ||C||^2 - 2 C.S + ||S||^2` is a polynomial; its part that
-//! depends on `S` has degree `p + m` (`m < p`), which the `k`-point Gauss–Legendre rule
-//! of each span, `k = ceil((p + m + 1) / 2)`, integrates exactly (the `||C||^2` part, of
-//! degree `2p`, is a constant of the minimisation and need not be). The integral is
-//! therefore, up to that constant, the squared norm of the residual of a weighted
-//! collocation system with one row per (span, node) — weight `sqrt(w_q h)` — and the fit
+//! The domain is cut into *cells*, the spans of `S` cut at the breaks of `C`'s pieces
+//! ([`Cells`], `spans.rs`; the spans themselves when every break is a knot of `S`), so on
+//! each cell the integrand `||C - S||^2 = ||C||^2 - 2 C.S + ||S||^2` is a polynomial; its
+//! part that depends on `S` has degree `p + m` (`m < p`), which the `k`-point
+//! Gauss–Legendre rule of each cell, `k = ceil((p + m + 1) / 2)`, integrates exactly (the
+//! `||C||^2` part, of degree `2p`, is a constant of the minimisation and need not be). The
+//! integral is therefore, up to that constant, the squared norm of the residual of a
+//! weighted collocation system with one row per (cell, node) — weight `sqrt(w_q h)` — and
+//! the fit
 //! is that system's least-squares solution, computed by banded Givens QR
-//! ([`banded_lsq`]), each span's rows first compressed to `m + 1` by an orthogonal
+//! ([`banded_lsq`]), each cell's rows first compressed to `m + 1` by an orthogonal
 //! transformation fixed per `(p, m)` ([`span_rows`]; the source enters through its
-//! restriction to the span, which the span's bound uses too). No normal equations are
+//! restriction to the cell, which the span's bound uses too: a span's bound is the
+//! largest of its cells'). No normal equations are
 //! formed. (The `(p + 1)`-point rule, exact for
 //! the whole integrand, gives the same minimiser with up to twice the rows; it was used
 //! until issue 17.)
@@ -36,8 +39,11 @@ mod spans;
 use crate::bezier::{hull_bound, max_norm};
 pub(crate) use banded_lsq::BandedLsq;
 use node_bound::NodeBound;
+pub(crate) use predict::Density;
+#[cfg(test)]
 pub(crate) use predict::predicted_knots;
 use span_rows::SpanRows;
+pub(crate) use spans::Cells;
 pub(crate) use spans::SpanData;
 use spans::{Part, casteljau_part};
 
@@ -99,14 +105,6 @@ impl Source {
         &self.points[k * len..(k + 1) * len]
     }
 
-    /// The index of the piece containing the span `[a, b]` (`a < b`).
-    fn piece_of(&self, a: f64, b: f64) -> usize {
-        let mid = 0.5 * (a + b);
-        self.breaks[1..]
-            .partition_point(|x| *x <= mid)
-            .min(self.breaks.len() - 2)
-    }
-
     /// The Bézier points of the source on `[a, b]` (inside piece `k`'s interval) in
     /// `out`: piece `k` cut at `b` (its left part), then at `a` (the right part), each by
     /// de Casteljau's triangle ([`casteljau_part`], `O(p^2)` convex combinations); `tmp`
@@ -146,8 +144,8 @@ impl Source {
     }
 }
 
-/// The L2-best degree-`m` spline on the clamped knot vector `knots` (domain and every break
-/// of `src` among its knots) with the end points of `src`: its control points
+/// The L2-best degree-`m` spline on the clamped knot vector `knots` (on the domain of
+/// `src`; its spans may straddle the breaks of `src`) with the end points of `src`: its control points
 /// (`knots.len() - m - 1` points of `src.pdim` coordinates).
 ///
 /// # Errors
@@ -160,7 +158,7 @@ pub(crate) fn fit(src: &Source, m: usize, knots: &[f64]) -> Result<Vec<f64>> {
     fit_restricted(src, m, knots, &data)
 }
 
-/// `fit` with the spans' [`SpanData`] given: per span, its `m + 1`
+/// `fit` with the cells' [`SpanData`] given: per cell, its `m + 1`
 /// compressed Gauss rows ([`SpanRows`]: `ceil((p + m + 1) / 2)` nodes, exact for every
 /// term that depends on the fit) into the banded QR.
 ///
@@ -185,18 +183,16 @@ pub(crate) fn fit_restricted(
     let m1 = m + 1;
     let mut lsq = BandedLsq::new(n - 2, m1, d);
     let (mut rows, mut rhs) = (vec![0.0; m1 * m1], vec![0.0; m1 * d]);
-    let mut exts = data.exts.chunks_exact(m1 * m1);
     let (mut buf, mut tmp) = (Vec::new(), [Vec::new(), Vec::new(), Vec::new()]);
-    let mut i = 0;
-    for s in m..n {
-        let (a, b) = (knots[s], knots[s + 1]);
-        if a >= b {
-            continue;
-        }
-        let sub = data.sub(src, i, (a, b), &mut buf, &mut tmp);
-        i += 1;
-        let ext = exts.next().expect("one extraction per non-empty span");
-        span_rows.rows(b - a, ext, sub, d, &mut rows, &mut rhs);
+    for (i, (c, ext)) in data
+        .cells
+        .iter()
+        .zip(data.exts.chunks_exact(m1 * m1))
+        .enumerate()
+    {
+        let s = c.s;
+        let sub = data.sub(src, i, &mut buf, &mut tmp);
+        span_rows.rows(c.b - c.a, ext, sub, d, &mut rows, &mut rhs);
         for (row, value) in rows.chunks_exact_mut(m1).zip(rhs.chunks_exact_mut(d)) {
             // Columns s-m..=s; the first and last control points are fixed.
             let (mut lo, mut hi) = (s - m, m1);
@@ -266,7 +262,9 @@ pub(crate) fn span_bounds(
 
 /// The spans `[a, b]` of the degree-`m` spline `(knots, points)` (working coordinates of
 /// `src`) with a certified bound of `max ||C - S||` on each (Euclidean, model space): per
-/// span, the piece of `C` restricted to it minus the piece of `S`, bounded by its values
+/// cell of the span ([`Cells`]: the span itself, or its parts between the breaks of
+/// `src`, the largest of their bounds), the piece of `C` restricted to it minus the piece
+/// of `S`, bounded by its values
 /// at Chebyshev–Lobatto nodes ([`node_bound`], rounding included, within
 /// [`node_bound::RATIO`] of the true maximum) and, where that bound is above `sharpen`
 /// while the largest node value is not, also by the refined convex hull of the difference
@@ -299,28 +297,26 @@ pub(crate) fn span_bounds_restricted(
             expected: n + m + 1,
         });
     }
-    let mut out = Vec::with_capacity(n - m);
-    let mut exts = data.exts.chunks_exact((m + 1) * (m + 1));
+    let mut out: Vec<SpanBound> = Vec::with_capacity(n - m);
     let (mut buf, mut tmp) = (Vec::new(), [Vec::new(), Vec::new(), Vec::new()]);
-    let mut i = 0;
     let (mut tgt, mut scratch) = (vec![0.0; (m + 1) * d], vec![0.0; (m + 1) * d]);
     let (mut sb, mut tb) = (vec![0.0; (p + 1) * blk], vec![0.0; (m + 1) * blk]);
     let (mut qb, mut pb) = (vec![0.0; (m + 1) * blk], vec![0.0; (p + 1) * blk]);
     let nodes = NodeBound::cached(p, m);
     let mut vals = Vec::new();
     let mut scratch3 = [Vec::new(), Vec::new(), Vec::new()];
-    for s in m..n {
-        let (a, b) = (knots[s], knots[s + 1]);
-        if a >= b {
-            continue;
-        }
-        let k = src.piece_of(a, b);
-        let sub = data.sub(src, i, (a, b), &mut buf, &mut tmp);
-        i += 1;
-        let ext = exts.next().expect("one extraction per non-empty span");
+    let mut last = usize::MAX;
+    for (i, (c, ext)) in data
+        .cells
+        .iter()
+        .zip(data.exts.chunks_exact((m + 1) * (m + 1)))
+        .enumerate()
+    {
+        let (s, k) = (c.s, c.k);
+        let sub = data.sub(src, i, &mut buf, &mut tmp);
         let local = &points[(s - m) * d..(s + 1) * d];
         if src.rational {
-            span_bezier((knots, points, d, m), s, &mut tgt, &mut scratch);
+            span_bezier((knots, points, d, m), s, (c.a, c.b), &mut tgt, &mut scratch);
         } else {
             // E Q: a convex combination per point (the rows of E are non-negative and sum
             // to one); its rounding is in `NodeBound::bound`'s allowance.
@@ -334,8 +330,7 @@ pub(crate) fn span_bounds_restricted(
             }
         }
         let (bound, floor, lower) = if src.rational {
-            let span_points = &points[(s - m) * d..(s + 1) * d];
-            let vmin = span_points
+            let vmin = local
                 .chunks_exact(blk)
                 .map(|q| q[blk - 1])
                 .fold(f64::INFINITY, f64::min);
@@ -343,16 +338,15 @@ pub(crate) fn span_bounds_restricted(
                 sub,
                 piece: src.piece(k),
                 tgt: &tgt,
-                fit: span_points,
+                fit: local,
             };
             rational_bound(&span, (d, blk, p), vmin, sharpen, &mut scratch3)
         } else {
             let (mut eps, mut floor, mut seen): (f64, f64, f64) = (0.0, 0.0, 0.0);
-            let span_points = &points[(s - m) * d..(s + 1) * d];
             for j in 0..d / blk {
                 copy_block(sub, d, j, blk, &mut sb);
                 copy_block(&tgt, d, j, blk, &mut tb);
-                copy_block(span_points, d, j, blk, &mut qb);
+                copy_block(local, d, j, blk, &mut qb);
                 let pmax = max_norm(block_of(src.piece(k), d, j, blk, &mut pb), blk);
                 let (lower, mut upper) =
                     nodes.bound(&sb, &tb, blk, (pmax, max_norm(&qb, blk)), &mut vals);
@@ -368,10 +362,31 @@ pub(crate) fn span_bounds_restricted(
             }
             (eps, floor, seen.min(eps))
         };
-        out.push(SpanBound { a, b, bound, floor });
-        attained.push(lower);
+        // A span's bound is the largest of its cells' (one cell per span when every
+        // break of the source is a knot).
+        if s == last {
+            let (x, seen) = (out.last_mut(), attained.last_mut());
+            let (x, seen) = x.zip(seen).expect("a span is open");
+            x.bound = worse(x.bound, bound);
+            x.floor = worse(x.floor, floor);
+            *seen = worse(*seen, lower);
+        } else {
+            last = s;
+            let (a, b) = (knots[s], knots[s + 1]);
+            out.push(SpanBound { a, b, bound, floor });
+            attained.push(lower);
+        }
     }
     Ok(out)
+}
+
+/// The larger of two bounds, `NaN` if either is (`f64::max` would drop it).
+fn worse(x: f64, y: f64) -> f64 {
+    if x.is_nan() || y.is_nan() {
+        f64::NAN
+    } else {
+        x.max(y)
+    }
 }
 
 /// The refined-hull bound ([`crate::bezier::hull_bound`]) of `max ||C - S||` on the span
@@ -391,50 +406,60 @@ pub(crate) fn hull_span_bound(
         return f64::INFINITY;
     }
     let s = knots.partition_point(|x| *x <= a) - 1;
+    debug_assert!(knots[s] == a && knots[s + 1] == b);
     let (mut tgt, mut work) = (vec![0.0; (m + 1) * d], vec![0.0; (m + 1) * d]);
-    span_bezier((knots, points, d, m), s, &mut tgt, &mut work);
     let mut sub = Vec::with_capacity((p + 1) * d);
     let mut tmp = [Vec::new(), Vec::new(), Vec::new()];
-    let k = src.piece_of(a, b);
-    src.restrict_into(k, (a, b), &mut sub, &mut tmp);
-    if src.rational {
-        let fit = &points[(s - m) * d..(s + 1) * d];
-        let vmin = fit
-            .chunks_exact(blk)
-            .map(|q| q[blk - 1])
-            .fold(f64::INFINITY, f64::min);
-        let span = RationalSpan {
-            sub: &sub,
-            piece: src.piece(k),
-            tgt: &tgt,
-            fit,
-        };
-        let mut scratch = [Vec::new(), Vec::new(), Vec::new()];
-        return rational_bound(&span, (d, blk, p), vmin, 0.0, &mut scratch).0;
-    }
+    let mut scratch = [Vec::new(), Vec::new(), Vec::new()];
     let (mut sb, mut tb) = (vec![0.0; (p + 1) * blk], vec![0.0; (m + 1) * blk]);
+    let fit = &points[(s - m) * d..(s + 1) * d];
     let mut worst: f64 = 0.0;
-    for j in 0..d / blk {
-        copy_block(&sub, d, j, blk, &mut sb);
-        copy_block(&tgt, d, j, blk, &mut tb);
-        worst = worst.max(hull_bound(&sb, &tb, blk));
+    // The span's cells (one when every break of the source is a knot), the largest.
+    for c in Cells::of_span(knots, s, &src.breaks) {
+        span_bezier((knots, points, d, m), s, (c.a, c.b), &mut tgt, &mut work);
+        src.restrict_into(c.k, (c.a, c.b), &mut sub, &mut tmp);
+        let bound = if src.rational {
+            let vmin = fit
+                .chunks_exact(blk)
+                .map(|q| q[blk - 1])
+                .fold(f64::INFINITY, f64::min);
+            let span = RationalSpan {
+                sub: &sub,
+                piece: src.piece(c.k),
+                tgt: &tgt,
+                fit,
+            };
+            rational_bound(&span, (d, blk, p), vmin, 0.0, &mut scratch).0
+        } else {
+            let mut eps: f64 = 0.0;
+            for j in 0..d / blk {
+                copy_block(&sub, d, j, blk, &mut sb);
+                copy_block(&tgt, d, j, blk, &mut tb);
+                eps = worse(eps, hull_bound(&sb, &tb, blk));
+            }
+            eps
+        };
+        worst = worse(worst, bound);
     }
     worst
 }
 
-/// The Bézier points of span `s` (`knots[s] < knots[s + 1]`) of the degree-`m` spline
-/// `(knots, points)` of `d` coordinates in `out`: the blossom values `S(a^(m - k), b^k)`,
-/// `k = 0..=m`, each by `m` levels of de Boor's convex combinations of the points `s - m
-/// ..= s` (the extraction of [`BSplineCurve::to_beziers`], without its allocations).
+/// The Bézier points on `[a, b]` (inside span `s`, `knots[s] < knots[s + 1]`) of the
+/// degree-`m` spline `(knots, points)` of `d` coordinates in `out`: the blossom values
+/// `S(a^(m - k), b^k)`, `k = 0..=m`, each by `m` levels of de Boor's convex combinations
+/// of the points `s - m ..= s` (the extraction of [`BSplineCurve::to_beziers`], without
+/// its allocations; on the whole span, `a = knots[s]`, `b = knots[s + 1]`).
 fn span_bezier(
     (knots, points, d, m): (&[f64], &[f64], usize, usize),
     s: usize,
+    (a, b): (f64, f64),
     out: &mut [f64],
     work: &mut [f64],
 ) {
     span_bezier_of(
         (knots, m),
         s,
+        (a, b),
         (&points[(s - m) * d..(s + 1) * d], d),
         out,
         work,
@@ -442,15 +467,17 @@ fn span_bezier(
 }
 
 /// [`span_bezier`] from the span's own `m + 1` points `local` (those of `s - m ..= s`, `d`
-/// coordinates each); with the unit vectors as points, the span's Bézier extraction.
+/// coordinates each); with the unit vectors as points, the span's Bézier extraction on
+/// `[a, b]`. For `a`, `b` inside the span every de Boor weight is in `[0, 1]`, so the
+/// values are convex combinations of `local`, as on the whole span.
 fn span_bezier_of(
     (knots, m): (&[f64], usize),
     s: usize,
+    (a, b): (f64, f64),
     (local, d): (&[f64], usize),
     out: &mut [f64],
     work: &mut [f64],
 ) {
-    let (a, b) = (knots[s], knots[s + 1]);
     for k in 0..=m {
         work.copy_from_slice(local);
         for r in 1..=m {

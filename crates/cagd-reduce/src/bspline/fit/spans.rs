@@ -1,20 +1,111 @@
-//! The per-span data the global fit's rows and its span bounds share ([`SpanData`]: one
-//! restriction of the source and one Bézier extraction per span, issue 17) and the de
+//! The per-cell data the global fit's rows and its span bounds share ([`SpanData`]: one
+//! restriction of the source and one Bézier extraction per cell, issue 17), the cells
+//! themselves ([`Cells`]: the fit's spans cut at the source's breaks) and the de
 //! Casteljau pass that makes the restrictions ([`casteljau_part`]).
 
 use super::{Source, span_bezier_of};
 
-/// What the fit's rows ([`super::span_rows`]) and the span bounds share per non-empty span
-/// `knots[s] < knots[s + 1]` of a degree-`m` knot vector (`s = m..n`, in order): the
-/// source's Bézier points on the span ([`Source::restrict_into`], `(p + 1) * pdim` values)
-/// and the span's Bézier extraction (`(m + 1) x (m + 1)`, row `l` the Bézier coefficients
-/// `l` of the basis functions `s - m ..= s`, by [`span_bezier_of`] on the unit vectors).
+/// A cell of a fit over a source: the part `[a, b]` of the fit's non-empty span `s`
+/// (`knots[s] < knots[s + 1]`) inside the source's piece `k`. On a cell both the source
+/// and the fit are polynomials, so the fit's Gauss rows are exact per cell and a span's
+/// bound is the largest of its cells'. When every break of the source is a knot of the
+/// fit (the fit on the input's breaks), the cells are the spans; a fit whose spans
+/// straddle the source's breaks (ADDED, issue 17's real-CAD-file row: fewer spans on
+/// inputs of many short pieces) has more cells than spans.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Cell {
+    /// The fit's span: knots `s` and `s + 1`, basis functions `s - m ..= s`.
+    pub(crate) s: usize,
+    /// The source's piece.
+    pub(crate) k: usize,
+    pub(crate) a: f64,
+    pub(crate) b: f64,
+}
+
+/// The cells ([`Cell`]) of the non-empty spans `s` in `first..last` of a degree-`m` knot
+/// vector over the source's `breaks`, in order (increasing `a`).
+#[derive(Debug, Clone)]
+pub(crate) struct Cells<'a> {
+    knots: &'a [f64],
+    breaks: &'a [f64],
+    s: usize,
+    last: usize,
+    k: usize,
+    /// Where the next cell of span `s` starts (`NaN`: at the span's start).
+    at: f64,
+}
+
+impl<'a> Cells<'a> {
+    /// Every cell of the degree-`m` knot vector `knots` (spans `m..n`, clamped on the
+    /// domain of `breaks`).
+    pub(crate) fn new(knots: &'a [f64], m: usize, breaks: &'a [f64]) -> Self {
+        Self {
+            knots,
+            breaks,
+            s: m,
+            last: knots.len() - m - 1,
+            k: 0,
+            at: f64::NAN,
+        }
+    }
+
+    /// The cells of the one span `s` (`knots[s] < knots[s + 1]`).
+    pub(crate) fn of_span(knots: &'a [f64], s: usize, breaks: &'a [f64]) -> Self {
+        let a = knots[s];
+        let k = breaks[1..]
+            .partition_point(|x| *x <= a)
+            .min(breaks.len() - 2);
+        Self {
+            knots,
+            breaks,
+            s,
+            last: s + 1,
+            k,
+            at: f64::NAN,
+        }
+    }
+}
+
+impl Iterator for Cells<'_> {
+    type Item = Cell;
+
+    fn next(&mut self) -> Option<Cell> {
+        while self.s < self.last {
+            let (ka, kb) = (self.knots[self.s], self.knots[self.s + 1]);
+            if ka < kb {
+                let a = if self.at.is_nan() { ka } else { self.at };
+                // The piece containing `a` (the last piece ends at the domain's end).
+                while self.k + 2 < self.breaks.len() && self.breaks[self.k + 1] <= a {
+                    self.k += 1;
+                }
+                let (s, k, end) = (self.s, self.k, self.breaks[self.k + 1]);
+                if end < kb && k + 2 < self.breaks.len() {
+                    self.at = end;
+                    return Some(Cell { s, k, a, b: end });
+                }
+                self.at = f64::NAN;
+                self.s += 1;
+                return Some(Cell { s, k, a, b: kb });
+            }
+            self.s += 1;
+        }
+        None
+    }
+}
+
+/// What the fit's rows ([`super::span_rows`]) and the span bounds share per cell
+/// ([`Cells`], in order): the cell itself, the source's Bézier points on the cell
+/// ([`Source::restrict_into`], `(p + 1) * pdim` values) and the fit span's Bézier
+/// extraction on the cell (`(m + 1) x (m + 1)`, row `l` the Bézier coefficients `l` of
+/// the basis functions `s - m ..= s` on `[a, b]`, by [`span_bezier_of`] on the unit
+/// vectors).
 ///
 /// The restrictions are kept only up to [`MAX_STORED_RESTRICTION`] values in all; past it
 /// (huge bundles near the work limit) each user restricts the span again, as before the
 /// sharing.
 #[derive(Debug, Default)]
 pub(crate) struct SpanData {
+    pub(crate) cells: Vec<Cell>,
     subs: Vec<f64>,
     pub(super) exts: Vec<f64>,
     pub(super) stored: bool,
@@ -25,7 +116,7 @@ pub(crate) struct SpanData {
 const MAX_STORED_RESTRICTION: usize = 1 << 22;
 
 impl SpanData {
-    /// The data of every non-empty span of `knots` for the source `src`.
+    /// The data of every cell of `knots` for the source `src`.
     pub(crate) fn fill(&mut self, src: &Source, m: usize, knots: &[f64]) {
         self.fill_keeping(src, m, knots, MAX_STORED_RESTRICTION);
     }
@@ -36,8 +127,9 @@ impl SpanData {
         let m1 = m + 1;
         self.subs.clear();
         self.exts.clear();
-        let spans = knots[m..=n].windows(2).filter(|w| w[0] < w[1]).count();
-        self.stored = spans.saturating_mul((src.degree + 1) * src.pdim) <= cap;
+        self.cells.clear();
+        self.cells.extend(Cells::new(knots, m, &src.breaks));
+        self.stored = self.cells.len().saturating_mul((src.degree + 1) * src.pdim) <= cap;
         let mut sub = Vec::with_capacity((src.degree + 1) * src.pdim);
         let mut tmp = [Vec::new(), Vec::new(), Vec::new()];
         let mut unit = vec![0.0; m1 * m1];
@@ -45,26 +137,30 @@ impl SpanData {
             unit[i * m1 + i] = 1.0;
         }
         let (mut ext, mut work) = (vec![0.0; m1 * m1], vec![0.0; m1 * m1]);
-        for s in m..n {
-            let (a, b) = (knots[s], knots[s + 1]);
-            if a < b {
-                if self.stored {
-                    src.restrict_into(src.piece_of(a, b), (a, b), &mut sub, &mut tmp);
-                    self.subs.extend_from_slice(&sub);
-                }
-                span_bezier_of((knots, m), s, (&unit, m1), &mut ext, &mut work);
-                self.exts.extend_from_slice(&ext);
+        debug_assert!(self.cells.last().is_none_or(|c| c.s < n));
+        for c in &self.cells {
+            if self.stored {
+                src.restrict_into(c.k, (c.a, c.b), &mut sub, &mut tmp);
+                self.subs.extend_from_slice(&sub);
             }
+            span_bezier_of(
+                (knots, m),
+                c.s,
+                (c.a, c.b),
+                (&unit, m1),
+                &mut ext,
+                &mut work,
+            );
+            self.exts.extend_from_slice(&ext);
         }
     }
 
-    /// The restriction of the source to the `i`-th non-empty span `[a, b]`: the stored one,
-    /// or computed into `buf` (`tmp` scratch).
+    /// The restriction of the source to the `i`-th cell: the stored one, or computed into
+    /// `buf` (`tmp` scratch).
     pub(super) fn sub<'a>(
         &'a self,
         src: &Source,
         i: usize,
-        (a, b): (f64, f64),
         buf: &'a mut Vec<f64>,
         tmp: &mut [Vec<f64>; 3],
     ) -> &'a [f64] {
@@ -72,7 +168,8 @@ impl SpanData {
             let len = (src.degree + 1) * src.pdim;
             return &self.subs[i * len..(i + 1) * len];
         }
-        src.restrict_into(src.piece_of(a, b), (a, b), buf, tmp);
+        let c = self.cells[i];
+        src.restrict_into(c.k, (c.a, c.b), buf, tmp);
         buf
     }
 }
