@@ -349,7 +349,7 @@ fn farin<B: Base>(s: &[Row<B>], delta: &Row<B>, symmetric: bool) -> Vec<Row<B>> 
 }
 
 /// The perturbation bound factor `W_k / (C(2k,k) - 2)` rounded up (as `one_step.rs`).
-fn perturb_coef(k: usize) -> f64 {
+pub(crate) fn perturb_coef(k: usize) -> f64 {
     let d = crate::exact::binom_q(2 * to_i(k), to_i(k)) - crate::exact::frac(2, 1);
     crate::bezier::wn_table::perturbation_error_factor(k) / crate::exact::q_to_f64(&d)
         * (1.0 + 8.0 * f64::EPSILON)
@@ -484,7 +484,7 @@ pub(crate) fn residual_coef<B: Base>(method: Method, k: usize) -> Option<f64> {
 /// [`residual_coef`] in double-word, remembered per `(method, k)` for the process: a
 /// constant of the step (like the `W_n` table of `wn_table.rs`), whose `O(k)` evaluation on
 /// one-column rows is allocation-bound (about 40 % of a Forrest build at `(30,15)`).
-fn residual_coef_cached(method: Method, k: usize) -> Option<f64> {
+pub(crate) fn residual_coef_cached(method: Method, k: usize) -> Option<f64> {
     use std::collections::HashMap;
     use std::sync::{OnceLock, RwLock};
     type Memo = RwLock<HashMap<((u8, u64, u64), usize), Option<f64>>>;
