@@ -96,61 +96,30 @@ impl CRow {
         }
     }
 
-    /// A placeholder for a mirrored row (filled in by [`materialize`]).
-    fn empty() -> Self {
-        Self::zeros(0)
-    }
-
-    /// The unit row `e_i`.
-    fn unit(len: usize, i: usize) -> Self {
-        let mut r = Self::zeros(len);
-        r.h[i] = 1.0;
-        r.hs = 1.0;
+    /// The row `(h, l)` with its bounds `(H, L, E)`.
+    fn from_parts(h: &[f64], l: &[f64], st: St) -> Self {
+        let mut r = Self::zeros(h.len());
+        r.h.copy_from_slice(h);
+        r.l.copy_from_slice(l);
+        (r.hs, r.ls, r.e) = st;
         r
     }
 
-    /// A copy with the entries in reverse order (the same bounds).
-    fn reversed(&self) -> Self {
-        let mut r = self.copy();
-        r.h.reverse();
-        r.l.reverse();
-        r
+    /// The bounds `(H, L, E)`.
+    fn st(&self) -> St {
+        (self.hs, self.ls, self.e)
     }
 
-    /// A copy (buffers from the pool).
-    fn copy(&self) -> Self {
-        let mut r = Self::zeros(self.h.len());
-        r.h.copy_from_slice(&self.h);
-        r.l.copy_from_slice(&self.l);
-        (r.hs, r.ls, r.e) = (self.hs, self.ls, self.e);
-        r
-    }
-
-    /// Replaces `hs` and `ls` by the row's own sums rounded up (`(1 + γ_len)` covers the
-    /// rounding of a sum of non-negative terms); `false` if an entry is outside the range
-    /// where Dekker's product is exact.
+    /// Replaces `H` and `L` by the row's own sums ([`sums`]); `false` outside Dekker's
+    /// range.
     fn own_sums(&mut self) -> bool {
-        let (mut hs, mut ls, mut tiny) = ([0.0f64; 4], [0.0f64; 4], false);
-        let mut hc = self.h.chunks_exact(4);
-        let mut lc = self.l.chunks_exact(4);
-        for (h, l) in (&mut hc).zip(&mut lc) {
-            for j in 0..4 {
-                let a = h[j].abs();
-                hs[j] += a;
-                ls[j] += l[j].abs();
-                tiny |= a < TINY && a != 0.0;
+        match sums(&self.h, &self.l) {
+            Some((hs, ls)) => {
+                (self.hs, self.ls) = (hs, ls);
+                true
             }
+            None => false,
         }
-        for (h, l) in hc.remainder().iter().zip(lc.remainder()) {
-            let a = h.abs();
-            hs[0] += a;
-            ls[0] += l.abs();
-            tiny |= a < TINY && a != 0.0;
-        }
-        let up = 1.0 + gamma(8) * 64.0;
-        self.hs = (hs[0] + hs[1] + hs[2] + hs[3]) * up;
-        self.ls = (ls[0] + ls[1] + ls[2] + ls[3]) * up;
-        !tiny && self.hs < 2f64.powi(900)
     }
 
     /// The entries rounded to `f64` (`fl(h + l)`, within `u |h + l|`) and the bound of
@@ -203,12 +172,88 @@ impl Coef {
     }
 }
 
-/// Dekker's product `p + e = a x` exactly, with `a`'s split `(a1, a2)` given.
+/// `p + e = a x` exactly: `e = fma(a, x, -p)` (`FMA`), else Dekker's product with `a`'s
+/// split `(a1, a2)` given. Both give the same `e` (the exact rest of the rounded product),
+/// so the two instances of the kernels give the same bits.
 #[inline(always)]
-fn two_prod(a: f64, a1: f64, a2: f64, x: f64) -> (f64, f64) {
+fn two_prod<const FMA: bool>(a: f64, a1: f64, a2: f64, x: f64) -> (f64, f64) {
     let p = a * x;
-    let (x1, x2) = split(x);
-    (p, ((a1 * x1 - p) + a1 * x2 + a2 * x1) + a2 * x2)
+    if FMA {
+        (p, a.mul_add(x, -p))
+    } else {
+        let (x1, x2) = split(x);
+        (p, ((a1 * x1 - p) + a1 * x2 + a2 * x1) + a2 * x2)
+    }
+}
+
+/// Whether the AVX2 + FMA instances of the kernels run on this CPU.
+fn fused() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        crate::bezier::lanes::isa() != crate::bezier::lanes::Isa::Portable
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        false
+    }
+}
+
+/// The loop of [`lin2`]: `o = a x + b y` entrywise (arrays of one length).
+#[inline(always)]
+fn lin2_body<const FMA: bool>(
+    o: (&mut [f64], &mut [f64]),
+    a: Coef,
+    x: (&[f64], &[f64]),
+    b: Coef,
+    y: (&[f64], &[f64]),
+) {
+    let len = o.0.len().min(x.0.len()).min(y.0.len());
+    let (oh, ol) = (&mut o.0[..len], &mut o.1[..len]);
+    let (xh, xl, yh, yl) = (&x.0[..len], &x.1[..len], &y.0[..len], &y.1[..len]);
+    let (a1, a2) = split(a.h);
+    let (b1, b2) = split(b.h);
+    for c in 0..len {
+        let (p1, e1) = two_prod::<FMA>(a.h, a1, a2, xh[c]);
+        let (p2, e2) = two_prod::<FMA>(b.h, b1, b2, yh[c]);
+        let (r, er) = two_sum(p1, p2);
+        oh[c] = r;
+        ol[c] = ((er + e1) + e2) + ((a.h * xl[c] + a.l * xh[c]) + (b.h * yl[c] + b.l * yh[c]));
+    }
+}
+
+/// [`lin2_body`] compiled with AVX2 and FMA.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn lin2_fused(
+    o: (&mut [f64], &mut [f64]),
+    a: Coef,
+    x: (&[f64], &[f64]),
+    b: Coef,
+    y: (&[f64], &[f64]),
+) {
+    lin2_body::<true>(o, a, x, b, y);
+}
+
+/// The loop of [`axpy`]: `y += a x` entrywise.
+#[inline(always)]
+fn axpy_body<const FMA: bool>(y: (&mut [f64], &mut [f64]), a: Coef, x: (&[f64], &[f64])) {
+    let len = y.0.len().min(x.0.len());
+    let (yh, yl) = (&mut y.0[..len], &mut y.1[..len]);
+    let (xh, xl) = (&x.0[..len], &x.1[..len]);
+    let (a1, a2) = split(a.h);
+    for c in 0..len {
+        let (p1, e1) = two_prod::<FMA>(a.h, a1, a2, xh[c]);
+        let (r, er) = two_sum(yh[c], p1);
+        yl[c] = ((yl[c] + er) + e1) + (a.h * xl[c] + a.l * xh[c]);
+        yh[c] = r;
+    }
+}
+
+/// [`axpy_body`] compiled with AVX2 and FMA.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn axpy_fused(y: (&mut [f64], &mut [f64]), a: Coef, x: (&[f64], &[f64])) {
+    axpy_body::<true>(y, a, x);
 }
 
 /// The error bound of `a x + b y` (module docs) and the a-priori `(H, L)` of the result.
@@ -231,133 +276,329 @@ fn bound(a: Coef, x: (f64, f64, f64), b: Coef, y: (f64, f64, f64)) -> (f64, f64,
     )
 }
 
-/// `a x + b y` (the rows' own sums taken; `None` outside Dekker's range).
-fn lin2(a: Coef, x: &CRow, b: Coef, y: &CRow) -> Option<CRow> {
-    let len = x.len().min(y.len());
-    let mut out = CRow::zeros(len);
-    let (a1, a2) = split(a.h);
-    let (b1, b2) = split(b.h);
-    {
-        let (oh, ol) = (&mut out.h[..len], &mut out.l[..len]);
-        let (xh, xl, yh, yl) = (&x.h[..len], &x.l[..len], &y.h[..len], &y.l[..len]);
-        for c in 0..len {
-            let (p1, e1) = two_prod(a.h, a1, a2, xh[c]);
-            let (p2, e2) = two_prod(b.h, b1, b2, yh[c]);
-            let (r, er) = two_sum(p1, p2);
-            oh[c] = r;
-            ol[c] = ((er + e1) + e2) + ((a.h * xl[c] + a.l * xh[c]) + (b.h * yl[c] + b.l * yh[c]));
-        }
-    }
-    let (e, _, _) = bound(a, (x.hs, x.ls, x.e), b, (y.hs, y.ls, y.e));
-    out.e = e;
-    out.own_sums().then_some(out)
+/// The constants of one kind of row operation of a step.
+#[derive(Debug, Clone, Copy)]
+enum Kind {
+    /// `Delta^k`'s `(-1)^(k-i) C(k,i)`, `i < k/2`, and half the middle one (`i = k/2`, even
+    /// `k`).
+    Delta,
+    /// The forward recursion's `(k / (k-i), -i / (k-i))`, `1 <= i < k`.
+    Forward,
+    /// Farin's `(-1)^(n-i) i / (n C(n,i))`, `n = k - 1`, `1 <= i < k`.
+    Farin,
+    /// The perturbation's `-(-1)^(k-i) C(k,i) / (C(2k,k) - 2)`.
+    Perturb,
 }
 
-/// `y += a x` (a-priori sums: the same bound as [`lin2`] with `b = 1`).
-fn axpy(y: &mut CRow, a: Coef, x: &CRow) {
-    let len = y.len().min(x.len());
-    let (a1, a2) = split(a.h);
-    {
-        let (yh, yl) = (&mut y.h[..len], &mut y.l[..len]);
-        let (xh, xl) = (&x.h[..len], &x.l[..len]);
-        for c in 0..len {
-            let (p1, e1) = two_prod(a.h, a1, a2, xh[c]);
-            let (r, er) = two_sum(yh[c], p1);
-            yl[c] = ((yl[c] + er) + e1) + (a.h * xl[c] + a.l * xh[c]);
-            yh[c] = r;
-        }
-    }
-    let (e, hs, ls) = bound(a, (x.hs, x.ls, x.e), Coef::exact(1.0), (y.hs, y.ls, y.e));
-    (y.e, y.hs, y.ls) = (e, hs, ls);
+/// The constants of `kind` for step `k` (`k <= 64`), by index `i`, computed once per process
+/// in tracked double-word (a few operations on exact integers each); one not
+/// [`Coef::usable`] gets a NaN error bound, which makes the route give up.
+fn table(kind: Kind, k: usize) -> &'static [(Coef, Coef)] {
+    use std::sync::OnceLock;
+    const N: usize = cagd_core::MAX_DEGREE + 2;
+    static TABLES: [[OnceLock<Vec<(Coef, Coef)>>; N]; 4] =
+        [const { [const { OnceLock::new() }; N] }; 4];
+    let Some(cell) = TABLES[kind as usize].get(k) else {
+        return &[];
+    };
+    cell.get_or_init(|| {
+        let ki = to_i(k);
+        let one = Coef::exact(1.0);
+        let checked = |c: Coef| {
+            if c.usable() {
+                c
+            } else {
+                Coef { e: f64::NAN, ..c }
+            }
+        };
+        (0..=k)
+            .map(|i| {
+                let ii = to_i(i);
+                let c = match kind {
+                    Kind::Delta if 2 * i == k => sign_binom::<Dd>(k, i).mul(Tracked::of(0.5)),
+                    Kind::Delta => sign_binom::<Dd>(k, i),
+                    Kind::Forward | Kind::Farin if i == 0 || i == k => return (one, one),
+                    Kind::Forward => {
+                        let d = Tracked::<Dd>::small(ki - ii);
+                        let a = Coef::of(Tracked::small(ki).div(d));
+                        let b = Coef::of(Tracked::small(-ii).div(d));
+                        return (checked(a), checked(b));
+                    }
+                    Kind::Farin => {
+                        let n = ki - 1;
+                        let c =
+                            Tracked::small(ii).div(Tracked::small(n).mul(Tracked::binom(n, ii)));
+                        if (n - ii) % 2 == 1 { c.neg() } else { c }
+                    }
+                    Kind::Perturb => {
+                        let d = Tracked::<Dd>::binom(2 * ki, ki).sub(Tracked::of(2.0));
+                        sign_binom::<Dd>(k, i).div(d).neg()
+                    }
+                };
+                (checked(Coef::of(c)), one)
+            })
+            .collect()
+    })
 }
 
-/// `Delta^k s` of reversal-symmetric rows (as `steps::delta_k_symmetric`): `h + (-1)^k
-/// reversed(h)`, `h = sum_(i < k/2) (-1)^(k-i) C(k,i) s_i` (plus half the middle term for
-/// even `k`); the binomials are exact double-words.
-fn delta(s: &[CRow]) -> Option<CRow> {
-    let k = s.len() - 1;
-    let mut h = CRow::zeros(s[0].len());
-    for (i, row) in s.iter().enumerate().take(k.div_ceil(2)) {
-        axpy(&mut h, Coef::of(sign_binom(k, i)), row);
+/// A row's bounds `(H, L, E)`: `H >= sum |h|`, `L >= sum |l|`, `E >= sum |h + l - exact|`.
+type St = (f64, f64, f64);
+
+/// The sums `sum |h|` and `sum |l|` rounded up (`1 + 64 γ_8` covers the rounding of a sum of
+/// at most 130 non-negative terms in four lanes), or `None` if an `h` is outside the range
+/// where Dekker's product is exact (`0 < |h| < TINY`, or `sum |h| >= 2^900`).
+#[inline(always)]
+fn sums_body(h: &[f64], l: &[f64]) -> Option<(f64, f64)> {
+    let (mut hs, mut ls, mut tiny) = ([0.0f64; 4], [0.0f64; 4], [0u64; 4]);
+    let mut hc = h.chunks_exact(4);
+    let mut lc = l.chunks_exact(4);
+    // `0 < a < TINY` as `a.to_bits() - 1 < TINY.to_bits() - 1` (`a = 0` wraps around).
+    let lim = TINY.to_bits() - 1;
+    for (h, l) in (&mut hc).zip(&mut lc) {
+        for j in 0..4 {
+            let a = h[j].abs();
+            hs[j] += a;
+            ls[j] += l[j].abs();
+            tiny[j] |= u64::from(a.to_bits().wrapping_sub(1) < lim);
+        }
+    }
+    for (h, l) in hc.remainder().iter().zip(lc.remainder()) {
+        let a = h.abs();
+        hs[0] += a;
+        ls[0] += l.abs();
+        tiny[0] |= u64::from(a.to_bits().wrapping_sub(1) < lim);
+    }
+    let up = 1.0 + gamma(8) * 64.0;
+    let hs = ((hs[0] + hs[1]) + (hs[2] + hs[3])) * up;
+    let ls = ((ls[0] + ls[1]) + (ls[2] + ls[3])) * up;
+    let ok = (tiny[0] | tiny[1] | tiny[2] | tiny[3]) == 0 && hs < 2f64.powi(900);
+    ok.then_some((hs, ls))
+}
+
+/// [`sums_body`] compiled with AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn sums_fused(h: &[f64], l: &[f64]) -> Option<(f64, f64)> {
+    sums_body(h, l)
+}
+
+/// [`sums_body`] (the AVX2 instance where the CPU has it: the same sums).
+fn sums(h: &[f64], l: &[f64]) -> Option<(f64, f64)> {
+    if fused() {
+        #[cfg(target_arch = "x86_64")]
+        #[allow(unsafe_code, reason = "the call of a `target_feature` function")]
+        // SAFETY: the CPU has AVX2 and FMA (`fused`), the function's only requirement; the
+        // function is itself safe code.
+        return unsafe { sums_fused(h, l) };
+    }
+    sums_body(h, l)
+}
+
+/// `o = a x + b y` entrywise; returns `E` of the result ([`bound`]).
+fn lin2_into(
+    o: (&mut [f64], &mut [f64]),
+    a: Coef,
+    x: ((&[f64], &[f64]), St),
+    b: Coef,
+    y: ((&[f64], &[f64]), St),
+) -> f64 {
+    if fused() {
+        #[cfg(target_arch = "x86_64")]
+        #[allow(unsafe_code, reason = "the call of a `target_feature` function")]
+        // SAFETY: as in [`sums`].
+        unsafe {
+            lin2_fused(o, a, x.0, b, y.0);
+        }
+    } else {
+        lin2_body::<false>(o, a, x.0, b, y.0);
+    }
+    bound(a, x.1, b, y.1).0
+}
+
+/// `y += a x` entrywise; returns the bounds of the result ([`bound`] with `b = 1`, a-priori
+/// `H` and `L`).
+fn axpy_into(y: (&mut [f64], &mut [f64]), ys: St, a: Coef, x: ((&[f64], &[f64]), St)) -> St {
+    if fused() {
+        #[cfg(target_arch = "x86_64")]
+        #[allow(unsafe_code, reason = "the call of a `target_feature` function")]
+        // SAFETY: as in [`sums`].
+        unsafe {
+            axpy_fused(y, a, x.0);
+        }
+    } else {
+        axpy_body::<false>(y, a, x.0);
+    }
+    let (e, hs, ls) = bound(a, x.1, Coef::exact(1.0), ys);
+    (hs, ls, e)
+}
+
+/// The first half of a step's rows: up to `rows` rows of `len` entries in two flat arrays
+/// (two blocks per build, used in turn), with their bounds (one per row in use).
+struct Block {
+    h: Vec<f64>,
+    l: Vec<f64>,
+    len: usize,
+    st: Vec<St>,
+}
+
+impl Drop for Block {
+    fn drop(&mut self) {
+        recycle_f64(std::mem::take(&mut self.h));
+        recycle_f64(std::mem::take(&mut self.l));
+    }
+}
+
+impl Block {
+    /// Room for `rows` rows of `len` entries (zeros), `rows` in use.
+    fn new(rows: usize, len: usize) -> Self {
+        Self {
+            h: scratch_f64(rows * len),
+            l: scratch_f64(rows * len),
+            len,
+            st: vec![(0.0, 0.0, 0.0); rows],
+        }
+    }
+
+    /// `rows` rows in use (their entries are written before they are read).
+    fn reuse(&mut self, rows: usize) {
+        self.st.clear();
+        self.st.resize(rows, (0.0, 0.0, 0.0));
+    }
+
+    /// Row `i` with its bounds.
+    fn row(&self, i: usize) -> ((&[f64], &[f64]), St) {
+        let r = i * self.len..(i + 1) * self.len;
+        ((&self.h[r.clone()], &self.l[r]), self.st[i])
+    }
+
+    /// Row `i`, mutable.
+    fn row_mut(&mut self, i: usize) -> (&mut [f64], &mut [f64]) {
+        let r = i * self.len..(i + 1) * self.len;
+        (&mut self.h[r.clone()], &mut self.l[r])
+    }
+
+    /// Row `i - 1` and row `i` (mutable), `i >= 1`.
+    #[allow(clippy::type_complexity, reason = "two rows of two arrays")]
+    fn pair_mut(&mut self, i: usize) -> ((&[f64], &[f64]), (&mut [f64], &mut [f64])) {
+        let len = self.len;
+        let (h0, h1) = self.h.split_at_mut(i * len);
+        let (l0, l1) = self.l.split_at_mut(i * len);
+        (
+            (&h0[(i - 1) * len..], &l0[(i - 1) * len..]),
+            (&mut h1[..len], &mut l1[..len]),
+        )
+    }
+
+    /// Replaces row `i`'s `H` and `L` by its own sums; `false` outside Dekker's range.
+    fn own_sums(&mut self, i: usize) -> bool {
+        let ((h, l), _) = self.row(i);
+        match sums(h, l) {
+            Some((hs, ls)) => {
+                (self.st[i].0, self.st[i].1) = (hs, ls);
+                true
+            }
+            None => false,
+        }
+    }
+}
+
+/// `Delta^k s` of reversal-symmetric rows (as `steps::delta_k_symmetric`; `s` holds rows
+/// `0..=k/2`): `h + (-1)^k reversed(h)`, `h = sum_(i < k/2) (-1)^(k-i) C(k,i) s_i` (plus half
+/// the middle term for even `k`); the binomials are exact double-words.
+fn delta(s: &Block, k: usize) -> Option<CRow> {
+    let len = s.len;
+    let mut h = CRow::zeros(len);
+    let add = |h: &mut CRow, c: Coef, i: usize| {
+        let st = h.st();
+        (h.hs, h.ls, h.e) = axpy_into((&mut h.h, &mut h.l), st, c, s.row(i));
+    };
+    // `(-1)^(k-i) C(k,i)`, `i < k/2`, then half the middle one for even `k`.
+    let coefs = table(Kind::Delta, k);
+    for i in 0..k.div_ceil(2) {
+        add(&mut h, coefs[i].0, i);
     }
     if k % 2 == 0 {
-        let c = sign_binom(k, k / 2).mul(Tracked::of(0.5));
-        axpy(&mut h, Coef::of(c), &s[k / 2]);
+        add(&mut h, coefs[k / 2].0, k / 2);
     }
+    // The mirror image of `h`, then `h ± reversed(h)`.
+    let mut rev = CRow::from_parts(&h.h, &h.l, h.st());
+    rev.h.reverse();
+    rev.l.reverse();
     let sign = if k % 2 == 1 { -1.0 } else { 1.0 };
-    lin2(Coef::exact(1.0), &h, Coef::exact(sign), &h.reversed())
+    let mut out = CRow::zeros(len);
+    out.e = lin2_into(
+        (&mut out.h, &mut out.l),
+        Coef::exact(1.0),
+        ((&h.h, &h.l), h.st()),
+        Coef::exact(sign),
+        ((&rev.h, &rev.l), rev.st()),
+    );
+    out.own_sums().then_some(out)
 }
 
 /// The forward recursion `P_i = (k s_i - i P_(i-1)) / (k - i)`, `i = 0..=last`, as
 /// `P_i = (k / (k-i)) s_i - (i / (k-i)) P_(i-1)` with double-word constants.
-fn forward(s: &[CRow], k: usize, last: usize) -> Option<Vec<CRow>> {
-    let mut out: Vec<CRow> = Vec::with_capacity(last + 1);
-    out.push(s[0].copy());
+fn forward(s: &Block, k: usize, last: usize, out: &mut Block) -> Option<()> {
+    out.reuse(last + 1);
+    let ((h0, l0), st0) = s.row(0);
+    out.row_mut(0).0.copy_from_slice(h0);
+    out.row_mut(0).1.copy_from_slice(l0);
+    out.st[0] = st0;
+    let coefs = table(Kind::Forward, k);
     for i in 1..=last {
-        let d = Tracked::<Dd>::small(to_i(k - i));
-        let a = Coef::of(Tracked::small(to_i(k)).div(d));
-        let b = Coef::of(Tracked::small(-to_i(i)).div(d));
-        let next = lin2(a, &s[i], b, &out[i - 1])?;
-        out.push(next);
+        let (a, b) = coefs[i];
+        let ys = out.st[i - 1];
+        let (prev, o) = out.pair_mut(i);
+        let e = lin2_into(o, a, s.row(i), b, (prev, ys));
+        out.st[i].2 = e;
+        if !out.own_sums(i) {
+            return None;
+        }
     }
-    Some(out)
+    Some(())
 }
 
-/// One step `k -> k-1` on the first half of reversal-symmetric rows: the output's first
-/// half and the step's bound term `(coef, Delta^k s)`; `None` outside Dekker's range.
-fn step(method: Method, s: &[CRow]) -> Option<(Vec<CRow>, (f64, CRow))> {
-    let k = s.len() - 1;
+/// One step `k -> k-1` on the first half of reversal-symmetric rows (`s`: rows
+/// `0..=k/2`): the output's first half and the step's bound term `(coef, Delta^k s)`;
+/// `None` outside Dekker's range.
+fn step(method: Method, s: &mut Block, rows: &mut Block, k: usize) -> Option<(f64, CRow)> {
     let n = k - 1;
     let half = n / 2;
-    let d = delta(s)?;
-    let rows = match method {
+    let d = delta(s, k)?;
+    let dv = ((&d.h[..], &d.l[..]), d.st());
+    match method {
         Method::Farin => {
             // `steps::farin`: `Q_i = P^I_i + (i/n) (-1)^(n-i) delta / C(n,i)`.
-            let mut rows = forward(s, k, half)?;
-            let nn = Tracked::<Dd>::small(to_i(n));
-            for (i, row) in rows.iter_mut().enumerate().skip(1) {
-                let mut c = Tracked::small(to_i(i)).div(nn.mul(Tracked::binom(to_i(n), to_i(i))));
-                if (n - i) % 2 == 1 {
-                    c = c.neg();
-                }
-                let c = Coef::of(c);
-                if !c.usable() {
-                    return None;
-                }
-                axpy(row, c, &d);
-                if !row.own_sums() {
+            forward(s, k, half, rows)?;
+            let coefs = table(Kind::Farin, k);
+            for i in 1..=half {
+                let st = rows.st[i];
+                rows.st[i] = axpy_into(rows.row_mut(i), st, coefs[i].0, dv);
+                if !rows.own_sums(i) {
                     return None;
                 }
             }
-            rows
         }
         Method::Perturb => {
-            // `pbar_i = s_i - (-1)^(k-i) C(k,i) delta / (C(2k,k) - 2)`, `0 < i <= n/2`, then
-            // the forward half of the inverse elevation.
-            let dd = Tracked::<Dd>::binom(2 * to_i(k), to_i(k)).sub(Tracked::of(2.0));
-            let mut pbar: Vec<CRow> = Vec::with_capacity(half + 1);
-            pbar.push(s[0].copy());
-            for (i, row) in s.iter().enumerate().take(half + 1).skip(1) {
-                let c = Coef::of(sign_binom::<Dd>(k, i).div(dd).neg());
-                if !c.usable() {
+            // `pbar_i = s_i - (-1)^(k-i) C(k,i) delta / (C(2k,k) - 2)`, `0 < i <= n/2` (in
+            // place: `s` is not read again), then the forward half of the inverse elevation.
+            let coefs = table(Kind::Perturb, k);
+            for i in 1..=half {
+                let st = s.st[i];
+                s.st[i] = axpy_into(s.row_mut(i), st, coefs[i].0, dv);
+                if !s.own_sums(i) {
                     return None;
                 }
-                let mut p = row.copy();
-                axpy(&mut p, c, &d);
-                if !p.own_sums() {
-                    return None;
-                }
-                pbar.push(p);
             }
-            forward(&pbar, k, half)?
+            forward(s, k, half, rows)?;
         }
         _ => return None,
-    };
+    }
     let coef = match method {
         Method::Perturb => perturb_coef(k),
         _ => residual_coef_cached(method, k)?,
     };
-    Some((rows, (coef, d)))
+    Some((coef, d))
 }
 
 /// The operator `n -> m` of Farin's method or the perturbation method by compensated steps:
@@ -372,37 +613,37 @@ pub(crate) fn stepwise(
     if !matches!(method, Method::Farin | Method::Perturb) || m >= n {
         return None;
     }
-    // Only the first half of each step's input is read (`steps::mirror`).
-    let mut s: Vec<CRow> = (0..=n)
-        .map(|i| {
-            if i <= n / 2 {
-                CRow::unit(n + 1, i)
-            } else {
-                CRow::empty()
-            }
-        })
-        .collect();
+    // Only the first half of each step's input is read (`steps::mirror`): rows `0..=k/2`.
+    let len = n + 1;
+    let mut s = Block::new(n / 2 + 1, len);
+    for i in 0..=n / 2 {
+        s.row_mut(i).0[i] = 1.0;
+        s.st[i] = (1.0, 0.0, 0.0);
+    }
+    let mut rows = Block::new(n / 2 + 1, len);
     let mut terms = Vec::with_capacity(n - m);
     for k in ((m + 1)..=n).rev() {
-        let (mut rows, term) = step(method, &s)?;
-        let (mut err, mut mag) = (0.0f64, 0.0f64);
-        for r in &rows {
-            err = err.max(r.e);
-            mag = mag.max(r.hs);
-        }
-        if err.is_nan() || err > super::TOLERANCE * mag {
+        let term = step(method, &mut s, &mut rows, k)?;
+        // (A NaN bound, from a constant not usable, fails the comparison.)
+        let mag = rows.st.iter().fold(0.0f64, |a, st| a.max(st.0));
+        if rows.st.iter().any(|st| !(st.2 <= super::TOLERANCE * mag)) {
             return None;
         }
         terms.push(term);
-        rows.extend((rows.len()..k).map(|_| CRow::empty()));
-        s = rows;
+        std::mem::swap(&mut s, &mut rows);
     }
-    let last = s.len() - 1;
-    for i in 0..=last {
-        if s[i].len() == 0 {
-            let r = s[last - i].reversed();
-            s[i] = r;
-        }
-    }
-    Some((s, terms))
+    // Rows `m/2 + 1..=m` are the mirror images of rows `m - i`.
+    let out = (0..=m)
+        .map(|i| {
+            let j = if i <= m / 2 { i } else { m - i };
+            let ((h, l), st) = s.row(j);
+            let mut r = CRow::from_parts(h, l, st);
+            if j != i {
+                r.h.reverse();
+                r.l.reverse();
+            }
+            r
+        })
+        .collect();
+    Some((out, terms))
 }
