@@ -48,12 +48,12 @@ const U: f64 = f64::EPSILON / 2.0;
 /// The margin for the rounding of the bound computations themselves.
 const MARGIN: f64 = 1.0 + 1e-9;
 
-/// `γ_k = k u / (1 - k u)`.
-#[allow(clippy::cast_precision_loss, reason = "k <= 8")]
-fn gamma(k: usize) -> f64 {
-    let ku = k as f64 * U;
-    ku / (1.0 - ku)
-}
+/// `γ_7 = 7 u / (1 - 7 u)`.
+const GAMMA7: f64 = 7.0 * U / (1.0 - 7.0 * U);
+
+/// `1 + 64 γ_8`: covers the rounding of a sum of at most 130 non-negative terms in four
+/// lanes (`γ_(n+3)` for `n` terms).
+const SUM_UP: f64 = 1.0 + 64.0 * (8.0 * U / (1.0 - 8.0 * U));
 
 /// The smallest non-zero magnitude of a row's high part (about `2^-697`: with constants of
 /// magnitude at least `2^-200`, Dekker's product stays exact).
@@ -198,7 +198,7 @@ fn fused() -> bool {
     }
 }
 
-/// The loop of [`lin2`]: `o = a x + b y` entrywise (arrays of one length).
+/// The loop of [`lin2_into`]: `o = a x + b y` entrywise (arrays of one length).
 #[inline(always)]
 fn lin2_body<const FMA: bool>(
     o: (&mut [f64], &mut [f64]),
@@ -234,7 +234,7 @@ fn lin2_fused(
     lin2_body::<true>(o, a, x, b, y);
 }
 
-/// The loop of [`axpy`]: `y += a x` entrywise.
+/// The loop of [`axpy_into`]: `y += a x` entrywise.
 #[inline(always)]
 fn axpy_body<const FMA: bool>(y: (&mut [f64], &mut [f64]), a: Coef, x: (&[f64], &[f64])) {
     let len = y.0.len().min(x.0.len());
@@ -266,15 +266,18 @@ fn bound(a: Coef, x: (f64, f64, f64), b: Coef, y: (f64, f64, f64)) -> (f64, f64,
         + a.e * (x.0 + x.1)
         + (bh + b.l.abs() + b.e) * y.2
         + b.e * (y.0 + y.1)
-        + gamma(7) * z
+        + GAMMA7 * z
         + U * s
         + UNDERFLOW;
     (
         e * MARGIN,
         (1.0 + U) * (1.0 + U) * t * MARGIN,
-        (1.0 + gamma(7)) * z * MARGIN,
+        (1.0 + GAMMA7) * z * MARGIN,
     )
 }
+
+/// The rows (`m + 1`) and bound terms `(coef, functional)` of a compensated build.
+pub(crate) type Built = (Vec<CRow>, Vec<(f64, CRow)>);
 
 /// The constants of one kind of row operation of a step.
 #[derive(Debug, Clone, Copy)]
@@ -296,8 +299,8 @@ enum Kind {
 fn table(kind: Kind, k: usize) -> &'static [(Coef, Coef)] {
     use std::sync::OnceLock;
     const N: usize = cagd_core::MAX_DEGREE + 2;
-    static TABLES: [[OnceLock<Vec<(Coef, Coef)>>; N]; 4] =
-        [const { [const { OnceLock::new() }; N] }; 4];
+    type Table = OnceLock<Vec<(Coef, Coef)>>;
+    static TABLES: [[Table; N]; 4] = [const { [const { OnceLock::new() }; N] }; 4];
     let Some(cell) = TABLES[kind as usize].get(k) else {
         return &[];
     };
@@ -349,29 +352,30 @@ type St = (f64, f64, f64);
 /// where Dekker's product is exact (`0 < |h| < TINY`, or `sum |h| >= 2^900`).
 #[inline(always)]
 fn sums_body(h: &[f64], l: &[f64]) -> Option<(f64, f64)> {
-    let (mut hs, mut ls, mut tiny) = ([0.0f64; 4], [0.0f64; 4], [0u64; 4]);
+    // `low[j]`: the least non-zero `|h|` of lane `j` (infinity if none).
+    let (mut hs, mut ls, mut low) = ([0.0f64; 4], [0.0f64; 4], [f64::INFINITY; 4]);
     let mut hc = h.chunks_exact(4);
     let mut lc = l.chunks_exact(4);
-    // `0 < a < TINY` as `a.to_bits() - 1 < TINY.to_bits() - 1` (`a = 0` wraps around).
-    let lim = TINY.to_bits() - 1;
     for (h, l) in (&mut hc).zip(&mut lc) {
         for j in 0..4 {
             let a = h[j].abs();
             hs[j] += a;
             ls[j] += l[j].abs();
-            tiny[j] |= u64::from(a.to_bits().wrapping_sub(1) < lim);
+            let t = if a > 0.0 { a } else { f64::INFINITY };
+            low[j] = if t < low[j] { t } else { low[j] };
         }
     }
     for (h, l) in hc.remainder().iter().zip(lc.remainder()) {
         let a = h.abs();
         hs[0] += a;
         ls[0] += l.abs();
-        tiny[0] |= u64::from(a.to_bits().wrapping_sub(1) < lim);
+        let t = if a > 0.0 { a } else { f64::INFINITY };
+        low[0] = if t < low[0] { t } else { low[0] };
     }
-    let up = 1.0 + gamma(8) * 64.0;
-    let hs = ((hs[0] + hs[1]) + (hs[2] + hs[3])) * up;
-    let ls = ((ls[0] + ls[1]) + (ls[2] + ls[3])) * up;
-    let ok = (tiny[0] | tiny[1] | tiny[2] | tiny[3]) == 0 && hs < 2f64.powi(900);
+    let hs = ((hs[0] + hs[1]) + (hs[2] + hs[3])) * SUM_UP;
+    let ls = ((ls[0] + ls[1]) + (ls[2] + ls[3])) * SUM_UP;
+    // (A NaN entry makes `hs` NaN, refused by the comparison.)
+    let ok = low.iter().all(|&x| x >= TINY) && hs < 2f64.powi(900);
     ok.then_some((hs, ls))
 }
 
@@ -514,8 +518,8 @@ fn delta(s: &Block, k: usize) -> Option<CRow> {
     };
     // `(-1)^(k-i) C(k,i)`, `i < k/2`, then half the middle one for even `k`.
     let coefs = table(Kind::Delta, k);
-    for i in 0..k.div_ceil(2) {
-        add(&mut h, coefs[i].0, i);
+    for (i, c) in coefs.iter().enumerate().take(k.div_ceil(2)) {
+        add(&mut h, c.0, i);
     }
     if k % 2 == 0 {
         add(&mut h, coefs[k / 2].0, k / 2);
@@ -545,8 +549,7 @@ fn forward(s: &Block, k: usize, last: usize, out: &mut Block) -> Option<()> {
     out.row_mut(0).1.copy_from_slice(l0);
     out.st[0] = st0;
     let coefs = table(Kind::Forward, k);
-    for i in 1..=last {
-        let (a, b) = coefs[i];
+    for (i, &(a, b)) in coefs.iter().enumerate().take(last + 1).skip(1) {
         let ys = out.st[i - 1];
         let (prev, o) = out.pair_mut(i);
         let e = lin2_into(o, a, s.row(i), b, (prev, ys));
@@ -571,9 +574,9 @@ fn step(method: Method, s: &mut Block, rows: &mut Block, k: usize) -> Option<(f6
             // `steps::farin`: `Q_i = P^I_i + (i/n) (-1)^(n-i) delta / C(n,i)`.
             forward(s, k, half, rows)?;
             let coefs = table(Kind::Farin, k);
-            for i in 1..=half {
+            for (i, c) in coefs.iter().enumerate().take(half + 1).skip(1) {
                 let st = rows.st[i];
-                rows.st[i] = axpy_into(rows.row_mut(i), st, coefs[i].0, dv);
+                rows.st[i] = axpy_into(rows.row_mut(i), st, c.0, dv);
                 if !rows.own_sums(i) {
                     return None;
                 }
@@ -583,9 +586,9 @@ fn step(method: Method, s: &mut Block, rows: &mut Block, k: usize) -> Option<(f6
             // `pbar_i = s_i - (-1)^(k-i) C(k,i) delta / (C(2k,k) - 2)`, `0 < i <= n/2` (in
             // place: `s` is not read again), then the forward half of the inverse elevation.
             let coefs = table(Kind::Perturb, k);
-            for i in 1..=half {
+            for (i, c) in coefs.iter().enumerate().take(half + 1).skip(1) {
                 let st = s.st[i];
-                s.st[i] = axpy_into(s.row_mut(i), st, coefs[i].0, dv);
+                s.st[i] = axpy_into(s.row_mut(i), st, c.0, dv);
                 if !s.own_sums(i) {
                     return None;
                 }
@@ -605,11 +608,7 @@ fn step(method: Method, s: &mut Block, rows: &mut Block, k: usize) -> Option<(f6
 /// its rows (`m + 1`) and bound terms, or `None` (another method, outside Dekker's range, or
 /// a step's proven error already above [`super::TOLERANCE`] of its rows' magnitudes: the
 /// route would be refused, and the next one is tried).
-pub(crate) fn stepwise(
-    method: Method,
-    n: usize,
-    m: usize,
-) -> Option<(Vec<CRow>, Vec<(f64, CRow)>)> {
+pub(crate) fn stepwise(method: Method, n: usize, m: usize) -> Option<Built> {
     if !matches!(method, Method::Farin | Method::Perturb) || m >= n {
         return None;
     }
@@ -626,7 +625,11 @@ pub(crate) fn stepwise(
         let term = step(method, &mut s, &mut rows, k)?;
         // (A NaN bound, from a constant not usable, fails the comparison.)
         let mag = rows.st.iter().fold(0.0f64, |a, st| a.max(st.0));
-        if rows.st.iter().any(|st| !(st.2 <= super::TOLERANCE * mag)) {
+        let within = |e: f64| {
+            e.partial_cmp(&(super::TOLERANCE * mag))
+                .is_some_and(|o| o.is_le())
+        };
+        if !rows.st.iter().all(|st| within(st.2)) {
             return None;
         }
         terms.push(term);

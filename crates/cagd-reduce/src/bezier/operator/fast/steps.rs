@@ -348,11 +348,21 @@ fn farin<B: Base>(s: &[Row<B>], delta: &Row<B>, symmetric: bool) -> Vec<Row<B>> 
     rows
 }
 
-/// The perturbation bound factor `W_k / (C(2k,k) - 2)` rounded up (as `one_step.rs`).
+/// The perturbation bound factor `W_k / (C(2k,k) - 2)` rounded up (as `one_step.rs`),
+/// remembered per `k` for the process (a constant of the step, computed with big rationals).
 pub(crate) fn perturb_coef(k: usize) -> f64 {
-    let d = crate::exact::binom_q(2 * to_i(k), to_i(k)) - crate::exact::frac(2, 1);
-    crate::bezier::wn_table::perturbation_error_factor(k) / crate::exact::q_to_f64(&d)
-        * (1.0 + 8.0 * f64::EPSILON)
+    use std::sync::OnceLock;
+    const N: usize = cagd_core::MAX_DEGREE + 2;
+    static MEMO: [OnceLock<f64>; N] = [const { OnceLock::new() }; N];
+    let exact = || {
+        let d = crate::exact::binom_q(2 * to_i(k), to_i(k)) - crate::exact::frac(2, 1);
+        crate::bezier::wn_table::perturbation_error_factor(k) / crate::exact::q_to_f64(&d)
+            * (1.0 + 8.0 * f64::EPSILON)
+    };
+    match MEMO.get(k) {
+        Some(cell) => *cell.get_or_init(exact),
+        None => exact(),
+    }
 }
 
 /// Piegl–Tiller step (as `one_step::piegl_tiller`).
