@@ -13,7 +13,7 @@ pub(crate) struct Dd {
 }
 
 /// `s + e = a + b` exactly (Knuth's TwoSum).
-fn two_sum(a: f64, b: f64) -> (f64, f64) {
+pub(crate) fn two_sum(a: f64, b: f64) -> (f64, f64) {
     let s = a + b;
     let bb = s - a;
     (s, (a - (s - bb)) + (b - bb))
@@ -26,7 +26,7 @@ fn fast_two_sum(a: f64, b: f64) -> (f64, f64) {
 }
 
 /// Veltkamp split of `a` into two halves of 26 bits (no overflow for `|a| < 2^996`).
-fn split(a: f64) -> (f64, f64) {
+pub(crate) fn split(a: f64) -> (f64, f64) {
     let c = 134_217_729.0 * a; // 2^27 + 1
     let hi = c - (c - a);
     (hi, a - hi)

@@ -10,6 +10,7 @@
 //! The proven errors travel with the operator (`Operator::own_bound` adds them), so a
 //! method's own bound stays a true bound for the matrix actually used.
 
+mod compensated;
 mod correlation;
 mod dd;
 mod ginv_ends;
@@ -148,14 +149,41 @@ fn eck<B: Base>(n: usize, m: usize, mixed: bool) -> Rows<B> {
     (rows, terms)
 }
 
+/// A row of a builder's result: its entries rounded to `f64` and a bound of the sum of
+/// their errors.
+trait Rounded {
+    /// `(values, bound of sum_c |value_c - exact_c|)`.
+    fn rounded(&self) -> (Vec<f64>, f64);
+    /// The number of entries.
+    fn len(&self) -> usize;
+}
+
+impl<B: Base> Rounded for Row<B> {
+    fn rounded(&self) -> (Vec<f64>, f64) {
+        Row::rounded(self)
+    }
+    fn len(&self) -> usize {
+        self.v.len()
+    }
+}
+
+impl Rounded for compensated::CRow {
+    fn rounded(&self) -> (Vec<f64>, f64) {
+        compensated::CRow::rounded(self)
+    }
+    fn len(&self) -> usize {
+        compensated::CRow::len(self)
+    }
+}
+
 /// Rounds the rows and checks the proven errors against `tol` (relative).
-fn finish<B: Base>(
-    rows: &[Row<B>],
-    terms: &[(f64, Row<B>)],
+fn finish<R: Rounded>(
+    rows: &[R],
+    terms: &[(f64, R)],
     route: OperatorRoute,
     tol: f64,
 ) -> Option<Built> {
-    let mut matrix = Vec::with_capacity(rows.len() * rows.first().map_or(0, |r| r.v.len()));
+    let mut matrix = Vec::with_capacity(rows.len() * rows.first().map_or(0, Rounded::len));
     let (mut error, mut norm) = (0.0f64, 0.0f64);
     for row in rows {
         let (v, e) = row.rounded();
@@ -184,7 +212,7 @@ fn finish<B: Base>(
     // cancellation even in double-word; their matrix is still within [`TOLERANCE`].
     #[allow(clippy::cast_precision_loss, reason = "n <= 64")]
     let allowance =
-        (rows.first().map_or(0, |r| r.v.len()) as f64 + 2.0) * f64::EPSILON * (norm + ts + 1.0);
+        (rows.first().map_or(0, Rounded::len) as f64 + 2.0) * f64::EPSILON * (norm + ts + 1.0);
     if !(ok(te, ts.max(1.0)) || (te.is_finite() && te <= allowance)) {
         return None;
     }
@@ -215,6 +243,13 @@ pub(crate) fn build(method: Method, n: usize, m: usize) -> Option<Built> {
         // A one-degree truncation goes from the top (no alternating sums): always try f64.
         mm >= 0 && n - m > 1 && truncation::f64_hopeless(family, nn, mm, tol)
     });
+    // Farin and the perturbation: compensated steps first (`compensated.rs`), accepted at
+    // the rounding level.
+    if let Some((rows, terms)) = compensated::stepwise(method, n, m) {
+        if let Some(b) = finish(&rows, &terms, OperatorRoute::DoubleWord, strict) {
+            return Some(b);
+        }
+    }
     if !skip_f64 {
         if let Some((rows, terms)) = rows_of::<f64>(method, n, m, false) {
             let tol = if terms.is_empty() { TOLERANCE } else { strict };

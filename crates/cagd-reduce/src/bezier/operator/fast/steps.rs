@@ -348,11 +348,21 @@ fn farin<B: Base>(s: &[Row<B>], delta: &Row<B>, symmetric: bool) -> Vec<Row<B>> 
     rows
 }
 
-/// The perturbation bound factor `W_k / (C(2k,k) - 2)` rounded up (as `one_step.rs`).
-fn perturb_coef(k: usize) -> f64 {
-    let d = crate::exact::binom_q(2 * to_i(k), to_i(k)) - crate::exact::frac(2, 1);
-    crate::bezier::wn_table::perturbation_error_factor(k) / crate::exact::q_to_f64(&d)
-        * (1.0 + 8.0 * f64::EPSILON)
+/// The perturbation bound factor `W_k / (C(2k,k) - 2)` rounded up (as `one_step.rs`),
+/// remembered per `k` for the process (a constant of the step, computed with big rationals).
+pub(crate) fn perturb_coef(k: usize) -> f64 {
+    use std::sync::OnceLock;
+    const N: usize = cagd_core::MAX_DEGREE + 2;
+    static MEMO: [OnceLock<f64>; N] = [const { OnceLock::new() }; N];
+    let exact = || {
+        let d = crate::exact::binom_q(2 * to_i(k), to_i(k)) - crate::exact::frac(2, 1);
+        crate::bezier::wn_table::perturbation_error_factor(k) / crate::exact::q_to_f64(&d)
+            * (1.0 + 8.0 * f64::EPSILON)
+    };
+    match MEMO.get(k) {
+        Some(cell) => *cell.get_or_init(exact),
+        None => exact(),
+    }
 }
 
 /// Piegl–Tiller step (as `one_step::piegl_tiller`).
@@ -484,7 +494,7 @@ pub(crate) fn residual_coef<B: Base>(method: Method, k: usize) -> Option<f64> {
 /// [`residual_coef`] in double-word, remembered per `(method, k)` for the process: a
 /// constant of the step (like the `W_n` table of `wn_table.rs`), whose `O(k)` evaluation on
 /// one-column rows is allocation-bound (about 40 % of a Forrest build at `(30,15)`).
-fn residual_coef_cached(method: Method, k: usize) -> Option<f64> {
+pub(crate) fn residual_coef_cached(method: Method, k: usize) -> Option<f64> {
     use std::collections::HashMap;
     use std::sync::{OnceLock, RwLock};
     type Memo = RwLock<HashMap<((u8, u64, u64), usize), Option<f64>>>;

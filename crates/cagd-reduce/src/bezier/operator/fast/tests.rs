@@ -215,6 +215,37 @@ fn no_exact_fallback_at_degree_64() {
     }
 }
 
+/// The compensated route of Farin's and the perturbation method (`compensated.rs`) at every
+/// pair `n <= 16` and at `(20,10)`, `(24,12)`, `(30,15)`: proven at the rounding level
+/// (`build`'s `strict`), every row of the matrix and every bound term within its proven
+/// error of the exact oracle, and `build` takes it there.
+#[test]
+fn compensated_route_matches_the_exact_oracle() {
+    let mut pairs: Vec<(usize, usize)> =
+        (1..=16).flat_map(|n| (0..n).map(move |m| (n, m))).collect();
+    pairs.extend([(20, 10), (24, 12), (30, 15)]);
+    for method in [Method::Farin, Method::Perturb] {
+        for &(n, m) in &pairs {
+            if method.check(n, m).is_err() {
+                continue;
+            }
+            #[allow(clippy::cast_precision_loss, reason = "n <= 30")]
+            let strict = 2.0 * (n as f64 + 3.0) * f64::EPSILON;
+            let (rows, terms) = compensated::stepwise(method, n, m)
+                .unwrap_or_else(|| panic!("{method:?} {n}->{m}: given up"));
+            let b = finish(&rows, &terms, OperatorRoute::DoubleWord, strict)
+                .unwrap_or_else(|| panic!("{method:?} {n}->{m}: not proven at {strict:e}"));
+            let (e, te, _) = compare_built(method, n, m, &b).unwrap();
+            assert!(
+                e <= strict && te <= 1.0,
+                "{method:?} {n}->{m}: {e:e} {te:e}"
+            );
+            let built = build(method, n, m).unwrap();
+            assert_eq!(built.matrix, b.matrix, "{method:?} {n}->{m}: build's route");
+        }
+    }
+}
+
 /// Farin at `(64,10)`: its split form gives up in double-word, the direct form is proven
 /// (a regression: the give-up once ended the fast routes, and the exact route took 3 s).
 #[test]
@@ -301,7 +332,7 @@ fn profile_l2_c0_30_15() {
 #[test]
 #[ignore = "diagnostic"]
 fn diag_route_errors() {
-    fn summary<B: Base>(rows: &[Row<B>], terms: &[(f64, Row<B>)], n: usize) -> Option<String> {
+    fn summary<R: Rounded>(rows: &[R], terms: &[(f64, R)], n: usize) -> Option<String> {
         let b = finish(rows, terms, OperatorRoute::F64, 1e300)?;
         let norm = b
             .matrix
@@ -335,7 +366,10 @@ fn diag_route_errors() {
             let d = rows_of::<dd::Dd>(method, n, m, false)
                 .and_then(|(rows, terms)| summary(&rows, &terms, n))
                 .unwrap_or_else(|| "given up".to_string());
-            println!("{method:?} ({n},{m}) f64: {f}; double-word: {d}");
+            let c = compensated::stepwise(method, n, m)
+                .and_then(|(rows, terms)| summary(&rows, &terms, n))
+                .unwrap_or_else(|| "given up / none".to_string());
+            println!("{method:?} ({n},{m}) f64: {f}; double-word: {d}; compensated: {c}");
         }
     }
 }
