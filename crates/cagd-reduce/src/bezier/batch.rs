@@ -44,9 +44,10 @@ impl Operator {
 /// `output` receives `n_curves * (m + 1) * dim` doubles in the same layout. `n_curves` is
 /// `input.len() / ((n + 1) * dim)`.
 ///
-/// Data path: blocks of curves (about 64 KiB of input each) through the curves-in-lanes
-/// kernel (`lanes.rs`: several curves per vector, AVX-512F / AVX2 with FMA when the CPU
-/// has them), no allocation per curve (see the crate's benchmark notes for the figures).
+/// Data path (`gemm.rs`): 3-D curves through the padded-point kernel (`padded.rs`: one
+/// point per vector, AVX2 with FMA when the CPU has them), other dimensions through the
+/// curves-in-lanes kernel (`lanes.rs`: several curves per vector, AVX-512F / AVX2 with
+/// FMA), no allocation per curve (see the crate's benchmark notes for the figures).
 /// The results are the definition's sums in its order, with fused multiply-adds where the
 /// CPU has them (so equal to the definition up to rounding), and a curve gets the same
 /// bits wherever it sits in the batch.

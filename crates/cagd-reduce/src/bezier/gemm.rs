@@ -2,22 +2,27 @@
 //! beyond the seed: this is the data path under [`crate::reduce_batch`] and the batch
 //! bounds.
 //!
-//! The caller's array is cut into blocks of curves (about 64 KiB of input each, so that a
-//! block's input and output stay in L2 while the block is checked for non-finite values),
-//! and each block goes through the curves-in-lanes kernel of `lanes.rs`: exactly the
-//! `(m+1)(n+1) dim` multiply-adds of the definition per curve, four curves per vector,
-//! AVX2 + FMA when the CPU has them. It replaced nalgebra's `gemm` (the `matrixmultiply`
+//! Curves of three coordinates (the batch a CAD kernel sends) go through the padded-point
+//! kernel of `padded.rs` (AVX2 + FMA: one point per vector, no transpose, the output's
+//! finiteness summed in the same pass), all but the last curve and a partial group; those,
+//! other dimensions and CPUs without AVX2 go through the curves-in-lanes kernel of
+//! `lanes.rs` in blocks of curves (about 64 KiB of input each, so that a block's input and
+//! output stay in L2 while the block is checked for non-finite values). Both do exactly
+//! the `(m+1)(n+1) dim` multiply-adds of the definition per curve in the same order, so
+//! they give the same bits. They replaced nalgebra's `gemm` (the `matrixmultiply`
 //! kernel) over a strided point-major view per coordinate and, for maps with a side below
-//! 6, over the Kronecker expansion `(A ⊗ I_dim)^T` (`dim` times the flops): 1.05–3.25× a
-//! point-major GEMM of the same operator, against 1.0–1.9× now (`benches/README.md`).
+//! 6, over the Kronecker expansion `(A ⊗ I_dim)^T` (`dim` times the flops); figures in
+//! `benches/README.md`.
 //!
 //! Every output of coordinate `k` is a dense sum over all points of its curve with the
 //! zeros of the map included, so a NaN or infinity anywhere in a curve reaches its outputs;
 //! the callers detect non-finite input from the output alone.
 
+use std::sync::OnceLock;
+
 use cagd_core::all_finite;
 
-use super::lanes;
+use super::{lanes, padded};
 
 /// Curves per block are a multiple of this (the widest group of the lanes kernel: 8 curves
 /// with AVX-512, 4 with AVX2), so that only the last block of a batch has curves that do
@@ -38,6 +43,9 @@ pub(crate) struct LinearMap {
     a: Vec<f64>,
     /// `A^T`, row-major `cols x rows` (the coefficients of one input point, contiguous).
     at: Vec<f64>,
+    /// `A^T` with each coefficient four times, the padded-point kernel's table; made on
+    /// its first use (a batch of 3-D curves).
+    splat: OnceLock<Vec<f64>>,
 }
 
 impl LinearMap {
@@ -50,7 +58,13 @@ impl LinearMap {
                 at[j * rows + i] = *x;
             }
         }
-        Self { rows, cols, a, at }
+        Self {
+            rows,
+            cols,
+            a,
+            at,
+            splat: OnceLock::new(),
+        }
     }
 
     /// Number of output points per curve.
@@ -83,10 +97,12 @@ impl LinearMap {
 
     /// Applies the map to every curve of `input` (`curves * cols * dim` doubles,
     /// curve-major, row-major inside a curve) writing `curves * rows * dim` doubles to
-    /// `output` in the same layout, checking each block's output for a non-finite value
-    /// while it is in cache; returns whether every output is finite (all are written
-    /// either way). Lengths are the caller's invariant (checked in debug). One allocation
-    /// per call (the kernel's scratch of `(rows + cols) dim` vectors).
+    /// `output` in the same layout, checking the output for a non-finite value while it is
+    /// in cache (in the padded kernel's pass, or block by block); returns whether every
+    /// output is finite (all are written either way). Lengths are the caller's invariant
+    /// (checked in debug). One allocation per call (the lanes kernel's scratch of
+    /// `(rows + cols) dim` vectors), and the padded kernel's table on the map's first
+    /// batch of 3-D curves.
     pub(crate) fn apply_checked(&self, input: &[f64], dim: usize, output: &mut [f64]) -> bool {
         let (per_in, per_out) = (self.cols * dim, self.rows * dim);
         if per_in == 0 || per_out == 0 {
@@ -96,8 +112,16 @@ impl LinearMap {
         debug_assert_eq!(input.len() % per_in, 0);
         let curves = input.len() / per_in;
         debug_assert_eq!(output.len(), curves * per_out);
-        let block = self.block_curves(dim);
         let mut scratch = Vec::new();
+        if dim == 3 && curves > padded::CURVES && padded::available() {
+            let table = self.splat.get_or_init(|| padded::splat(&self.at));
+            if let Some((done, finite)) = padded::apply3(table, self.rows, input, output) {
+                let (inp, out) = (&input[done * per_in..], &mut output[done * per_out..]);
+                lanes::apply(&self.at, self.rows, dim, inp, out, &mut scratch);
+                return (finite && all_finite(out)) || all_finite(output);
+            }
+        }
+        let block = self.block_curves(dim);
         let mut finite = true;
         for (inp, out) in input
             .chunks(block * per_in)

@@ -1,7 +1,9 @@
 //! The curves-in-lanes kernel: one small linear map `Q_c = A P_c` applied to many curves
 //! stored curve-major, `L` curves at a time (4 with AVX2, 8 with AVX-512), each curve in
 //! one lane of an `L`-wide vector.
-//! Goes beyond the seed: the data path under [`crate::reduce_batch`] (see `gemm.rs`).
+//! Goes beyond the seed: the data path under [`crate::reduce_batch`] for points of other
+//! than three coordinates, for the last curves of a 3-D batch, and under the batch bounds
+//! (see `gemm.rs`; 3-D batches take `padded.rs`).
 //!
 //! A group of `L` curves is transposed (4 x 4 blocks, in L1) so that element `l` of the
 //! `L` flat curves is one vector `t_l`; the output element `(i, k)` of the four curves is
@@ -38,8 +40,9 @@ fn prefetch_avx(x: &[f64]) {
     }
 }
 
-/// Runs `$f::<R, C>($args)`, an instance of the kernel with `rows = R`, `cols = C` and
-/// `dim = 3` as constants (its loops unroll and its index checks fold), when the map
+/// Runs `$f::<R, C>($args)`, an instance of a kernel with `rows = R`, `cols = C` and
+/// `dim = 3` as constants (its loops unroll and its index checks fold; used by the batch
+/// bounds here and by `padded.rs`), when the map
 /// (`rows`, `len` entries) is `R x C` with `C <= 11` (degree 10 and below, where the loop overhead of the general instance
 /// weighs most: 2.4x / 2.0x / 1.7x fewer instructions per curve at (4,3) / (5,4) / (10,5),
 /// callgrind, AVX2), and says whether it did. Same operations in the same order as the
@@ -73,6 +76,7 @@ macro_rules! sized {
         $f::<$r, $c>($($arg),*)
     };
 }
+pub(crate) use sized;
 
 /// Rows of the map per register tile.
 const TILE_ROWS: usize = 4;
@@ -123,21 +127,11 @@ pub(crate) fn apply(
     match isa() {
         #[allow(unsafe_code, reason = "the call of a `target_feature` function")]
         // SAFETY: the CPU supports AVX-512F, AVX2 and FMA (detected by `isa`), the only
-        // requirement of the functions, which are themselves safe code. The sized
-        // instances are chosen here, outside the general one, so that its code is not
-        // changed by them.
-        Isa::Avx512 => unsafe {
-            if !(dim == 3 && sized!(sized_avx512, rows, at.len(), (at, input, output, scratch))) {
-                apply_avx512(at, rows, dim, input, output, scratch);
-            }
-        },
+        // requirement of the function, which is itself safe code.
+        Isa::Avx512 => unsafe { apply_avx512(at, rows, dim, input, output, scratch) },
         #[allow(unsafe_code, reason = "the call of a `target_feature` function")]
         // SAFETY: the CPU supports AVX2 and FMA (detected by `isa`), as above.
-        Isa::Avx2 => unsafe {
-            if !(dim == 3 && sized!(sized_avx2, rows, at.len(), (at, input, output, scratch))) {
-                apply_avx2(at, rows, dim, input, output, scratch);
-            }
-        },
+        Isa::Avx2 => unsafe { apply_avx2(at, rows, dim, input, output, scratch) },
         Isa::Portable => {
             apply_generic::<false, 4>(at, rows, dim, input, output, scratch, transpose, |_| {})
         }
@@ -170,28 +164,6 @@ fn apply_avx512(
     );
 }
 
-/// [`apply_avx512`] for `dim = 3` with `R` rows and `C` columns as constants (see
-/// [`sized!`]).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx2,fma")]
-fn sized_avx512<const R: usize, const C: usize>(
-    at: &[f64],
-    input: &[f64],
-    output: &mut [f64],
-    scratch: &mut Vec<f64>,
-) {
-    apply_generic::<true, 8>(
-        &at[..R * C],
-        R,
-        3,
-        input,
-        output,
-        scratch,
-        |a, b, c, d| transpose_avx(a, b, c, d),
-        |x| prefetch_avx(x),
-    );
-}
-
 /// The kernel compiled with AVX2 and FMA, 4 lanes.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
@@ -207,27 +179,6 @@ fn apply_avx2(
         at,
         rows,
         dim,
-        input,
-        output,
-        scratch,
-        |a, b, c, d| transpose_avx(a, b, c, d),
-        |x| prefetch_avx(x),
-    );
-}
-
-/// [`apply_avx2`] for `dim = 3` with `R` rows and `C` columns as constants.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-fn sized_avx2<const R: usize, const C: usize>(
-    at: &[f64],
-    input: &[f64],
-    output: &mut [f64],
-    scratch: &mut Vec<f64>,
-) {
-    apply_generic::<true, 4>(
-        &at[..R * C],
-        R,
-        3,
         input,
         output,
         scratch,

@@ -15,6 +15,7 @@ mod lanes;
 mod measure;
 mod method;
 mod operator;
+mod padded;
 mod reduce;
 mod tolerance;
 mod wn_table;

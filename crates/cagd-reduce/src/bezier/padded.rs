@@ -1,0 +1,375 @@
+//! The padded-point kernel: one linear map `Q_c = A P_c` applied to many 3-D curves stored
+//! curve-major, one *point* per 256-bit vector (AVX2 + FMA).
+//! Goes beyond the seed: the data path of [`crate::reduce_batch`] for `dim = 3` (see
+//! `gemm.rs`).
+//!
+//! A point `(x, y, z)` is loaded as the four doubles that start at its `x` (the fourth is
+//! the next point's `x`: a padding lane, computed and never kept), so the input needs no
+//! transpose; output point `i` of a curve is `sum_j a_ij p_j`, one fused multiply-add per
+//! `j` with the coefficient `a_ij` in all four lanes (the map's table of splatted
+//! coefficients, [`splat`]). Three curves times up to four output points are summed in
+//! registers at a time. An output point is stored as four doubles too: its padding lane
+//! lands on the next point's `x`, which the next store (same curve, `i` increasing)
+//! overwrites; the last point of a curve is stored as three doubles.
+//!
+//! Why: the transposing kernel of `lanes.rs` spends about one shuffle per double moved
+//! (4 x 4 blocks in and out), and the shuffles' port is the bottleneck at the small pairs
+//! and the memory traffic of its scratch at the large ones; this kernel does
+//! `(m + 1)(n + 1)` 256-bit multiply-adds per curve (a quarter of their lanes are padding)
+//! and no shuffle. Figures in the benches README (`batch`, "Eighth session").
+//!
+//! Every output coordinate is the same chain as in `lanes.rs` (`acc = 0`, then
+//! `acc = fma(a_ij, x_j, acc)` for `j` increasing, the map's zeros included), so the two
+//! kernels give the same bits, and a NaN or infinity anywhere in coordinate `k` of a curve
+//! reaches every output of coordinate `k` of that curve.
+//!
+//! The output is checked for non-finite values in the same pass: the sum of every stored
+//! vector (padding lanes included) is finite when every output is; when it is not (a
+//! non-finite output, or only an overflow of the sum or of a padding lane), the caller
+//! scans the output.
+
+use super::lanes::sized;
+
+/// Curves summed at a time (three curves x four points = 12 accumulators + 3 points: 15 of
+/// the 16 vector registers of AVX2).
+pub(crate) const CURVES: usize = 3;
+
+/// Output points summed at a time per curve, at most.
+const POINTS: usize = 4;
+
+/// Whether [`apply3`] runs on this CPU (AVX2 + FMA; detected once by the standard library).
+pub(crate) fn available() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::is_x86_feature_detected as has;
+        has!("avx2") && has!("fma")
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    false
+}
+
+/// The table [`apply3`] takes: each coefficient of `at` (the map transposed, `cols x rows`
+/// row-major) four times.
+pub(crate) fn splat(at: &[f64]) -> Vec<f64> {
+    at.iter().flat_map(|&a| [a; 4]).collect()
+}
+
+/// Applies the map whose [`splat`] table is `table` (`rows` output points) to every 3-D
+/// curve of `input` (`cols * 3` doubles each) but the last, and to the curves before it
+/// that do not fill a group of [`CURVES`]; returns how many curves it did and whether the
+/// sum of their outputs is finite (when it is, every one of their outputs is). The caller
+/// runs the others (at least one) through another kernel with the same operations.
+/// `None` when the CPU lacks AVX2 + FMA.
+pub(crate) fn apply3(
+    table: &[f64],
+    rows: usize,
+    input: &[f64],
+    output: &mut [f64],
+) -> Option<(usize, bool)> {
+    let cols = table.len() / (4 * rows.max(1));
+    let (lin, lout) = (cols * 3, rows * 3);
+    if !available() || lin == 0 || lout == 0 {
+        return None;
+    }
+    let curves = input.len() / lin;
+    debug_assert_eq!(output.len(), curves * lout);
+    // Every curve reads one double past its own points (the padding lane of its last
+    // point), so the last curve of `input` is not done here.
+    let done = curves.saturating_sub(1) / CURVES * CURVES;
+    if done == 0 {
+        return Some((0, true));
+    }
+    #[cfg(target_arch = "x86_64")]
+    {
+        let finite = groups(
+            table,
+            rows,
+            cols,
+            &input[..done * lin + 1],
+            &mut output[..done * lout],
+        );
+        Some((done, finite))
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    None
+}
+
+/// The groups of [`CURVES`] curves (`input` has one double more than they take), through
+/// a sized instance where there is one.
+#[cfg(target_arch = "x86_64")]
+fn groups(table: &[f64], rows: usize, cols: usize, input: &[f64], output: &mut [f64]) -> bool {
+    let mut finite = true;
+    #[allow(unsafe_code, reason = "the call of a `target_feature` function")]
+    // SAFETY: `apply3` checked `available` (AVX2 + FMA), the only requirement of the
+    // functions, which are themselves safe code.
+    unsafe {
+        if !sized!(
+            groups_sized,
+            rows,
+            rows * cols,
+            (table, input, output, &mut finite)
+        ) {
+            finite = groups_avx2(table, rows, cols, input, output);
+        }
+    }
+    finite
+}
+
+/// [`run`] with the sizes as values.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn groups_avx2(table: &[f64], rows: usize, cols: usize, input: &[f64], output: &mut [f64]) -> bool {
+    run::<0, 0>(table, rows, cols, input, output)
+}
+
+/// [`run`] with `rows = RW` and `cols = CL` as constants (its loops unroll and its index
+/// checks fold: at (4,3) 4.4 against 6.4 ns per curve).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn groups_sized<const RW: usize, const CL: usize>(
+    table: &[f64],
+    input: &[f64],
+    output: &mut [f64],
+    finite: &mut bool,
+) {
+    *finite = run::<RW, CL>(table, RW, CL, input, output);
+}
+
+/// The loop over the groups; `RW, CL > 0` are the sizes as constants (then `rows`, `cols`
+/// are not read).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+#[inline]
+fn run<const RW: usize, const CL: usize>(
+    table: &[f64],
+    rows: usize,
+    cols: usize,
+    input: &[f64],
+    output: &mut [f64],
+) -> bool {
+    use std::arch::x86_64::_mm256_setzero_pd;
+    let (rows, cols) = if RW > 0 { (RW, CL) } else { (rows, cols) };
+    debug_assert_eq!(table.len(), rows * cols * 4);
+    let (lin, lout) = (cols * 3, rows * 3);
+    let mut chk = _mm256_setzero_pd();
+    for (g, out) in output.chunks_exact_mut(CURVES * lout).enumerate() {
+        let inp = &input[g * CURVES * lin..(g + 1) * CURVES * lin + 1];
+        let mut i0 = 0;
+        while i0 < rows {
+            // Blocks of four points; five left go as three and two (a block of one point
+            // has too few independent sums to hide the multiply-add latency).
+            let r = match rows - i0 {
+                5 => 3,
+                left => left.min(POINTS),
+            };
+            let at = (table, rows, cols, i0);
+            match r {
+                4 => block::<4, RW, CL>(at, inp, out, &mut chk),
+                3 => block::<3, RW, CL>(at, inp, out, &mut chk),
+                2 => block::<2, RW, CL>(at, inp, out, &mut chk),
+                _ => block::<1, RW, CL>(at, inp, out, &mut chk),
+            }
+            i0 += r;
+        }
+    }
+    let lanes: [f64; 4] = bytemuck::cast(chk);
+    lanes.iter().all(|v| v.is_finite())
+}
+
+/// Output points `i0 .. i0 + R` of the [`CURVES`] curves of `inp` (plus one double) into
+/// `out`, their sum added to `chk`. Sizes as in [`run`].
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+#[inline]
+fn block<const R: usize, const RW: usize, const CL: usize>(
+    (table, rows, cols, i0): (&[f64], usize, usize, usize),
+    inp: &[f64],
+    out: &mut [f64],
+    chk: &mut std::arch::x86_64::__m256d,
+) {
+    use std::arch::x86_64::{__m256d, _mm256_add_pd, _mm256_fmadd_pd, _mm256_setzero_pd};
+    let (rows, cols) = if RW > 0 { (RW, CL) } else { (rows, cols) };
+    let (lin, lout) = (cols * 3, rows * 3);
+    let vec = |x: &[f64]| -> __m256d {
+        let q: [f64; 4] = x.try_into().unwrap_or([0.0; 4]);
+        bytemuck::cast(q)
+    };
+    let mut acc = [[_mm256_setzero_pd(); CURVES]; R];
+    for j in 0..cols {
+        // Point `j` of curve `c` and the next double (its padding lane).
+        let x: [__m256d; CURVES] =
+            std::array::from_fn(|c| vec(&inp[c * lin + 3 * j..c * lin + 3 * j + 4]));
+        let tj = &table[(j * rows + i0) * 4..(j * rows + i0 + R) * 4];
+        for (q, accq) in acc.iter_mut().enumerate() {
+            let a = vec(&tj[q * 4..q * 4 + 4]);
+            for (xc, accqc) in x.iter().zip(accq.iter_mut()) {
+                *accqc = _mm256_fmadd_pd(a, *xc, *accqc);
+            }
+        }
+    }
+    for c in 0..CURVES {
+        for (q, accq) in acc.iter().enumerate() {
+            let i = i0 + q;
+            *chk = _mm256_add_pd(*chk, accq[c]);
+            let v: [f64; 4] = bytemuck::cast(accq[c]);
+            let o = c * lout + 3 * i;
+            if i + 1 < rows {
+                // The padding lane lands on the next point's `x`, stored after this.
+                out[o..o + 4].copy_from_slice(&v);
+            } else {
+                out[o..o + 3].copy_from_slice(&v[..3]);
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::gemm::LinearMap;
+    use super::*;
+
+    /// The definition with the kernels' operations: `acc = 0`, then `acc = fma(a_ij, x_j,
+    /// acc)` for `j` increasing, per curve, point and coordinate.
+    fn fused(a: &[f64], rows: usize, cols: usize, input: &[f64]) -> Vec<f64> {
+        let curves = input.len() / (cols * 3);
+        let mut out = vec![0.0; curves * rows * 3];
+        for c in 0..curves {
+            for i in 0..rows {
+                for k in 0..3 {
+                    let mut acc = 0.0f64;
+                    for j in 0..cols {
+                        acc = a[i * cols + j].mul_add(input[(c * cols + j) * 3 + k], acc);
+                    }
+                    out[(c * rows + i) * 3 + k] = acc;
+                }
+            }
+        }
+        out
+    }
+
+    fn map(rows: usize, cols: usize) -> (Vec<f64>, LinearMap) {
+        let a: Vec<f64> = (0..rows * cols)
+            .map(|i| ((i * 37 % 23) as f64 - 11.0) / 7.3)
+            .collect();
+        (a.clone(), LinearMap::new(rows, cols, a))
+    }
+
+    fn input(curves: usize, cols: usize) -> Vec<f64> {
+        (0..curves * cols * 3)
+            .map(|i| ((i * 7919 % 1001) as f64 - 500.0) / 97.1)
+            .collect()
+    }
+
+    #[test]
+    fn batch_equals_the_fused_definition_bit_for_bit() {
+        // Sized instances (cols <= 11) and the general one; row counts that split into
+        // blocks of 4, 3 + 2, and 1; curve counts below, at and above whole groups.
+        if !available() {
+            return;
+        }
+        let sizes = [
+            (1, 2),
+            (2, 3),
+            (4, 5),
+            (5, 6),
+            (6, 11),
+            (9, 11),
+            (1, 12),
+            (5, 12),
+            (11, 16),
+            (11, 21),
+            (13, 20),
+            (16, 31),
+            (33, 65),
+        ];
+        for (rows, cols) in sizes {
+            let (a, map) = map(rows, cols);
+            for curves in [1, 2, 3, 4, 5, 6, 7, 8, 10, 31, 100] {
+                let input = input(curves, cols);
+                let mut out = vec![f64::NAN; curves * rows * 3];
+                assert!(map.apply_checked(&input, 3, &mut out));
+                let want = fused(&a, rows, cols, &input);
+                for (idx, (g, w)) in out.iter().zip(&want).enumerate() {
+                    assert_eq!(
+                        g.to_bits(),
+                        w.to_bits(),
+                        "{rows}x{cols}, {curves} curves, {idx}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_kernel_does_whole_groups_and_leaves_the_last_curve() {
+        if !available() {
+            return;
+        }
+        let (_, map) = map(4, 5);
+        let table = splat(map.transposed().0);
+        for (curves, done) in [(1, 0), (3, 0), (4, 3), (6, 3), (7, 6), (100, 99)] {
+            let input = input(curves, 5);
+            let mut out = vec![0.0; curves * 12];
+            assert_eq!(apply3(&table, 4, &input, &mut out), Some((done, true)));
+        }
+    }
+
+    #[test]
+    fn non_finite_values_stay_in_their_curve_and_coordinate() {
+        // A zero coefficient column: the NaN or infinity reaches every output of its
+        // coordinate in its curve (dense sums), and nothing else.
+        if !available() {
+            return;
+        }
+        for (rows, cols) in [(4, 5), (5, 6), (11, 21)] {
+            let (mut a, _) = map(rows, cols);
+            for i in 0..rows {
+                a[i * cols + 1] = 0.0;
+            }
+            let map = LinearMap::new(rows, cols, a.clone());
+            let curves = 10;
+            for bad_curve in [0, 4, 8, 9] {
+                for k in 0..3 {
+                    for bad in [f64::NAN, f64::INFINITY] {
+                        let mut inp = input(curves, cols);
+                        inp[(bad_curve * cols + 1) * 3 + k] = bad;
+                        let mut out = vec![0.0; curves * rows * 3];
+                        assert!(!map.apply_checked(&inp, 3, &mut out));
+                        let want = fused(&a, rows, cols, &inp);
+                        for (idx, (g, w)) in out.iter().zip(&want).enumerate() {
+                            let (c, kk) = (idx / (rows * 3), idx % 3);
+                            assert_eq!(!g.is_finite(), c == bad_curve && kk == k, "{idx}");
+                            assert!(g.to_bits() == w.to_bits() || (g.is_nan() && w.is_nan()));
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn an_overflowing_check_sum_is_not_a_non_finite_output() {
+        // Every output near the largest double: their sum overflows, the outputs do not;
+        // and an output that overflows is reported.
+        if !available() {
+            return;
+        }
+        let (rows, cols) = (4, 5);
+        let mut a = vec![0.0; rows * cols];
+        for i in 0..rows {
+            a[i * cols + i] = 1.0;
+        }
+        let map = LinearMap::new(rows, cols, a);
+        let curves = 50;
+        let mut inp = vec![f64::MAX / 2.0; curves * cols * 3];
+        let mut out = vec![0.0; curves * rows * 3];
+        assert!(map.apply_checked(&inp, 3, &mut out));
+        assert!(out.iter().all(|&v| v == f64::MAX / 2.0));
+        let mut a2 = vec![0.0; rows * cols];
+        a2[0] = 3.0;
+        let map2 = LinearMap::new(rows, cols, a2);
+        inp[(7 * cols) * 3 + 2] = f64::MAX;
+        assert!(!map2.apply_checked(&inp, 3, &mut out));
+        assert!(out[7 * rows * 3 + 2].is_infinite());
+    }
+}
