@@ -429,7 +429,7 @@ fn piegl_tiller<B: Base>(s: &[Row<B>], symmetric: bool) -> Step<B> {
 /// `C(k, k/2) / 2^k` rounded up (Piegl–Tiller's bound factor, as `one_step.rs`'s exact
 /// `up`, at most one ulp above it): the binomial rounded up to `f64` times an exact power
 /// of two.
-fn central_binomial_share(k: usize) -> f64 {
+pub(crate) fn central_binomial_share(k: usize) -> f64 {
     let c = cagd_core::binomial(k, k / 2);
     #[allow(
         clippy::cast_precision_loss,
