@@ -30,7 +30,7 @@
 
 use super::Rounded;
 use super::rows::{recycle_f64, scratch_f64};
-use super::steps::{central_binomial_share, residual_coef_cached, sign_binom};
+use super::steps::{central_binomial_share, residual_coef_cached};
 use super::tracked::Tracked;
 use crate::bezier::method::Method;
 
@@ -66,6 +66,23 @@ fn abs_sum(x: &[f64]) -> f64 {
         acc[j] += v.abs();
     }
     ((acc[0] + acc[1]) + (acc[2] + acc[3])) * SUM_UP
+}
+
+/// `(-1)^(k-i) C(k,i)` rounded to `f64` (the value of `steps::sign_binom`), with a bound of
+/// its rounding: the exact rest `|C - v|` from the exact table, rounded up.
+fn sign_binom(k: usize, i: usize) -> Tracked<f64> {
+    let c = cagd_core::binomial(k, i);
+    #[allow(
+        clippy::cast_precision_loss,
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "rounded to nearest; the exact rest is taken in u128 and rounded up"
+    )]
+    let (v, e) = {
+        let v = c as f64;
+        (v, (v as u128).abs_diff(c) as f64 * (1.0 + f64::EPSILON))
+    };
+    Tracked::from_parts(if (k - i) % 2 == 0 { v } else { -v }, e)
 }
 
 /// A row of the result: its `f64` entries and the bound of `sum_c |v_c - exact_c|`.
@@ -228,7 +245,10 @@ fn delta(s: &Block, k: usize) -> SRow {
         add(&mut h, sign_binom(k, i), i);
     }
     if k % 2 == 0 {
-        add(&mut h, sign_binom(k, k / 2).mul(Tracked::of(0.5)), k / 2);
+        let c = sign_binom(k, k / 2);
+        // (Halving is exact.)
+        let half = Tracked::from_parts(0.5 * c.value(), 0.5 * c.bound());
+        add(&mut h, half, k / 2);
     }
     let mut v = scratch_f64(len);
     if k % 2 == 1 {
