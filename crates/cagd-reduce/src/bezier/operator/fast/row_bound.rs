@@ -29,7 +29,7 @@
 //! operations run over each row's support only.
 
 use super::Rounded;
-use super::rows::{recycle_f64, scratch_f64};
+use super::rows::{recycle_f64, scratch_f64, to_i};
 use super::steps::{central_binomial_share, residual_coef_cached};
 use super::tracked::Tracked;
 use crate::bezier::method::Method;
@@ -68,19 +68,15 @@ fn abs_sum(x: &[f64]) -> f64 {
     ((acc[0] + acc[1]) + (acc[2] + acc[3])) * SUM_UP
 }
 
-/// `(-1)^(k-i) C(k,i)` rounded to `f64` (the value of `steps::sign_binom`), with a bound of
-/// its rounding: the exact rest `|C - v|` from the exact table, rounded up.
+/// `(-1)^(k-i) C(k,i)` rounded to `f64` (the value of `steps::sign_binom`, from the table of
+/// the exact binomials rounded once), with a bound of its rounding: none below `2^53`, else
+/// the tracked one.
 fn sign_binom(k: usize, i: usize) -> Tracked<f64> {
-    let c = cagd_core::binomial(k, i);
-    #[allow(
-        clippy::cast_precision_loss,
-        clippy::cast_possible_truncation,
-        clippy::cast_sign_loss,
-        reason = "rounded to nearest; the exact rest is taken in u128 and rounded up"
-    )]
-    let (v, e) = {
-        let v = c as f64;
-        (v, (v as u128).abs_diff(c) as f64 * (1.0 + f64::EPSILON))
+    let v = cagd_core::binomial_f64(k, i);
+    let e = if v < 2f64.powi(53) {
+        0.0
+    } else {
+        Tracked::<f64>::binom(to_i(k), to_i(i)).bound()
     };
     Tracked::from_parts(if (k - i) % 2 == 0 { v } else { -v }, e)
 }
