@@ -361,12 +361,12 @@ pub(crate) fn chebyshev<B: Base>(nn: i64, first: i64, last: i64) -> Option<Vec<R
                 .collect();
             let mut row = Row::zeros(n + 1);
             let v = pairwise_columns(&mut sums, bt, &cosk, cols);
-            for j in 0..=half {
-                row.v[j] = v[j].mul(w);
+            for (j, (x, a)) in v.iter().zip(&tab.a_up).enumerate().take(half + 1) {
+                row.v[j] = x.mul(w);
                 // (+ 1e-300: the products `B̂ ĉ` may be subnormal where a cosine is at its
                 // rounding level, `|ĉ| ~ 1e-32`; each such product and its double-word parts
                 // lose at most `2^-1074` absolutely, far below this allowance.)
-                row.e[j] = w_up * tab.a_up[j] * eta * (1.0 + 1e-8) + 1e-300;
+                row.e[j] = w_up * a * eta * (1.0 + 1e-8) + 1e-300;
             }
             // f_k(B_(N-j)) = (-1)^k f_k(B_j) (the nodes' symmetry; negation is exact).
             for j in half + 1..=n {
