@@ -83,9 +83,22 @@ pub(crate) fn constrained(n: usize, m: usize, r: i32, p: i32) -> Result<(RatMat,
     Ok((RatMat::from_rows(rows), terms))
 }
 
-/// [`bound_factor`] rounded up to `f64` (the fast route's term coefficient).
+/// [`bound_factor`] rounded up to `f64` (the fast route's term coefficient), remembered per
+/// `(r, p)` for the process (a constant; its big-rational evaluation was 3 % of a
+/// constrained Chebyshev build at `(30,15)`).
 pub(super) fn bound_factor_up(r: i32, p: i32) -> f64 {
-    up(&bound_factor(r, p))
+    use std::collections::HashMap;
+    use std::sync::{OnceLock, RwLock};
+    static MEMO: OnceLock<RwLock<HashMap<(i32, i32), f64>>> = OnceLock::new();
+    let memo = MEMO.get_or_init(|| RwLock::new(HashMap::new()));
+    if let Some(v) = memo.read().ok().and_then(|m| m.get(&(r, p)).copied()) {
+        return v;
+    }
+    let v = up(&bound_factor(r, p));
+    if let Ok(mut m) = memo.write() {
+        m.insert((r, p), v);
+    }
+    v
 }
 
 /// The factor `(p+1)^(p+1) (r+1)^(r+1) / (p+r+2)^(p+r+2)` of Theorem 14.5.2's bound

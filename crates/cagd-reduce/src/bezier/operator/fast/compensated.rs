@@ -187,7 +187,7 @@ fn two_prod<const FMA: bool>(a: f64, a1: f64, a2: f64, x: f64) -> (f64, f64) {
 }
 
 /// Whether the AVX2 + FMA instances of the kernels run on this CPU.
-fn fused() -> bool {
+pub(super) fn fused() -> bool {
     #[cfg(target_arch = "x86_64")]
     {
         crate::bezier::lanes::isa() != crate::bezier::lanes::Isa::Portable

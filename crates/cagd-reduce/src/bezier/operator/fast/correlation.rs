@@ -43,6 +43,63 @@ fn split(a: f64) -> (f64, f64) {
     (hi, a - hi)
 }
 
+/// The per-entry inputs of [`correlate`]: the high words, the low words, the high words'
+/// Veltkamp halves and the error weights `κ |y| + e`.
+struct Ys<'a> {
+    yhi: &'a [f64],
+    ylo: &'a [f64],
+    yh: &'a [f64],
+    yl: &'a [f64],
+    w: &'a [f64],
+}
+
+/// The loop of [`compensated`] over the coefficients, each one's terms for every `j` side
+/// by side (straight loops over arrays, which the compiler vectorises): `π`, `σ` and the
+/// error sums updated in place. With `FMA`, `TwoProduct`'s rest is `fma(c, y, -h)` instead
+/// of Dekker's (the exact rest of the rounded product either way: the same bits).
+#[inline(always)]
+fn correlate<const FMA: bool>(
+    c: &[f64],
+    ys: &Ys<'_>,
+    pi: &mut [f64],
+    sigma: &mut [f64],
+    err: &mut [f64],
+) {
+    let len = pi.len().min(sigma.len()).min(err.len());
+    let (pi, sigma, err) = (&mut pi[..len], &mut sigma[..len], &mut err[..len]);
+    for (l, &cl) in c.iter().enumerate() {
+        let (ch, cm) = split(cl);
+        let ca = cl.abs();
+        let (yhi, ylo) = (&ys.yhi[l..l + len], &ys.ylo[l..l + len]);
+        let (yh, yl, w) = (&ys.yh[l..l + len], &ys.yl[l..l + len], &ys.w[l..l + len]);
+        for j in 0..len {
+            let (y, z) = (yhi[j], ylo[j]);
+            // TwoProduct (Dekker, the splits precomputed; or by FMA).
+            let h = cl * y;
+            let r = if FMA {
+                cl.mul_add(y, -h)
+            } else {
+                ((ch * yh[j] - h) + ch * yl[j] + cm * yh[j]) + cm * yl[j]
+            };
+            // TwoSum (Knuth).
+            let p0 = pi[j];
+            let p = p0 + h;
+            let bb = p - p0;
+            let q = (p0 - (p - bb)) + (h - bb);
+            pi[j] = p;
+            sigma[j] += (q + r) + cl * z;
+            err[j] += ca * w[j];
+        }
+    }
+}
+
+/// [`correlate`] compiled with AVX2 and FMA.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn correlate_fused(c: &[f64], ys: &Ys<'_>, pi: &mut [f64], sigma: &mut [f64], err: &mut [f64]) {
+    correlate::<true>(c, ys, pi, sigma, err);
+}
+
 /// `y_j = sum_l c[l] d[off + j + l]`, `j = 0..len`, as a double-word row (capacity `cap`)
 /// with the proven bounds of the module docs. `c` must hold exact `f64` integers of
 /// magnitude below `2^996` and `d` normalised double-words (as every `Dd` operation
@@ -82,27 +139,23 @@ pub(crate) fn compensated(
     }
     let mut out = Row::<Dd>::zeros(cap.max(len));
     let err = &mut out.e[..len];
-    for (l, &cl) in c.iter().enumerate() {
-        let (ch, cm) = split(cl);
-        let ca = cl.abs();
-        let ys = yhi[l..l + len]
-            .iter()
-            .zip(&ylo[l..l + len])
-            .zip(yh[l..l + len].iter().zip(&yl[l..l + len]))
-            .zip(&w[l..l + len]);
-        let acc = pi.iter_mut().zip(sigma.iter_mut()).zip(err.iter_mut());
-        for (((p0, s0), e0), (((&y, &z), (&ys_h, &ys_l)), &wt)) in acc.zip(ys) {
-            // TwoProduct (Dekker, the splits precomputed).
-            let h = cl * y;
-            let r = ((ch * ys_h - h) + ch * ys_l + cm * ys_h) + cm * ys_l;
-            // TwoSum (Knuth).
-            let p = *p0 + h;
-            let bb = p - *p0;
-            let q = (*p0 - (p - bb)) + (h - bb);
-            *p0 = p;
-            *s0 += (q + r) + cl * z;
-            *e0 += ca * wt;
+    let ys = Ys {
+        yhi,
+        ylo,
+        yh,
+        yl,
+        w,
+    };
+    if super::compensated::fused() {
+        #[cfg(target_arch = "x86_64")]
+        #[allow(unsafe_code, reason = "the call of a `target_feature` function")]
+        // SAFETY: the CPU has AVX2 and FMA (`fused`), the function's only requirement; the
+        // function is itself safe code.
+        unsafe {
+            correlate_fused(c, &ys, pi, sigma, err);
         }
+    } else {
+        correlate::<false>(c, &ys, pi, sigma, err);
     }
     for ((o, &p), &s) in out.v.iter_mut().zip(pi.iter()).zip(sigma.iter()) {
         let hi = p + s;
@@ -168,5 +221,47 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// The AVX2 + FMA instance of [`correlate`] (where the CPU has it) gives the portable
+    /// one's bits: `fma(c, y, -h)` and Dekker's product are the same exact rest.
+    #[test]
+    fn fused_correlation_is_the_portable_one() {
+        if !crate::bezier::operator::fast::compensated::fused() {
+            return;
+        }
+        let nb = 60i64;
+        let d: Vec<Tracked<Dd>> = (0..=nb).map(|s| Tracked::recip_binom(nb, s)).collect();
+        let (yhi, ylo): (Vec<f64>, Vec<f64>) =
+            d.iter().map(|t| (t.value().hi, t.value().lo)).unzip();
+        let (yh, yl): (Vec<f64>, Vec<f64>) = yhi.iter().map(|&y| split(y)).unzip();
+        let w: Vec<f64> = yhi.iter().map(|y| y.abs() * 1e-30).collect();
+        let ys = Ys {
+            yhi: &yhi,
+            ylo: &ylo,
+            yh: &yh,
+            yl: &yl,
+            w: &w,
+        };
+        let c: Vec<f64> = (0..=15)
+            .map(|l| if l % 2 == 0 { 1.0 } else { -3.0 } * f64::from(l + 1).powi(9))
+            .collect();
+        let len = 40;
+        let run = |fused: bool| {
+            let (mut pi, mut sigma, mut err) = (vec![0.0; len], vec![0.0; len], vec![0.0; len]);
+            if fused {
+                #[cfg(target_arch = "x86_64")]
+                #[allow(unsafe_code, reason = "the call of a `target_feature` function")]
+                // SAFETY: the CPU has AVX2 and FMA (checked above).
+                unsafe {
+                    correlate_fused(&c, &ys, &mut pi, &mut sigma, &mut err);
+                }
+            } else {
+                correlate::<false>(&c, &ys, &mut pi, &mut sigma, &mut err);
+            }
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<u64>>();
+            (bits(&pi), bits(&sigma), bits(&err))
+        };
+        assert_eq!(run(true), run(false));
     }
 }

@@ -15,6 +15,7 @@ mod correlation;
 mod dd;
 mod ginv_ends;
 mod quadrature;
+mod row_bound;
 mod rows;
 mod steps;
 mod tracked;
@@ -243,6 +244,13 @@ pub(crate) fn build(method: Method, n: usize, m: usize) -> Option<Built> {
         // A one-degree truncation goes from the top (no alternating sums): always try f64.
         mm >= 0 && n - m > 1 && truncation::f64_hopeless(family, nn, mm, tol)
     });
+    // Forrest and Piegl–Tiller: `f64` rows with one bound per row first (`row_bound.rs`:
+    // the tracked `f64` route's matrix and bound, without its per-entry error arrays).
+    if let Some((rows, terms)) = row_bound::stepwise(method, n, m) {
+        if let Some(b) = finish(&rows, &terms, OperatorRoute::F64, strict) {
+            return Some(b);
+        }
+    }
     // Farin and the perturbation: compensated steps first (`compensated.rs`), accepted at
     // the rounding level.
     if let Some((rows, terms)) = compensated::stepwise(method, n, m) {

@@ -110,6 +110,9 @@ fn gamma(n: usize, u: f64) -> f64 {
 struct Bernstein {
     q: usize,
     vals: Vec<Dd>,
+    /// The values rounded to `f64` and transposed, `t64[q * (N/2 + 1) + j]` (the `f64`
+    /// route's table: one node's values for every `j` side by side).
+    t64: Vec<f64>,
     rel: f64,
     a_up: Vec<f64>,
 }
@@ -180,7 +183,21 @@ fn bernstein(n: usize) -> Option<&'static Bernstein> {
                 s * (1.0 + 2.0 * rel + (q as f64 + 2.0) * f64::EPSILON) * (1.0 + 1e-8)
             })
             .collect();
-        Some(Bernstein { q, vals, rel, a_up })
+        let cols = half + 1;
+        let mut t64 = vec![0.0f64; q * cols];
+        for j in 0..cols {
+            for node in 0..q {
+                let b = vals[j * q + node];
+                t64[node * cols + j] = b.hi + b.lo;
+            }
+        }
+        Some(Bernstein {
+            q,
+            vals,
+            t64,
+            rel,
+            a_up,
+        })
     };
     match TABLES.get(n) {
         Some(cell) => cell.get_or_init(build).as_ref(),
@@ -189,8 +206,10 @@ fn bernstein(n: usize) -> Option<&'static Bernstein> {
     }
 }
 
+/// (The reference for [`pairwise_columns`]'s order, kept for its test.)
 /// `x_0 + ... + x_(len-1)` by pairwise summation (in place): each term passes through at
 /// most `ceil(log2 len)` additions, so the error is at most `γ_(ceil(log2 len)) sum |x|`.
+#[cfg(test)]
 fn pairwise<B: Base>(x: &mut [B]) -> B {
     let mut len = x.len();
     if len == 0 {
@@ -219,6 +238,57 @@ fn depth(len: usize) -> usize {
     d
 }
 
+/// `sum_q bt[q][j] c[q]` for every column `j < cols` (`bt` row-major, `Q` rows of `cols`),
+/// each by [`pairwise`]'s tree with its first level fused with the products
+/// (`b_(2t) c_(2t) + b_(2t+1) c_(2t+1)`, an odd last term alone): the same operations in the
+/// same order as one [`pairwise`] sum per column, run on whole rows of `cols` entries (loops
+/// the compiler vectorises). `sums` holds at least `ceil(Q/2) cols` entries; the result is
+/// its first `cols`.
+fn pairwise_columns<'a, B: Base>(sums: &'a mut [B], bt: &[B], c: &[B], cols: usize) -> &'a [B] {
+    let q = c.len();
+    let pairs = q / 2;
+    for t in 0..pairs {
+        let (b0, b1) = (
+            &bt[2 * t * cols..][..cols],
+            &bt[(2 * t + 1) * cols..][..cols],
+        );
+        let (c0, c1) = (c[2 * t], c[2 * t + 1]);
+        for ((o, x), y) in sums[t * cols..][..cols].iter_mut().zip(b0).zip(b1) {
+            *o = x.mul(c0).add(y.mul(c1));
+        }
+    }
+    let mut len = pairs;
+    if q % 2 == 1 {
+        let (b, cl) = (&bt[(q - 1) * cols..][..cols], c[q - 1]);
+        for (o, x) in sums[pairs * cols..][..cols].iter_mut().zip(b) {
+            *o = x.mul(cl);
+        }
+        len += 1;
+    }
+    while len > 1 {
+        let pairs = len / 2;
+        for i in 0..pairs {
+            // Row `i` from rows `2i` and `2i + 1` (`i <= 2i`: row 0 is updated in place).
+            let (lo, hi) = sums.split_at_mut((2 * i).max(1) * cols);
+            if i == 0 {
+                for (o, y) in lo[..cols].iter_mut().zip(&hi[..cols]) {
+                    *o = o.add(*y);
+                }
+            } else {
+                let (x, y) = hi[..2 * cols].split_at(cols);
+                for ((o, x), y) in lo[i * cols..][..cols].iter_mut().zip(x).zip(y) {
+                    *o = x.add(*y);
+                }
+            }
+        }
+        if len % 2 == 1 {
+            sums.copy_within((len - 1) * cols..len * cols, pairs * cols);
+        }
+        len = len.div_ceil(2);
+    }
+    &sums[..cols]
+}
+
 /// The Chebyshev coefficient functionals `f_k(B_j^N)`, `k = first..=last` (`last <= N`),
 /// `j = 0..=N`, as rows in base `B` with the proven per-entry bounds of the module docs:
 /// `(c_k / Q) A_j η`, `η = ε_B + U + β + γ_(ceil(log2 Q)) + 2U + U^2` with the Bernstein
@@ -243,17 +313,32 @@ pub(crate) fn chebyshev<B: Base>(nn: i64, first: i64, last: i64) -> Option<Vec<R
     if beta.is_nan() || beta > 1e-10 {
         return None;
     }
-    let bt: Vec<B> = tab
-        .vals
-        .iter()
-        .map(|d| B::of(d.hi).add(B::of(d.lo)))
-        .collect();
     let half = n / 2;
+    let cols = half + 1;
+    // The Bernstein values in the base, transposed (`bt[node * cols + j]`): the `f64` table
+    // as it is, another base's converted here.
+    let converted: Vec<B>;
+    let bt: &[B] = {
+        let t64: &dyn std::any::Any = &tab.t64;
+        if let Some(t) = t64.downcast_ref::<Vec<B>>() {
+            t
+        } else {
+            converted = (0..q * cols)
+                .map(|i| {
+                    let d = tab.vals[(i % cols) * q + i / cols];
+                    B::of(d.hi).add(B::of(d.lo))
+                })
+                .collect();
+            &converted
+        }
+    };
     let eta = (eps_b + u + beta + gamma(depth(q), u) + 2.0 * u + u * u) * (1.0 + 1e-8);
     let q4 = 4 * q;
     #[allow(clippy::cast_precision_loss, reason = "q <= 65")]
     let qf = q as f64;
-    let mut terms = vec![B::of(0.0); q.div_ceil(2)];
+    // The pairwise sums of every `j` side by side: level `t` of the tree in
+    // `sums[t * cols..(t + 1) * cols]`.
+    let mut sums = vec![B::of(0.0); q.div_ceil(2) * cols];
     let rows = (first..=last)
         .map(|k| {
             let ck = if k == 0 { 1.0 } else { 2.0 };
@@ -275,26 +360,13 @@ pub(crate) fn chebyshev<B: Base>(nn: i64, first: i64, last: i64) -> Option<Vec<R
                 })
                 .collect();
             let mut row = Row::zeros(n + 1);
-            for j in 0..=half {
-                // The first level of the pairwise sum fused with the products.
-                let bj = &bt[j * q..(j + 1) * q];
-                let mut len = 0;
-                for (t, (b, c)) in terms
-                    .iter_mut()
-                    .zip(bj.chunks_exact(2).zip(cosk.chunks_exact(2)))
-                {
-                    *t = b[0].mul(c[0]).add(b[1].mul(c[1]));
-                    len += 1;
-                }
-                if q % 2 == 1 {
-                    terms[len] = bj[q - 1].mul(cosk[q - 1]);
-                    len += 1;
-                }
-                row.v[j] = pairwise(&mut terms[..len]).mul(w);
+            let v = pairwise_columns(&mut sums, bt, &cosk, cols);
+            for (j, (x, a)) in v.iter().zip(&tab.a_up).enumerate().take(half + 1) {
+                row.v[j] = x.mul(w);
                 // (+ 1e-300: the products `B̂ ĉ` may be subnormal where a cosine is at its
                 // rounding level, `|ĉ| ~ 1e-32`; each such product and its double-word parts
                 // lose at most `2^-1074` absolutely, far below this allowance.)
-                row.e[j] = w_up * tab.a_up[j] * eta * (1.0 + 1e-8) + 1e-300;
+                row.e[j] = w_up * a * eta * (1.0 + 1e-8) + 1e-300;
             }
             // f_k(B_(N-j)) = (-1)^k f_k(B_j) (the nodes' symmetry; negation is exact).
             for j in half + 1..=n {
@@ -356,6 +428,40 @@ mod tests {
                     dd_err <= 1e-20,
                     "N={nn} k={k}: double-word bound {dd_err:e}"
                 );
+            }
+        }
+    }
+
+    /// [`pairwise_columns`] gives, bit for bit, one [`pairwise`] sum per column with its
+    /// first level fused with the products (the order the module's bound is for), at every
+    /// `Q` up to 65 and on values of mixed signs and magnitudes.
+    #[test]
+    fn pairwise_columns_is_the_pairwise_sum_per_column() {
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            #[allow(clippy::cast_precision_loss, reason = "a test value")]
+            let x = (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
+            x * 10f64.powi(i32::try_from(seed % 7).unwrap_or(0) - 3)
+        };
+        for q in 1..=65usize {
+            let cols = q / 2 + 1;
+            let bt: Vec<f64> = (0..q * cols).map(|_| next()).collect();
+            let c: Vec<f64> = (0..q).map(|_| next()).collect();
+            let mut sums = vec![0.0; q.div_ceil(2) * cols];
+            let got = pairwise_columns(&mut sums, &bt, &c, cols).to_vec();
+            for (j, g) in got.iter().enumerate() {
+                let mut terms: Vec<f64> = (0..q / 2)
+                    .map(|t| {
+                        bt[2 * t * cols + j] * c[2 * t] + bt[(2 * t + 1) * cols + j] * c[2 * t + 1]
+                    })
+                    .collect();
+                if q % 2 == 1 {
+                    terms.push(bt[(q - 1) * cols + j] * c[q - 1]);
+                }
+                assert_eq!(g.to_bits(), pairwise(&mut terms).to_bits(), "Q={q} j={j}");
             }
         }
     }

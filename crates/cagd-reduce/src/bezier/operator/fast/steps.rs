@@ -429,7 +429,7 @@ fn piegl_tiller<B: Base>(s: &[Row<B>], symmetric: bool) -> Step<B> {
 /// `C(k, k/2) / 2^k` rounded up (Piegl–Tiller's bound factor, as `one_step.rs`'s exact
 /// `up`, at most one ulp above it): the binomial rounded up to `f64` times an exact power
 /// of two.
-fn central_binomial_share(k: usize) -> f64 {
+pub(crate) fn central_binomial_share(k: usize) -> f64 {
     let c = cagd_core::binomial(k, k / 2);
     #[allow(
         clippy::cast_precision_loss,
@@ -493,10 +493,19 @@ pub(crate) fn residual_coef<B: Base>(method: Method, k: usize) -> Option<f64> {
 
 /// [`residual_coef`] in double-word, remembered per `(method, k)` for the process: a
 /// constant of the step (like the `W_n` table of `wn_table.rs`), whose `O(k)` evaluation on
-/// one-column rows is allocation-bound (about 40 % of a Forrest build at `(30,15)`).
+/// one-column rows is allocation-bound (about 40 % of a Forrest build at `(30,15)`). The
+/// methods without parameters have a fixed table per `k` (a hashed look-up cost about 700
+/// instructions, 7 % of a row-bound Forrest build at `(30,15)`).
 pub(crate) fn residual_coef_cached(method: Method, k: usize) -> Option<f64> {
     use std::collections::HashMap;
     use std::sync::{OnceLock, RwLock};
+    const N: usize = cagd_core::MAX_DEGREE + 2;
+    static PLAIN: [[OnceLock<Option<f64>>; N]; 8] = [const { [const { OnceLock::new() }; N] }; 8];
+    if let (key @ 0..=7, 0, 0) = method.key() {
+        if let Some(cell) = PLAIN[usize::from(key)].get(k) {
+            return *cell.get_or_init(|| residual_coef::<super::dd::Dd>(method, k));
+        }
+    }
     type Memo = RwLock<HashMap<((u8, u64, u64), usize), Option<f64>>>;
     static MEMO: OnceLock<Memo> = OnceLock::new();
     let memo = MEMO.get_or_init(|| RwLock::new(HashMap::new()));

@@ -246,6 +246,62 @@ fn compensated_route_matches_the_exact_oracle() {
     }
 }
 
+/// The row-bound route of Forrest and Piegl–Tiller (`row_bound.rs`) at every pair `n <= 16`
+/// and at `(20,10)`, `(24,12)`, `(30,15)`: proven at the rounding level (`build`'s
+/// `strict`), every row of the matrix and every bound term within its proven error of the
+/// exact oracle, `build` takes it; and against the independent tracked `f64` route (one
+/// error per entry): the same matrix bit for bit, its proven error at most `1 + 1e-5` times
+/// that route's (the per-row bound is the sum of the per-entry ones, plus the underflow
+/// allowances; Piegl–Tiller's middle point is bounded as Forrest's, a little tighter).
+#[test]
+fn row_bound_route_matches_the_exact_oracle() {
+    let mut pairs: Vec<(usize, usize)> =
+        (1..=16).flat_map(|n| (0..n).map(move |m| (n, m))).collect();
+    pairs.extend([(20, 10), (24, 12), (30, 15)]);
+    for method in [Method::Forrest, Method::PieglTiller] {
+        for &(n, m) in &pairs {
+            if method.check(n, m).is_err() {
+                continue;
+            }
+            #[allow(clippy::cast_precision_loss, reason = "n <= 30")]
+            let strict = 2.0 * (n as f64 + 3.0) * f64::EPSILON;
+            let (rows, terms) = row_bound::stepwise(method, n, m)
+                .unwrap_or_else(|| panic!("{method:?} {n}->{m}: given up"));
+            let b = finish(&rows, &terms, OperatorRoute::F64, strict)
+                .unwrap_or_else(|| panic!("{method:?} {n}->{m}: not proven at {strict:e}"));
+            let (e, te, _) = compare_built(method, n, m, &b).unwrap();
+            assert!(
+                e <= strict && te <= 1.0,
+                "{method:?} {n}->{m}: {e:e} {te:e}"
+            );
+            let built = build(method, n, m).unwrap();
+            assert_eq!(built.matrix, b.matrix, "{method:?} {n}->{m}: build's route");
+            assert_eq!(built.route, OperatorRoute::F64, "{method:?} {n}->{m}");
+            let (rows, terms) = rows_of::<f64>(method, n, m, false).unwrap();
+            let tracked = finish(&rows, &terms, OperatorRoute::F64, 1e300).unwrap();
+            assert_eq!(tracked.matrix, b.matrix, "{method:?} {n}->{m}: tracked");
+            assert!(
+                b.error <= tracked.error * (1.0 + 1e-5) + 1e-290,
+                "{method:?} {n}->{m}: proven {:e} against the tracked {:e}",
+                b.error,
+                tracked.error
+            );
+        }
+        // Degree 64 (the oracle there is the ignored sweep's): accepted, the tracked
+        // route's matrix.
+        for (n, m) in [(64, 63), (64, 32), (64, 10)] {
+            let strict = 2.0 * (64.0 + 3.0) * f64::EPSILON;
+            let (rows, terms) = row_bound::stepwise(method, n, m).unwrap();
+            let b = finish(&rows, &terms, OperatorRoute::F64, strict)
+                .unwrap_or_else(|| panic!("{method:?} {n}->{m}: not proven at {strict:e}"));
+            let (rows, terms) = rows_of::<f64>(method, n, m, false).unwrap();
+            let tracked = finish(&rows, &terms, OperatorRoute::F64, 1e300).unwrap();
+            assert_eq!(tracked.matrix, b.matrix, "{method:?} {n}->{m}: tracked");
+            assert!(b.error <= tracked.error * (1.0 + 1e-5));
+        }
+    }
+}
+
 /// Farin at `(64,10)`: its split form gives up in double-word, the direct form is proven
 /// (a regression: the give-up once ended the fast routes, and the exact route took 3 s).
 #[test]

@@ -445,10 +445,8 @@ fn on_points<B: Base>(
     if ri == -1 && pi == -1 {
         return phi;
     }
-    let nn = ni - (ri + pi + 2);
-    let sc: Vec<Tracked<B>> = (0..=nn)
-        .map(|i| Tracked::binom(ni, ri + 1 + i).div(Tracked::binom(nn, i)))
-        .collect();
+    let consts = on_points_constants::<B>(n, m, r, p);
+    let (sc, bands) = (&consts.0, &consts.1);
     let ends: Vec<(i64, &Row<B>)> = left
         .iter()
         .enumerate()
@@ -459,16 +457,6 @@ fn on_points<B: Base>(
                 .enumerate()
                 .map(|(l, q)| (mi - pi + to_i(l), q)),
         )
-        .collect();
-    // Per end point: the band `lo..=hi` of `i` where `b_(l, r+1+i) != 0`, and those `b`.
-    let bands: Vec<(usize, Vec<Tracked<B>>)> = ends
-        .iter()
-        .map(|(l, _)| {
-            let lo = (l - ri - 1).max(0);
-            let hi = (l - ri - 1 + ni - mi).min(nn);
-            let beta = (lo..=hi).map(|i| b::<B>(mi, ni, *l, ri + 1 + i)).collect();
-            (idx(lo.min(nn + 1)), beta)
-        })
         .collect();
     // An end point `Q_l` depends on `P_0..=P_l` (left) or `P_(n-p+l)..` (right) only: its
     // row is zero (value and error) outside its support, so the updates run there (the
@@ -487,6 +475,7 @@ fn on_points<B: Base>(
                 scale_entry(&mut row, lo_w + i, *s);
             }
             let mut scalars: Vec<Tracked<B>> = Vec::with_capacity(ends.len());
+            debug_assert_eq!(bands.len(), ends.len());
             for (t, (lo, beta)) in bands.iter().enumerate() {
                 let x = if mirrored && t >= n_left {
                     // Right end point `m - p + (t - n_left)` mirrors left `p - (t - n_left)`.
@@ -503,6 +492,58 @@ fn on_points<B: Base>(
             row
         })
         .collect()
+}
+
+/// The constants of [`on_points`] for `(n, m, r, p)` in base `B`: the column scalings
+/// `C(n, r+1+i) / C(N, i)`, `i = 0..=N`, and per end point (the left ones `l = 0..=r`, then
+/// the right ones `l = m-p..=m`) the band `lo..=hi` of `i` where `b_(l, r+1+i) != 0`
+/// (Lemma 14.5.1) with those `b`; remembered for the process like the binomials (their
+/// tracked binomial products and quotients were 3 % of a constrained Chebyshev build at
+/// `(30,15)`).
+#[allow(clippy::type_complexity, reason = "a memo of two tables")]
+fn on_points_constants<B: Base>(
+    n: usize,
+    m: usize,
+    r: i32,
+    p: i32,
+) -> std::sync::Arc<(Vec<Tracked<B>>, Vec<(usize, Vec<Tracked<B>>)>)> {
+    use std::any::{Any, TypeId};
+    use std::collections::HashMap;
+    use std::sync::{Arc, OnceLock, RwLock};
+    type Memo = RwLock<HashMap<(TypeId, usize, usize, i32, i32), Arc<dyn Any + Send + Sync>>>;
+    static MEMO: OnceLock<Memo> = OnceLock::new();
+    let memo = MEMO.get_or_init(|| RwLock::new(HashMap::new()));
+    let key = (TypeId::of::<B>(), n, m, r, p);
+    if let Some(c) = memo
+        .read()
+        .ok()
+        .and_then(|t| t.get(&key).cloned())
+        .and_then(|c| {
+            c.downcast::<(Vec<Tracked<B>>, Vec<(usize, Vec<Tracked<B>>)>)>()
+                .ok()
+        })
+    {
+        return c;
+    }
+    let (ni, mi, ri, pi) = (to_i(n), to_i(m), i64::from(r), i64::from(p));
+    let nn = ni - (ri + pi + 2);
+    let sc: Vec<Tracked<B>> = (0..=nn)
+        .map(|i| Tracked::binom(ni, ri + 1 + i).div(Tracked::binom(nn, i)))
+        .collect();
+    let ends = (0..=ri).chain((mi - pi)..=mi);
+    let bands: Vec<(usize, Vec<Tracked<B>>)> = ends
+        .map(|l| {
+            let lo = (l - ri - 1).max(0);
+            let hi = (l - ri - 1 + ni - mi).min(nn);
+            let beta = (lo..=hi).map(|i| b::<B>(mi, ni, l, ri + 1 + i)).collect();
+            (idx(lo.min(nn + 1)), beta)
+        })
+        .collect();
+    let c = Arc::new((sc, bands));
+    if let Ok(mut t) = memo.write() {
+        t.insert(key, Arc::clone(&c) as Arc<dyn Any + Send + Sync>);
+    }
+    c
 }
 
 /// The bound terms' functionals `f_k`, `k = M+1..=N`, on the points: the Chebyshev
