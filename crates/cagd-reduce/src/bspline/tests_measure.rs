@@ -53,9 +53,9 @@ fn sweep(
 #[test]
 fn the_capped_measurement_is_the_uncapped_one() {
     let (mut same, mut total) = (0, 0);
-    for case in 0..32u64 {
-        let p = 4 + (case as usize * 5) % 12;
-        let spans = 1 + (case as usize * 7) % 20;
+    for case in 0..32usize {
+        let p = 4 + (case * 5) % 12;
+        let spans = 1 + (case * 7) % 20;
         let mult = if case % 3 == 0 && spans >= 3 && p >= 4 {
             2
         } else {
@@ -71,7 +71,15 @@ fn the_capped_measurement_is_the_uncapped_one() {
         } else {
             (10.0, 0.0)
         };
-        let c = sweep(p, spans, mult, domain, place, case % 2 == 1, 700 + case);
+        let c = sweep(
+            p,
+            spans,
+            mult,
+            domain,
+            place,
+            case % 2 == 1,
+            700 + case as u64,
+        );
         for tol in [1e-3, 1e-5, 1e-7] {
             let opts = BSplineOptions {
                 measure: true,
