@@ -6,7 +6,7 @@
 
 use cagd_core::{BSplineCurve, BSplineSurface, Error, ModelFrame, Result};
 
-use super::measure::spline_max_deviation;
+use super::measure::{Known, SpanCaps, spline_max_deviation_known};
 use super::options::{BSplineOptions, BSplineReduction};
 
 /// A rational shape's frame and the tolerance to use inside it.
@@ -61,7 +61,13 @@ impl Frame {
     /// The model-space bound of a bound `b` found in the frame for the framed result
     /// `out` (frame units): `s b` plus the round trip's rounding.
     pub(crate) fn finish(&self, b: f64, out: &[f64]) -> f64 {
-        b * self.frame.scale() * (1.0 + 2.0 * f64::EPSILON) + self.frame.rounding(out)
+        self.finish_rounded(b, self.frame.rounding(out))
+    }
+
+    /// [`Frame::finish`] with the out-map's rounding `rounding` of the result computed
+    /// once (for many bounds of one result).
+    fn finish_rounded(&self, b: f64, rounding: f64) -> f64 {
+        b * self.frame.scale() * (1.0 + 2.0 * f64::EPSILON) + rounding
     }
 }
 
@@ -153,15 +159,31 @@ pub(crate) fn reduce_curve_framed(
     opts: &BSplineOptions,
     reduce: impl Fn(&BSplineCurve, &BSplineOptions) -> Result<BSplineReduction>,
 ) -> Result<BSplineReduction> {
+    reduce_curve_framed_capped(curve, opts, |c, o| reduce(c, o).map(|r| (r, None)))
+}
+
+/// [`reduce_curve_framed`] for a `reduce` that also returns certified bounds per span
+/// ([`SpanCaps`], in the units of its input): moved back with the result (each finished as
+/// the error bound is, [`Frame::finish`]), they spare the measurement the pairs of pieces
+/// that cannot hold the maximum ([`spline_max_deviation_known`]).
+///
+/// # Errors
+/// As [`reduce_curve_framed`].
+pub(crate) fn reduce_curve_framed_capped(
+    curve: &BSplineCurve,
+    opts: &BSplineOptions,
+    reduce: impl Fn(&BSplineCurve, &BSplineOptions) -> Result<(BSplineReduction, Option<SpanCaps>)>,
+) -> Result<BSplineReduction> {
     let Some((frame, moved)) = frame_curve(curve, opts.tolerance)? else {
-        return reduce(curve, opts);
+        return reduce(curve, opts).map(|(r, _)| r);
     };
     let inner = BSplineOptions {
         tolerance: frame.inner_tol,
         measure: false,
         ..*opts
     };
-    let mut red = reduce(&moved, &inner).map_err(|e| frame.model_error(e, opts.tolerance))?;
+    let (mut red, caps) =
+        reduce(&moved, &inner).map_err(|e| frame.model_error(e, opts.tolerance))?;
     let out = red.curve.points().to_vec();
     red.curve = unframe_curve(&frame, &red.curve)?;
     red.report.tolerance = opts.tolerance;
@@ -174,7 +196,20 @@ pub(crate) fn reduce_curve_framed(
         });
     }
     if opts.measure {
-        red.report.max_error = Some(spline_max_deviation(curve, &red.curve)?);
+        let rounding = frame.frame.rounding(&out);
+        let caps = caps.map(|c| SpanCaps {
+            bounds: c
+                .bounds
+                .iter()
+                .map(|&b| frame.finish_rounded(b, rounding))
+                .collect(),
+            breaks: c.breaks,
+        });
+        let known = Known {
+            pieces_a: None,
+            caps: caps.as_ref(),
+        };
+        red.report.max_error = Some(spline_max_deviation_known(curve, &red.curve, known)?);
     }
     Ok(red)
 }

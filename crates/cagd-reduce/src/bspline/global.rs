@@ -18,7 +18,7 @@ use super::fit::{
 use super::grading::{GRADE, grading_breaks};
 use super::knots::order_at;
 use super::knots::{LocalBounds, Raw, Sharpen};
-use super::measure::spline_max_deviation;
+use super::measure::{Known, SpanCaps, spline_max_deviation_known};
 use super::options::{BSplineOptions, BSplineReduction, BSplineReport, BSplineStrategy};
 
 /// Share of the tolerance the fit must meet on every span; the rest is for knot removal.
@@ -323,11 +323,15 @@ fn model_curve(
 }
 
 /// [`BSplineStrategy::GlobalFit`] (see [`crate::reduce_bspline`]; `opts` validated there,
-/// `opts.continuity` set).
+/// `opts.continuity` set), with the certified bound of every span of the fit after knot
+/// removal ([`SpanCaps`], in the units of `curve`): the measurement, here or of the framed
+/// caller, visits only the pairs of pieces whose bound can reach the largest distance
+/// ([`spline_max_deviation_known`]; for a polynomial curve also with the source's pieces,
+/// which are `curve`'s).
 pub(crate) fn reduce_global(
     curve: &BSplineCurve,
     opts: &BSplineOptions,
-) -> Result<BSplineReduction> {
+) -> Result<(BSplineReduction, Option<SpanCaps>)> {
     let (p, m, tol) = (curve.degree(), opts.target, opts.tolerance);
     let k = opts.continuity.unwrap_or(m - 1);
     let rational = curve.is_rational();
@@ -358,8 +362,16 @@ pub(crate) fn reduce_global(
     );
     local.remove_greedily_with(&mut raw, tol, Some(&mut sharpen))?;
     let curve_out = raw.into_curve()?;
+    let caps = SpanCaps {
+        breaks: local.breaks().to_vec(),
+        bounds: local.spans().to_vec(),
+    };
     let max_error = if opts.measure {
-        Some(spline_max_deviation(curve, &curve_out)?)
+        let known = Known {
+            pieces_a: (!rational).then_some((&src.breaks[..], src.all_points())),
+            caps: Some(&caps),
+        };
+        Some(spline_max_deviation_known(curve, &curve_out, known)?)
     } else {
         None
     };
@@ -376,7 +388,7 @@ pub(crate) fn reduce_global(
         .windows(2)
         .filter(|w| w[0] < w[1])
         .count();
-    Ok(BSplineReduction {
+    let red = BSplineReduction {
         report: BSplineReport {
             strategy: BSplineStrategy::GlobalFit,
             degree_from: p,
@@ -391,5 +403,6 @@ pub(crate) fn reduce_global(
         curve: curve_out,
         spans_in: src.breaks.len() - 1,
         spans_out,
-    })
+    };
+    Ok((red, Some(caps)))
 }

@@ -2,6 +2,7 @@
 //! the small helpers the B-spline reducers share.
 
 use std::cell::RefCell;
+use std::rc::Rc;
 
 use cagd_core::kernel::{bernstein_all, subdivide};
 
@@ -51,6 +52,80 @@ use cagd_core::{
 /// # Ok::<(), cagd_reduce::Error>(())
 /// ```
 pub fn spline_max_deviation(a: &BSplineCurve, b: &BSplineCurve) -> Result<f64> {
+    spline_max_deviation_known(a, b, Known::default())
+}
+
+/// What a caller of [`spline_max_deviation_known`] knows already about the two curves.
+#[derive(Debug, Default, Clone, Copy)]
+pub(crate) struct Known<'a> {
+    /// The Bézier pieces of `a` (a polynomial curve): `pieces + 1` increasing breaks and
+    /// `(p + 1) dim` points per piece, those of `a.to_beziers()` (the global fit's source
+    /// holds them), so that they are not extracted again.
+    pub(crate) pieces_a: Option<(&'a [f64], &'a [f64])>,
+    /// Certified bounds of the distance per interval.
+    pub(crate) caps: Option<&'a SpanCaps>,
+}
+
+/// Certified bounds of the distance between two curves per interval: `bounds[i] >= max
+/// ||a(t) - b(t)||` on `[breaks[i], breaks[i + 1]]` (model units; `breaks` increasing over
+/// the domain, one longer than `bounds`), e.g. those a reduction keeps per span.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct SpanCaps {
+    pub(crate) breaks: Vec<f64>,
+    pub(crate) bounds: Vec<f64>,
+}
+
+impl Known<'_> {
+    /// The largest of the certified bounds ([`Known::caps`]) of the intervals that meet the
+    /// open interval `(lo, hi)`: a bound of the distance on it; infinite without caps or
+    /// when a cap is not a number.
+    fn cap(&self, lo: f64, hi: f64) -> f64 {
+        let Some(SpanCaps { breaks, bounds }) = self.caps else {
+            return f64::INFINITY;
+        };
+        let n = bounds.len();
+        if n == 0 || breaks.len() != n + 1 || lo < breaks[0] || hi > breaks[n] {
+            return f64::INFINITY;
+        }
+        let first = breaks[1..].partition_point(|x| *x <= lo).min(n);
+        let last = breaks.partition_point(|x| *x < hi).min(n).max(first + 1);
+        let mut cap = 0.0f64;
+        for &x in &bounds[first..last] {
+            if x.is_nan() {
+                return f64::INFINITY;
+            }
+            cap = cap.max(x);
+        }
+        cap
+    }
+}
+
+/// Relative margin by which a pair's certified cap must fall below the largest distance
+/// found for [`spline_max_deviation_known`] to skip it: the sampled distances carry the
+/// rounding of their evaluation, which the caps (bounds of the exact distance) do not.
+const CAP_MARGIN: f64 = 1e-6;
+
+/// [`spline_max_deviation`] with what the caller knows ([`Known`]): `a`'s pieces as they
+/// are, and certified bounds of the distance per interval. With the bounds, the pairs of
+/// pieces are visited in decreasing order of their bound (the largest bound over the
+/// intervals a pair meets) and a pair whose bound is below the largest distance found so
+/// far is not evaluated at all (it cannot hold the maximum, as a pair pruned by its
+/// Ehlich–Zeller bound in the second pass); the bound also caps the pair's Ehlich–Zeller
+/// bound there. The result is the same maximum — the largest distance found over the pairs
+/// that can hold it, each maximised by Brent where it may exceed the rest — with fewer
+/// pairs evaluated (ADDED, issue 17's real-CAD-file row: the reductions' span bounds are
+/// within about twice the error, so most pairs fall below the largest distance). It is a
+/// measurement, not a bound: the caps only decide which pairs need no evaluation, and a
+/// wrong cap would hide a larger distance, so the tests compare it with the measurement
+/// without caps and with dense sampling.
+///
+/// # Errors
+/// As [`spline_max_deviation`].
+pub(crate) fn spline_max_deviation_known(
+    a: &BSplineCurve,
+    b: &BSplineCurve,
+    known: Known<'_>,
+) -> Result<f64> {
     if a.dim() != b.dim() {
         return Err(Error::LengthMismatch {
             what: "curve dimensions",
@@ -67,11 +142,18 @@ pub fn spline_max_deviation(a: &BSplineCurve, b: &BSplineCurve) -> Result<f64> {
             why: "the two curves must have the same parameter domain",
         });
     }
-    let (sa, sb) = (a.to_beziers()?, b.to_beziers()?);
-    let (sa, sb): (Vec<PieceEval>, Vec<PieceEval>) = (
-        sa.iter().map(PieceEval::new).collect(),
-        sb.iter().map(PieceEval::new).collect(),
-    );
+    let sa: Vec<PieceEval> = match known.pieces_a {
+        Some((breaks, points)) if !a.is_rational() => {
+            let len = (a.degree() + 1) * a.dim();
+            breaks
+                .windows(2)
+                .zip(points.chunks_exact(len))
+                .map(|(t, q)| PieceEval::polynomial(t[0], t[1], q.to_vec(), a.dim()))
+                .collect()
+        }
+        _ => a.to_beziers()?.iter().map(PieceEval::new).collect(),
+    };
+    let sb: Vec<PieceEval> = b.to_beziers()?.iter().map(PieceEval::new).collect();
     let samples = 8 * (a.degree() + b.degree()) + 64;
     let per_point = (a.degree() + b.degree() + 2).max(16) / 16;
     let (mut i, mut j) = (0, 0);
@@ -103,8 +185,8 @@ pub fn spline_max_deviation(a: &BSplineCurve, b: &BSplineCurve) -> Result<f64> {
         .max(4);
     let factor = ehlich_zeller(degree, nodes);
     let (na, nb) = (
-        SampleTable::lobatto(a.degree(), nodes),
-        SampleTable::lobatto(b.degree(), nodes),
+        SampleTable::cached(a.degree(), nodes, true),
+        SampleTable::cached(b.degree(), nodes, true),
     );
     // Distances in units of a power of two `unit` at least the curves' size (exact, so the
     // same maxima as in model units; the squares of a curve at 1e300 do not overflow).
@@ -116,11 +198,29 @@ pub fn spline_max_deviation(a: &BSplineCurve, b: &BSplineCurve) -> Result<f64> {
     let mut d2 = Vec::with_capacity(samples + 1);
     let mut best = 0.0f64;
     let mut ranked = Vec::with_capacity(pairs.len());
-    for (idx, &(lo, hi, i, j)) in pairs.iter().enumerate() {
+    // The pairs' certified caps, squared in units of `unit` (infinite without caps), and
+    // the order of the visit: decreasing caps (the pairs' own order without caps).
+    let caps: Vec<f64> = pairs
+        .iter()
+        .map(|&(lo, hi, _, _)| {
+            let c = known.cap(lo, hi) * scratch.inv;
+            c * c * (1.0 + CAP_MARGIN)
+        })
+        .collect();
+    let mut order: Vec<usize> = (0..pairs.len()).collect();
+    if known.caps.is_some() {
+        order.sort_by(|&x, &y| caps[y].total_cmp(&caps[x]));
+    }
+    for idx in order {
+        if caps[idx] < best {
+            // Sorted: no later pair can reach the largest distance found either.
+            break;
+        }
+        let (lo, hi, i, j) = pairs[idx];
         let reach = scratch.at_nodes(&sa[i], &na, &sb[j], &nb, (lo, hi), dim, &mut d2)?;
         let top = d2.iter().copied().fold(0.0f64, f64::max);
         best = best.max(top);
-        ranked.push((top, factor * factor * reach, idx));
+        ranked.push((top, (factor * factor * reach).min(caps[idx]), idx));
     }
     // Pass 2: in order of their largest node value, the pairs whose bound reaches the
     // largest distance found so far (at most SPLINE_MEASURED_PIECES of them) sampled at
@@ -129,8 +229,8 @@ pub fn spline_max_deviation(a: &BSplineCurve, b: &BSplineCurve) -> Result<f64> {
     // cannot hold the maximum.
     ranked.sort_by(|p, q| q.0.total_cmp(&p.0));
     let (ta, tb) = (
-        SampleTable::new(a.degree(), samples),
-        SampleTable::new(b.degree(), samples),
+        SampleTable::cached(a.degree(), samples, false),
+        SampleTable::cached(b.degree(), samples, false),
     );
     let inv = scratch.inv;
     let eval_piece = |piece: &PieceEval, t: f64, out: &mut [f64]| {
@@ -212,7 +312,52 @@ pub const SPLINE_MEASURE_NODE_BUDGET: usize = 1 << 21;
 /// pieces of a measurement.
 struct SampleTable(LinearMap);
 
+/// Sample tables kept per thread for [`SampleTable::cached`]: `(lobatto, p, count)` and
+/// the table, most recent last.
+type TableCache = Vec<(bool, usize, usize, Rc<SampleTable>)>;
+
+/// Most tables [`SampleTable::cached`] keeps: a measurement asks for four, which depend on
+/// both degrees, so a set of curves of degree 4–15 reduced to cubics, polynomial and
+/// rational, cycles through about 90 (at most 1.5 MB: a degree-15 dense table of 209 rows
+/// is 27 KB, most are far smaller). Fewer, and the least recently used one is evicted on
+/// every call of such a cycle.
+const CACHED_TABLES: usize = 96;
+
+thread_local! {
+    static TABLES: RefCell<TableCache> = const { RefCell::new(Vec::new()) };
+}
+
 impl SampleTable {
+    /// [`SampleTable::lobatto`] (`lobatto`) or [`SampleTable::new`] of degree `p` with
+    /// `count` intervals, kept per thread for the next measurement (ADDED, issue 17's
+    /// real-CAD-file row: building the four tables of a measurement was 6 % of reducing a
+    /// degree 4–15 B-spline to cubics within 1e-3 with the measurement on). The values are
+    /// those of a fresh table.
+    fn cached(p: usize, count: usize, lobatto: bool) -> Rc<Self> {
+        TABLES.with(|c| {
+            let mut c = c.borrow_mut();
+            if let Some(at) = c
+                .iter()
+                .position(|e| e.0 == lobatto && e.1 == p && e.2 == count)
+            {
+                let hit = c.remove(at);
+                let table = Rc::clone(&hit.3);
+                c.push(hit);
+                return table;
+            }
+            let table = Rc::new(if lobatto {
+                Self::lobatto(p, count)
+            } else {
+                Self::new(p, count)
+            });
+            if c.len() == CACHED_TABLES {
+                c.remove(0);
+            }
+            c.push((lobatto, p, count, Rc::clone(&table)));
+            table
+        })
+    }
+
     fn new(p: usize, coarse: usize) -> Self {
         let width = p + 1;
         let mut values = vec![0.0; (coarse + 1) * width];
@@ -383,6 +528,20 @@ struct PieceEval {
 }
 
 impl PieceEval {
+    /// The polynomial piece on `[start, end]` with Bézier points `points` (`dim` each).
+    fn polynomial(start: f64, end: f64, points: Vec<f64>, dim: usize) -> Self {
+        let n = points.len() / dim;
+        Self {
+            start,
+            end,
+            hdim: dim,
+            rational: false,
+            points,
+            binom: (0..n).map(|i| cagd_core::binomial_f64(n - 1, i)).collect(),
+            scratch: RefCell::new((vec![0.0; n], vec![0.0; dim])),
+        }
+    }
+
     fn new(piece: &BezierSegment) -> Self {
         let c = &piece.curve;
         let rational = c.is_rational();
@@ -708,4 +867,30 @@ impl CellEval {
 /// origin): every caller works on a framed shape.
 pub(crate) fn euclidean_from_homogeneous(eps_h: f64, pmax: f64, wmin: f64, vmin: f64) -> f64 {
     cagd_core::centred_rational_bound(eps_h, eps_h, pmax, wmin, vmin)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::SampleTable;
+
+    /// The cached tables are the fresh ones, for both kinds, again after more tables than
+    /// the cache keeps were asked for (evictions), and a hit is the same table.
+    #[test]
+    fn cached_tables_are_the_fresh_ones() {
+        for round in 0..2 {
+            for p in 1..=60 {
+                for (count, lobatto) in [(3 * p + 1, true), (8 * p + 64, false)] {
+                    let fresh = if lobatto {
+                        SampleTable::lobatto(p, count)
+                    } else {
+                        SampleTable::new(p, count)
+                    };
+                    let cached = SampleTable::cached(p, count, lobatto);
+                    assert_eq!(cached.0.matrix(), fresh.0.matrix(), "round {round} p {p}");
+                    let again = SampleTable::cached(p, count, lobatto);
+                    assert!(std::rc::Rc::ptr_eq(&cached, &again));
+                }
+            }
+        }
+    }
 }

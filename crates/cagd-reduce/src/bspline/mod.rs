@@ -20,7 +20,11 @@ mod reduce;
 mod segments;
 mod surface;
 #[cfg(test)]
+mod test_support;
+#[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_measure;
 #[cfg(test)]
 mod tests_straddle;
 mod uniform;

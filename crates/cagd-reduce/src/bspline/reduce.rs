@@ -5,7 +5,7 @@
 
 use cagd_core::{BSplineCurve, Error, Result, check_tolerance};
 
-use super::framed::reduce_curve_framed;
+use super::framed::reduce_curve_framed_capped;
 use super::options::{BSplineOptions, BSplineReduction, BSplineStrategy};
 use crate::Method;
 
@@ -137,5 +137,5 @@ pub fn reduce_bspline(curve: &BSplineCurve, opts: &BSplineOptions) -> Result<BSp
 /// taken against the input itself. (Spans: the same as unframed on the `cad_curves`
 /// bench.)
 fn reduce_global_framed(curve: &BSplineCurve, opts: &BSplineOptions) -> Result<BSplineReduction> {
-    reduce_curve_framed(curve, opts, super::global::reduce_global)
+    reduce_curve_framed_capped(curve, opts, super::global::reduce_global)
 }

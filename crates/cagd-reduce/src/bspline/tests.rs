@@ -573,22 +573,15 @@ fn the_first_fit_lands_near_the_final_spans() {
 /// bench's kind: weights `2^sin` in `[0.5, 2]`), `spans` non-uniform spans, the middle
 /// interior knot of multiplicity `mult`.
 fn smooth_nurbs(p: usize, spans: usize, mult: usize, seed: u64) -> BSplineCurve {
+    use super::test_support::{greville, jittered_knots, sweep_point, sweep_weight};
     let r = cagd_testkit::bench::random_input(8, seed);
-    let mut knots = vec![0.0; p + 1];
-    for i in 1..spans {
-        let t = (i as f64 + 0.3 * r[i % 8]) / spans as f64;
-        let times = if i == spans / 2 { mult } else { 1 };
-        knots.extend(std::iter::repeat_n(t, times));
-    }
-    knots.extend(std::iter::repeat_n(1.0, p + 1));
+    let knots = jittered_knots(p, spans, mult, &r);
     let n = knots.len() - p - 1;
     let (mut pts, mut w) = (Vec::with_capacity(3 * n), Vec::with_capacity(n));
     for i in 0..n {
-        let g = knots[i + 1..=i + p].iter().sum::<f64>() / p as f64;
-        let a = 1.5 * (1.0 + r[0]) * g + r[1];
-        let rad = 1.0 + 0.3 * (3.0 * g).sin() * r[2];
-        pts.extend([rad * a.cos(), rad * a.sin(), 0.4 * r[3] * g]);
-        w.push(2f64.powf(((2.0 + r[4]) * g * std::f64::consts::PI + r[5]).sin()));
+        let g = greville(&knots, p, i);
+        pts.extend(sweep_point(g, &r));
+        w.push(sweep_weight(g, &r));
     }
     BSplineCurve::new_rational(p, knots, pts, w, 3).unwrap()
 }

@@ -8,8 +8,11 @@
 
 use super::fit::{Density, Source, fit, span_bounds};
 use super::global::working;
+use super::test_support::{
+    greville, jittered_knots, residual_inner_products, sweep_point, sweep_weight,
+};
 use super::*;
-use cagd_core::{BSplineCurve, basis_functions, find_span, knot_multiplicity};
+use cagd_core::{BSplineCurve, knot_multiplicity};
 use cagd_testkit::bench::random_input;
 use cagd_testkit::sampled_max_distance;
 
@@ -26,21 +29,13 @@ fn curve(
     seed: u64,
 ) -> BSplineCurve {
     let r = random_input(8, seed);
-    let mut knots = vec![0.0; p + 1];
-    for i in 1..spans {
-        let t = (i as f64 + 0.3 * r[i % 8]) / spans as f64;
-        let times = if i == spans / 2 { mult } else { 1 };
-        knots.extend(std::iter::repeat_n(t, times));
-    }
-    knots.extend(std::iter::repeat_n(1.0, p + 1));
+    let knots = jittered_knots(p, spans, mult, &r);
     let n = knots.len() - p - 1;
     let noise = random_input(4 * n, seed + 1);
     let (mut pts, mut w) = (Vec::with_capacity(3 * n), Vec::with_capacity(n));
     for i in 0..n {
-        let g = knots[i + 1..=i + p].iter().sum::<f64>() / p as f64;
-        let a = 1.5 * (1.0 + r[0]) * g + r[1];
-        let rad = 1.0 + 0.3 * (3.0 * g).sin() * r[2];
-        let mut q = [rad * a.cos(), rad * a.sin(), 0.4 * r[3] * g];
+        let g = greville(&knots, p, i);
+        let mut q = sweep_point(g, &r);
         if family == 1 && i == n / 2 {
             q = [q[0] - 1.5, q[1] + 0.8, q[2]];
         }
@@ -52,7 +47,7 @@ fn curve(
         w.push(if family == 0 {
             2f64.powf(6.0 * noise[4 * i + 3])
         } else {
-            2f64.powf(((2.0 + r[4]) * g * std::f64::consts::PI + r[5]).sin())
+            sweep_weight(g, &r)
         });
     }
     if rational {
@@ -132,32 +127,7 @@ fn the_straddling_fit_is_orthogonal_to_the_spline_space() {
     let mut cuts: Vec<f64> = knots.iter().chain(&src.breaks).copied().collect();
     cuts.sort_by(f64::total_cmp);
     cuts.dedup();
-    let mut inner = vec![[0.0f64; 3]; n];
-    let (mut basis, mut scratch) = ([0.0; 4], [0.0; 8]);
-    let panels = 2000;
-    for w in cuts.windows(2) {
-        let h = (w[1] - w[0]) / f64::from(panels);
-        for i in 0..=2 * panels {
-            let t = w[0] + h * f64::from(i) / 2.0;
-            let weight = if i == 0 || i == 2 * panels {
-                1.0
-            } else if i % 2 == 1 {
-                4.0
-            } else {
-                2.0
-            } * h
-                / 6.0;
-            let (a, b) = (c.eval(t).unwrap(), s.eval(t).unwrap());
-            let mid = 0.5 * (w[0] + w[1]);
-            let span = find_span(&knots, 3, n, mid);
-            basis_functions(&knots, span, 3, t, &mut basis, &mut scratch);
-            for (k, nk) in basis.iter().enumerate() {
-                for d in 0..3 {
-                    inner[span - 3 + k][d] += weight * nk * (a[d] - b[d]);
-                }
-            }
-        }
-    }
+    let inner = residual_inner_products(&c, &s, &cuts, 2000);
     for (j, v) in inner.iter().enumerate().take(n - 1).skip(1) {
         assert!(v.iter().all(|x| x.abs() < 1e-12), "N_{j}: {v:?}");
     }

@@ -135,6 +135,11 @@ impl Source {
         }
     }
 
+    /// The Bézier points of every piece, piece after piece.
+    pub(crate) fn all_points(&self) -> &[f64] {
+        &self.points
+    }
+
     fn first_point(&self) -> &[f64] {
         &self.points[..self.pdim]
     }

@@ -84,23 +84,33 @@ impl NodeGrid {
     }
 }
 
-/// The value in this thread's one-entry cache `cell` when `hit` accepts it, else `build`'s,
-/// which then replaces it (a fit asks for the same degrees every span and round).
+/// Entries a thread keeps in each cache of [`cached`]: a set of curves of degree 4–15
+/// reduced to cubics asks for a dozen `(p, m)` pairs, and with one entry nearly every
+/// curve of such a set built its nodes and rows again (ADDED, issue 17's real-CAD-file
+/// row: 43 of 50 curves, 3 % of reducing them to cubics within 1e-3).
+pub(super) const RECENT: usize = 16;
+
+/// The value in this thread's cache `cell` (the [`RECENT`] most recently used values,
+/// oldest first) that `hit` accepts, else `build`'s, which then joins them (a fit asks
+/// for the same degrees every span and round, a set of curves for a few pairs).
 pub(super) fn cached<T>(
-    cell: &'static std::thread::LocalKey<RefCell<Option<Rc<T>>>>,
+    cell: &'static std::thread::LocalKey<RefCell<Vec<Rc<T>>>>,
     hit: impl Fn(&T) -> bool,
     build: impl FnOnce() -> T,
 ) -> Rc<T> {
     cell.with(|c| {
         let mut c = c.borrow_mut();
-        match c.as_ref() {
-            Some(v) if hit(v) => Rc::clone(v),
-            _ => {
-                let v = Rc::new(build());
-                *c = Some(Rc::clone(&v));
-                v
-            }
+        if let Some(at) = c.iter().position(|v| hit(v)) {
+            let v = c.remove(at);
+            c.push(Rc::clone(&v));
+            return v;
         }
+        let v = Rc::new(build());
+        if c.len() >= RECENT {
+            c.remove(0);
+        }
+        c.push(Rc::clone(&v));
+        v
     })
 }
 
@@ -123,11 +133,11 @@ pub(crate) struct NodeBound {
 thread_local! {
     /// The last nodes built on this thread (a refinement asks for the same `(p, m)` every
     /// round, and a benchmark for the same pair every curve).
-    static LAST: RefCell<Option<Rc<NodeBound>>> = const { RefCell::new(None) };
+    static LAST: RefCell<Vec<Rc<NodeBound>>> = const { RefCell::new(Vec::new()) };
 }
 
 impl NodeBound {
-    /// The nodes for `(p, m)`, from this thread's one-entry cache or built.
+    /// The nodes for `(p, m)`, from this thread's cache ([`cached`]) or built.
     pub(crate) fn cached(p: usize, m: usize) -> Rc<Self> {
         cached(&LAST, |nb| nb.p == p && nb.m == m, || Self::new(p, m))
     }
@@ -286,6 +296,33 @@ mod tests {
     use super::*;
     use cagd_core::BezierCurve;
     use cagd_testkit::bench::random_input as values;
+
+    /// The thread's cache of nodes keeps the [`RECENT`] pairs asked for last: cycling
+    /// through fewer pairs builds each once (the same `Rc` again), more evicts the oldest,
+    /// and every value handed out is the fresh one's.
+    #[test]
+    fn the_cache_keeps_the_recent_pairs() {
+        let pairs: Vec<(usize, usize)> = (4..=15).map(|p| (p, 3)).collect();
+        assert!(pairs.len() < RECENT);
+        let first: Vec<Rc<NodeBound>> = pairs
+            .iter()
+            .map(|&(p, m)| NodeBound::cached(p, m))
+            .collect();
+        for (x, &(p, m)) in first.iter().zip(&pairs) {
+            let again = NodeBound::cached(p, m);
+            assert!(Rc::ptr_eq(x, &again), "({p}, {m}) built again");
+            let fresh = NodeBound::new(p, m);
+            assert_eq!((again.bp.clone(), again.bm.clone()), (fresh.bp, fresh.bm));
+            assert_eq!(again.sec.to_bits(), fresh.sec.to_bits());
+        }
+        // RECENT more pairs: the first ones are evicted and built anew, equal to fresh.
+        for p in 20..20 + RECENT {
+            let _ = NodeBound::cached(p, 2);
+        }
+        let rebuilt = NodeBound::cached(4, 3);
+        assert!(!Rc::ptr_eq(&first[0], &rebuilt));
+        assert_eq!(rebuilt.bp, NodeBound::new(4, 3).bp);
+    }
 
     /// The densely sampled `max_t ||a(t) - b(t)||` with a golden-section polish around the
     /// best sample (independent of the nodes: de Casteljau evaluation).

@@ -52,7 +52,7 @@ pub(crate) struct NumeratorNodes {
 
 thread_local! {
     /// The last nodes built on this thread (a fit asks for the same `(p, m)` every span).
-    static LAST: RefCell<Option<Rc<NumeratorNodes>>> = const { RefCell::new(None) };
+    static LAST: RefCell<Vec<Rc<NumeratorNodes>>> = const { RefCell::new(Vec::new()) };
 }
 
 /// The data of one span for [`NumeratorNodes::bound`]: the input's and the fit's Bézier

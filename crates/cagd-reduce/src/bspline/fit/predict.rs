@@ -18,9 +18,13 @@
 //! The prediction only places knots: every span of the fit is still certified a
 //! posteriori and refined where its bound is above the budget.
 
+use std::cell::RefCell;
+use std::rc::Rc;
+
 use cagd_core::binomial_f64;
 
 use super::{Source, bernstein_with};
+use crate::bezier::gemm::LinearMap;
 
 /// Share of the budget the predicted spans aim at: the prediction's error is the model's
 /// largest value, which a span whose derivative varies exceeds somewhat; aiming a little
@@ -69,6 +73,42 @@ pub(crate) fn predicted_knots(src: &Source, m: usize, budget: f64, limit: usize)
     Density::new(src, m, budget).map_or_else(Vec::new, |x| x.per_piece(src, limit))
 }
 
+/// Tables [`midpoint_table`] keeps per thread, `(degree, samples)` and the map.
+type MidpointTables = Vec<(usize, usize, Rc<LinearMap>)>;
+
+/// Most tables [`midpoint_table`] keeps (one per derivative degree, and per source degree
+/// for NURBS: a few dozen for degrees up to 64).
+const CACHED_MIDPOINT_TABLES: usize = 64;
+
+thread_local! {
+    static MIDPOINT_TABLES: RefCell<MidpointTables> = const { RefCell::new(Vec::new()) };
+}
+
+/// The Bernstein values of degree `q` at the midpoints `(i + 1/2) / samples` of `samples`
+/// equal parts of `[0, 1]` (row `i`, `q + 1` values, as [`bernstein_with`] forms them) as a
+/// map from Bézier points to their values there, kept per thread (ADDED, issue 17's
+/// real-CAD-file row: forming the values per sample and piece was most of
+/// [`Density::new`], 10 % of reducing a degree 4–15 B-spline to cubics within 1e-3).
+fn midpoint_table(q: usize, samples: usize) -> Rc<LinearMap> {
+    MIDPOINT_TABLES.with(|c| {
+        let mut c = c.borrow_mut();
+        if let Some(e) = c.iter().find(|e| e.0 == q && e.1 == samples) {
+            return Rc::clone(&e.2);
+        }
+        let binom: Vec<f64> = (0..=q).map(|i| binomial_f64(q, i)).collect();
+        let mut values = vec![0.0; samples * (q + 1)];
+        for (i, row) in values.chunks_exact_mut(q + 1).enumerate() {
+            bernstein_with(&binom, (i as f64 + 0.5) / samples as f64, row);
+        }
+        let map = Rc::new(LinearMap::new(samples, q + 1, values));
+        if c.len() == CACHED_MIDPOINT_TABLES {
+            c.remove(0);
+        }
+        c.push((q, samples, Rc::clone(&map)));
+        map
+    })
+}
+
 /// The model's density `g` of [`predicted_knots`], sampled per piece of a source: what
 /// both knot placements ([`Density::per_piece`], [`Density::across`]) start from.
 #[derive(Debug, Clone)]
@@ -107,18 +147,15 @@ impl Density {
                 sign * binomial_f64(order, j)
             })
             .collect();
-        let binom: Vec<f64> = (0..=q).map(|i| binomial_f64(q, i)).collect();
         let samples = SAMPLES_PER_DEGREE * (q + 1) + 5;
-        let (mut delta, mut bern, mut value) =
-            (vec![0.0; (q + 1) * d], vec![0.0; q + 1], vec![0.0; d]);
-        // Rational: the piece's own values (`C = A / W` at the sample), degree `p`.
+        let mut delta = vec![0.0; (q + 1) * d];
+        // The derivative's values at the samples, and for a rational source the piece's
+        // own (`C = A / W` at the sample, degree `p`), each by one table of Bernstein
+        // values applied as a small matrix product.
         let rational = src.rational;
-        let binom_p: Vec<f64> = if rational {
-            (0..=p).map(|i| binomial_f64(p, i)).collect()
-        } else {
-            Vec::new()
-        };
-        let (mut bern_p, mut point) = (vec![0.0; binom_p.len()], vec![0.0; d]);
+        let table_q = midpoint_table(q, samples);
+        let table_p = rational.then(|| midpoint_table(p, samples));
+        let (mut dvals, mut pvals) = (vec![0.0; samples * d], vec![0.0; samples * d]);
         let pieces = src.breaks.len() - 1;
         let mut values = vec![0.0; samples * pieces];
         let mut spans_of = Vec::with_capacity(pieces);
@@ -140,24 +177,14 @@ impl Density {
                     }
                 }
             }
+            table_q.apply_loop(&delta, d, &mut dvals);
+            if let Some(t) = &table_p {
+                t.apply_loop(piece, d, &mut pvals);
+            }
             let mut total = 0.0;
-            for (i, g) in density.iter_mut().enumerate() {
-                let u = (i as f64 + 0.5) / samples as f64;
-                bernstein_with(&binom, u, &mut bern);
-                value.fill(0.0);
-                for (b, di) in bern.iter().zip(delta.chunks_exact(d)) {
-                    for (v, x) in value.iter_mut().zip(di) {
-                        *v += b * x;
-                    }
-                }
+            let values = dvals.chunks_exact(d).zip(pvals.chunks_exact(d));
+            for (g, (value, point)) in density.iter_mut().zip(values) {
                 let x = if rational {
-                    bernstein_with(&binom_p, u, &mut bern_p);
-                    point.fill(0.0);
-                    for (b, pi) in bern_p.iter().zip(piece.chunks_exact(d)) {
-                        for (v, x) in point.iter_mut().zip(pi) {
-                            *v += b * x;
-                        }
-                    }
                     let mut worst: f64 = 0.0;
                     for (dv, pv) in value.chunks_exact(blk).zip(point.chunks_exact(blk)) {
                         let (w, dw) = (pv[blk - 1], dv[blk - 1]);

@@ -25,7 +25,7 @@ use std::rc::Rc;
 use cagd_core::{Result, gauss_legendre};
 use nalgebra::DMatrix;
 
-use super::node_bound::push_bernstein;
+use super::node_bound::{RECENT, push_bernstein};
 
 /// `R` and `M` of the module docs for one `(p, m)`.
 #[derive(Debug)]
@@ -41,22 +41,28 @@ pub(crate) struct SpanRows {
 thread_local! {
     /// The last rows built on this thread (every round and every curve of a batch asks
     /// for the same pair).
-    static LAST: RefCell<Option<Rc<SpanRows>>> = const { RefCell::new(None) };
+    static LAST: RefCell<Vec<Rc<SpanRows>>> = const { RefCell::new(Vec::new()) };
 }
 
 impl SpanRows {
-    /// The rows for `(p, m)`, from this thread's one-entry cache or built.
+    /// The rows for `(p, m)`, from this thread's cache (the [`RECENT`] most recently used
+    /// pairs) or built.
     ///
     /// # Errors
     /// Those of [`gauss_legendre`] (the node count is out of its range).
     pub(crate) fn cached(p: usize, m: usize) -> Result<Rc<Self>> {
         LAST.with(|c| {
             let mut c = c.borrow_mut();
-            if let Some(x) = c.as_ref().filter(|x| x.p == p && x.m == m) {
-                return Ok(Rc::clone(x));
+            if let Some(at) = c.iter().position(|x| x.p == p && x.m == m) {
+                let x = c.remove(at);
+                c.push(Rc::clone(&x));
+                return Ok(x);
             }
             let x = Rc::new(Self::new(p, m)?);
-            *c = Some(Rc::clone(&x));
+            if c.len() >= RECENT {
+                c.remove(0);
+            }
+            c.push(Rc::clone(&x));
             Ok(x)
         })
     }

@@ -29,6 +29,11 @@ impl LocalBounds {
         Self { breaks, err }
     }
 
+    /// The partition: `spans().len() + 1` increasing breaks.
+    pub(crate) fn breaks(&self) -> &[f64] {
+        &self.breaks
+    }
+
     /// The bound of every span.
     pub(crate) fn spans(&self) -> &[f64] {
         &self.err
