@@ -297,3 +297,155 @@ mod tests {
         }
     }
 }
+
+/// The padded-point kernel (`padded.rs`) through [`LinearMap::apply_checked`].
+#[cfg(test)]
+mod tests_padded {
+    use super::super::padded::{apply3, available, splat};
+    use super::*;
+
+    /// The definition with the kernels' operations: `acc = 0`, then `acc = fma(a_ij, x_j,
+    /// acc)` for `j` increasing, per curve, point and coordinate.
+    fn fused(a: &[f64], rows: usize, cols: usize, input: &[f64]) -> Vec<f64> {
+        let curves = input.len() / (cols * 3);
+        let mut out = vec![0.0; curves * rows * 3];
+        for c in 0..curves {
+            for i in 0..rows {
+                for k in 0..3 {
+                    let mut acc = 0.0f64;
+                    for j in 0..cols {
+                        acc = a[i * cols + j].mul_add(input[(c * cols + j) * 3 + k], acc);
+                    }
+                    out[(c * rows + i) * 3 + k] = acc;
+                }
+            }
+        }
+        out
+    }
+
+    fn map(rows: usize, cols: usize) -> (Vec<f64>, LinearMap) {
+        let a: Vec<f64> = (0..rows * cols)
+            .map(|i| ((i * 37 % 23) as f64 - 11.0) / 7.3)
+            .collect();
+        (a.clone(), LinearMap::new(rows, cols, a))
+    }
+
+    fn input(curves: usize, cols: usize) -> Vec<f64> {
+        (0..curves * cols * 3)
+            .map(|i| ((i * 7919 % 1001) as f64 - 500.0) / 97.1)
+            .collect()
+    }
+
+    #[test]
+    fn batch_equals_the_fused_definition_bit_for_bit() {
+        // Sized instances (cols <= 11) and the general one; row counts that split into
+        // blocks of 4, 3 + 2, and 1; curve counts below, at and above whole groups.
+        if !available() {
+            return;
+        }
+        let sizes = [
+            (1, 2),
+            (2, 3),
+            (4, 5),
+            (5, 6),
+            (6, 11),
+            (9, 11),
+            (1, 12),
+            (5, 12),
+            (11, 16),
+            (11, 21),
+            (13, 20),
+            (16, 31),
+            (33, 65),
+        ];
+        for (rows, cols) in sizes {
+            let (a, map) = map(rows, cols);
+            for curves in [1, 2, 3, 4, 5, 6, 7, 8, 10, 31, 100] {
+                let input = input(curves, cols);
+                let mut out = vec![f64::NAN; curves * rows * 3];
+                assert!(map.apply_checked(&input, 3, &mut out));
+                let want = fused(&a, rows, cols, &input);
+                for (idx, (g, w)) in out.iter().zip(&want).enumerate() {
+                    assert_eq!(
+                        g.to_bits(),
+                        w.to_bits(),
+                        "{rows}x{cols}, {curves} curves, {idx}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_kernel_does_whole_groups_and_leaves_the_last_curve() {
+        if !available() {
+            return;
+        }
+        let (_, map) = map(4, 5);
+        let table = splat(map.transposed().0);
+        for (curves, done) in [(1, 0), (3, 0), (4, 3), (6, 3), (7, 6), (100, 99)] {
+            let input = input(curves, 5);
+            let mut out = vec![0.0; curves * 12];
+            assert_eq!(apply3(&table, 4, &input, &mut out), Some((done, true)));
+        }
+    }
+
+    #[test]
+    fn non_finite_values_stay_in_their_curve_and_coordinate() {
+        // A zero coefficient column: the NaN or infinity reaches every output of its
+        // coordinate in its curve (dense sums), and nothing else.
+        if !available() {
+            return;
+        }
+        for (rows, cols) in [(4, 5), (5, 6), (11, 21)] {
+            let (mut a, _) = map(rows, cols);
+            for i in 0..rows {
+                a[i * cols + 1] = 0.0;
+            }
+            let map = LinearMap::new(rows, cols, a.clone());
+            let curves = 10;
+            for bad_curve in [0, 4, 8, 9] {
+                for k in 0..3 {
+                    for bad in [f64::NAN, f64::INFINITY] {
+                        let mut inp = input(curves, cols);
+                        inp[(bad_curve * cols + 1) * 3 + k] = bad;
+                        let mut out = vec![0.0; curves * rows * 3];
+                        assert!(!map.apply_checked(&inp, 3, &mut out));
+                        let want = fused(&a, rows, cols, &inp);
+                        for (idx, (g, w)) in out.iter().zip(&want).enumerate() {
+                            let (c, kk) = (idx / (rows * 3), idx % 3);
+                            assert_eq!(!g.is_finite(), c == bad_curve && kk == k, "{idx}");
+                            assert!(g.to_bits() == w.to_bits() || (g.is_nan() && w.is_nan()));
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn an_overflowing_check_sum_is_not_a_non_finite_output() {
+        // Every output near the largest double: their sum overflows, the outputs do not;
+        // and an output that overflows is reported.
+        if !available() {
+            return;
+        }
+        let (rows, cols) = (4, 5);
+        let mut a = vec![0.0; rows * cols];
+        for i in 0..rows {
+            a[i * cols + i] = 1.0;
+        }
+        let map = LinearMap::new(rows, cols, a);
+        let curves = 50;
+        let mut inp = vec![f64::MAX / 2.0; curves * cols * 3];
+        let mut out = vec![0.0; curves * rows * 3];
+        assert!(map.apply_checked(&inp, 3, &mut out));
+        assert!(out.iter().all(|&v| v == f64::MAX / 2.0));
+        let mut a2 = vec![0.0; rows * cols];
+        a2[0] = 3.0;
+        let map2 = LinearMap::new(rows, cols, a2);
+        inp[(7 * cols) * 3 + 2] = f64::MAX;
+        assert!(!map2.apply_checked(&inp, 3, &mut out));
+        assert!(out[7 * rows * 3 + 2].is_infinite());
+    }
+}
