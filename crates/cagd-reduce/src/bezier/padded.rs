@@ -8,7 +8,8 @@
 //! transpose; output point `i` of a curve is `sum_j a_ij p_j`, one fused multiply-add per
 //! `j` with the coefficient `a_ij` in all four lanes (the map's table of splatted
 //! coefficients, [`splat`]). Three curves times up to four output points are summed in
-//! registers at a time. An output point is stored as four doubles too: its padding lane
+//! registers at a time (up to eight with AVX-512VL's 32 registers, for maps of at most
+//! eight rows: the `wide` instance). An output point is stored as four doubles too: its padding lane
 //! lands on the next point's `x`, which the next store (same curve, `i` increasing)
 //! overwrites; the last point of a curve is stored as three doubles.
 //!
@@ -54,12 +55,12 @@ pub(crate) fn splat(at: &[f64]) -> Vec<f64> {
     at.iter().flat_map(|&a| [a; 4]).collect()
 }
 
-/// Applies the map whose [`splat`] table is `table` (`rows` output points) to every 3-D
-/// curve of `input` (`cols * 3` doubles each) but the last, and to the curves before it
-/// that do not fill a group of [`CURVES`]; returns how many curves it did and whether the
-/// sum of their outputs is finite (when it is, every one of their outputs is). The caller
-/// runs the others (at least one) through another kernel with the same operations.
-/// `None` when the CPU lacks AVX2 + FMA.
+/// Applies the map whose [`splat`] table is `table` (`rows` output points) to the first
+/// curves of `input` (3-D, `cols * 3` doubles each): the whole groups of [`CURVES`] among
+/// all curves but the last. Returns how many curves it did and whether the sum of their
+/// outputs is finite (when it is, every one of their outputs is); the caller runs the
+/// others (at least one) through another kernel with the same operations. `None` when
+/// the CPU lacks AVX2 + FMA.
 pub(crate) fn apply3(
     table: &[f64],
     rows: usize,
