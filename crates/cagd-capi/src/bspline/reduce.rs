@@ -193,8 +193,9 @@ pub unsafe extern "C" fn cagd_bspline_reduce(
 /// - `CAGD_ERR_NULL_POINTER`: `spline`, `opts`, `spline_out` or `report_out` is NULL.
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` below `sizeof(CagdReduceOptions)`,
 ///   an invalid `method` or `merge` code, `CAGD_MERGE_EXACT` with a method that does not
-///   interpolate the segment ends, the two outputs are the same address, or a pointer is
-///   misaligned.
+///   interpolate the segment ends, the two outputs are the same address, a pointer is
+///   misaligned, or coordinates so large (near `1e300`) that the certified bound
+///   overflows.
 /// - `CAGD_ERR_BAD_KNOTS`: the knots are not uniform (a spacing of a few ulps of the knots
 ///   is not: its gaps differ by whole ulps).
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS`: as `cagd_curve_reduce`

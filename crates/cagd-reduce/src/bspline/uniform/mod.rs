@@ -167,8 +167,9 @@ fn pieces(degree: usize, knots: &[f64], work: &[f64], pdim: usize) -> Result<Vec
 /// `5.4e-2`; the paper's "average error 5e-3" is the mean of the reduction step).
 ///
 /// # Errors
-/// [`Error::BadParameter`] (knots not uniform, or [`Merge::Exact`] with a method that does
-/// not interpolate the segment ends); the errors of [`Method::check`] for `(n, m)`;
+/// [`Error::BadParameter`] (knots not uniform, [`Merge::Exact`] with a method that does
+/// not interpolate the segment ends, or coordinates so large, near `1e300`, that the
+/// certified bound overflows); the errors of [`Method::check`] for `(n, m)`;
 /// [`Error::ConditionNotMet`] if the exact merge finds joints that do not meet;
 /// [`Error::NonPositiveWeight`] when a reduced weight of a NURBS is not positive.
 ///
@@ -290,6 +291,9 @@ fn uniform_at(
         .fold(0.0f64, f64::max);
     let all_reduced: Vec<f64> = reduced_work.concat();
     let segment_bound = to_model(seg_bound_h + model_gap_h, &all_reduced);
+    if !segment_bound.is_finite() {
+        return Err(overflow(curve));
+    }
     let (merged, error_bound) = match merge {
         Merge::Exact => {
             // The input's own span ends: the output has the input's parameterization.
@@ -354,12 +358,25 @@ fn uniform_at(
             (c, to_model(bound_h, &acc))
         }
     };
+    if !error_bound.is_finite() {
+        return Err(overflow(curve));
+    }
     Ok(UniformReduction {
         curve: merged,
         segments,
         segment_bound,
         error_bound,
     })
+}
+
+/// The error for coordinates near the largest double (e.g. 1e300), whose certified bound
+/// overflows: a report without a finite bound would be garbage.
+fn overflow(curve: &BSplineCurve) -> Error {
+    Error::BadParameter {
+        name: "points",
+        value: max_norm(curve.points(), curve.dim()),
+        why: "coordinates too large: the certified error bound overflows",
+    }
 }
 
 /// A Bézier curve from working points (homogeneous when `rational`).

@@ -249,3 +249,28 @@ fn rounded_uniform_knots_far_from_zero_keep_true_bounds() {
         }
     }
 }
+
+#[test]
+fn coordinates_whose_bound_overflows_are_an_error_not_an_infinite_bound() {
+    // A C ABI fuzz input (seed 121): a 2-D uniform cubic-to-quartic spline with one
+    // coordinate 1e300. Both merges used to return a report with an infinite segment bound.
+    let knots: Vec<f64> = (0..13).map(|i| 17.0 + 0.5 * f64::from(i)).collect();
+    let mut pts: Vec<f64> = (0..16).map(|i| (f64::from(i) * 0.37).sin()).collect();
+    pts[7] = 1e300;
+    let c = BSplineCurve::new(4, knots, pts.clone(), 2).expect("curve");
+    for merge in [Merge::Lossy, Merge::Exact] {
+        match reduce_uniform_bspline(&c, 3, Method::L2 { r: 0, p: 0 }, merge) {
+            Err(Error::BadParameter { name: "points", .. }) => {}
+            Ok(r) => assert!(
+                r.segment_bound.is_finite() && r.error_bound.is_finite(),
+                "{merge:?}: an Ok report must carry finite bounds"
+            ),
+            Err(e) => panic!("{merge:?}: unexpected error {e}"),
+        }
+    }
+    // Moderate coordinates still reduce.
+    pts[7] = 0.5;
+    let c = BSplineCurve::new(4, c.knots().to_vec(), pts, 2).expect("curve");
+    let r = reduce_uniform_bspline(&c, 3, Method::L2 { r: 0, p: 0 }, Merge::Lossy).expect("ok");
+    assert!(r.segment_bound.is_finite() && r.error_bound.is_finite());
+}
