@@ -224,10 +224,12 @@ fn block<const R: usize, const RW: usize, const CL: usize>(
     }
     // The block's sum, then one add into `chk` (an add into `chk` per stored vector
     // would chain the loop on the add's latency).
-    let part: [__m256d; R] = std::array::from_fn(|q| {
-        _mm256_add_pd(_mm256_add_pd(acc[q][0], acc[q][1]), acc[q][2])
-    });
-    *chk = _mm256_add_pd(*chk, part[1..].iter().fold(part[0], |s, p| _mm256_add_pd(s, *p)));
+    let part: [__m256d; R] =
+        std::array::from_fn(|q| _mm256_add_pd(_mm256_add_pd(acc[q][0], acc[q][1]), acc[q][2]));
+    *chk = _mm256_add_pd(
+        *chk,
+        part[1..].iter().fold(part[0], |s, p| _mm256_add_pd(s, *p)),
+    );
     for c in 0..CURVES {
         for (q, accq) in acc.iter().enumerate() {
             let i = i0 + q;
