@@ -43,9 +43,9 @@ pub(crate) struct LinearMap {
     a: Vec<f64>,
     /// `A^T`, row-major `cols x rows` (the coefficients of one input point, contiguous).
     at: Vec<f64>,
-    /// `A^T` with each coefficient four times, the padded-point kernel's table; made on
-    /// its first use (a batch of 3-D curves).
-    splat: OnceLock<Vec<f64>>,
+    /// `A^T` with each coefficient four times, the padded-point kernel's table, and the
+    /// map's unit end rows; made on their first use (a batch of 3-D curves).
+    splat: OnceLock<(Vec<f64>, padded::Units)>,
 }
 
 impl LinearMap {
@@ -114,8 +114,11 @@ impl LinearMap {
         debug_assert_eq!(output.len(), curves * per_out);
         let mut scratch = Vec::new();
         if dim == 3 && curves > padded::CURVES && padded::available() {
-            let table = self.splat.get_or_init(|| padded::splat(&self.at));
-            if let Some((done, finite)) = padded::apply3(table, self.rows, input, output) {
+            let (table, units) = self.splat.get_or_init(|| {
+                let units = padded::Units::of(&self.a, self.rows, self.cols);
+                (padded::splat(&self.at), units)
+            });
+            if let Some((done, finite)) = padded::apply3(table, units, self.rows, input, output) {
                 let (inp, out) = (&input[done * per_in..], &mut output[done * per_out..]);
                 lanes::apply(&self.at, self.rows, dim, inp, out, &mut scratch);
                 return (finite && all_finite(out)) || all_finite(output);
@@ -301,7 +304,7 @@ mod tests {
 /// The padded-point kernel (`padded.rs`) through [`LinearMap::apply_checked`].
 #[cfg(test)]
 mod tests_padded {
-    use super::super::padded::{apply3, available, splat};
+    use super::super::padded::{Units, apply3, available, splat};
     use super::*;
 
     /// The definition with the kernels' operations: `acc = 0`, then `acc = fma(a_ij, x_j,
@@ -376,6 +379,92 @@ mod tests_padded {
         }
     }
 
+    /// `map(rows, cols)` with unit end rows: the first row `e_0` (with a `-0`
+    /// coefficient), the last `e_(cols-1)`.
+    fn with_unit_ends(rows: usize, cols: usize) -> (Vec<f64>, LinearMap) {
+        let (mut a, _) = map(rows, cols);
+        a[..cols].fill(0.0);
+        a[0] = 1.0;
+        a[1] = -0.0;
+        a[(rows - 1) * cols..].fill(0.0);
+        a[rows * cols - 1] = 1.0;
+        (a.clone(), LinearMap::new(rows, cols, a))
+    }
+
+    #[test]
+    fn unit_end_rows_are_found_only_with_a_summed_row_between() {
+        let (a, _) = with_unit_ends(5, 6);
+        assert_eq!(Units::of(&a, 5, 6).ends(), Some([0, 5]));
+        let (a, _) = with_unit_ends(3, 4);
+        assert_eq!(Units::of(&a, 3, 4).ends(), Some([0, 3]));
+        // Two rows: nothing between them.
+        let (a, _) = with_unit_ends(2, 4);
+        assert_eq!(Units::of(&a, 2, 4).ends(), None);
+        // One end only; a 1 beside a non-zero; a dense map.
+        let (mut a, _) = with_unit_ends(5, 6);
+        a[29] = 0.5;
+        assert_eq!(Units::of(&a, 5, 6).ends(), None);
+        let (mut a, _) = with_unit_ends(5, 6);
+        a[2] = 1e-300;
+        assert_eq!(Units::of(&a, 5, 6).ends(), None);
+        let (a, _) = map(5, 6);
+        assert_eq!(Units::of(&a, 5, 6).ends(), None);
+        // The operators: L2 with C0 ends has them, plain L2 has not.
+        use crate::{Method, operator};
+        for (n, m) in [(4, 3), (5, 4), (10, 5), (15, 10)] {
+            let ends = |r| {
+                let op = operator(Method::L2 { r, p: r }, n, m).unwrap();
+                Units::of(op.matrix(), m + 1, n + 1).ends()
+            };
+            assert_eq!(ends(0), Some([0, n]), "({n},{m})");
+            assert_eq!(ends(-1), None, "({n},{m})");
+        }
+    }
+
+    #[test]
+    fn unit_end_rows_are_copies_with_the_chains_bits() {
+        // The copies give the fused chain's bits for finite inputs, `-0` included (the
+        // chain makes it `+0`); on both sides of the wide instance's limit.
+        if !available() {
+            return;
+        }
+        for (rows, cols) in [(3, 4), (4, 5), (5, 6), (6, 11), (8, 9), (9, 11), (11, 21)] {
+            let (a, map) = with_unit_ends(rows, cols);
+            for curves in [4, 5, 7, 31, 100] {
+                let mut input = input(curves, cols);
+                for c in (0..curves).step_by(3) {
+                    input[c * cols * 3] = -0.0;
+                    input[((c + 1) * cols - 1) * 3 + 2] = -0.0;
+                }
+                let mut out = vec![f64::NAN; curves * rows * 3];
+                assert!(map.apply_checked(&input, 3, &mut out));
+                let want = fused(&a, rows, cols, &input);
+                for (idx, (g, w)) in out.iter().zip(&want).enumerate() {
+                    assert_eq!(g.to_bits(), w.to_bits(), "{rows}x{cols}, {curves}, {idx}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_non_finite_end_point_is_still_seen() {
+        // The end rows are copies; the rows between still sum every point, so a NaN or
+        // infinity at an end point reaches them and the check.
+        let (_, map) = with_unit_ends(5, 6);
+        let curves = 10;
+        for bad in [f64::NAN, f64::INFINITY] {
+            for at in [0, 5] {
+                let mut inp = input(curves, 6);
+                inp[(4 * 6 + at) * 3 + 1] = bad;
+                let mut out = vec![0.0; curves * 5 * 3];
+                assert!(!map.apply_checked(&inp, 3, &mut out));
+                for i in 1..4 {
+                    assert!(!out[(4 * 5 + i) * 3 + 1].is_finite());
+                }
+            }
+        }
+    }
+
     #[test]
     fn the_kernel_does_whole_groups_and_leaves_the_last_curve() {
         if !available() {
@@ -386,7 +475,10 @@ mod tests_padded {
         for (curves, done) in [(1, 0), (3, 0), (4, 3), (6, 3), (7, 6), (100, 99)] {
             let input = input(curves, 5);
             let mut out = vec![0.0; curves * 12];
-            assert_eq!(apply3(&table, 4, &input, &mut out), Some((done, true)));
+            assert_eq!(
+                apply3(&table, &Units::none(), 4, &input, &mut out),
+                Some((done, true))
+            );
         }
     }
 

@@ -22,7 +22,10 @@
 //! Every output coordinate is the same chain as in `lanes.rs` (`acc = 0`, then
 //! `acc = fma(a_ij, x_j, acc)` for `j` increasing, the map's zeros included), so the two
 //! kernels give the same bits, and a NaN or infinity anywhere in coordinate `k` of a curve
-//! reaches every output of coordinate `k` of that curve.
+//! reaches every summed output of coordinate `k` of that curve. The wide instance copies
+//! a map's unit end rows (an operator with interpolated ends: [`Units`]) instead of
+//! summing them: the same bits for finite inputs, and at (5,4) L2-C0 three rows of five
+//! summed.
 //!
 //! The output is checked for non-finite values in the same pass: the sum of every stored
 //! vector (padding lanes included) is finite when every output is; when it is not (a
@@ -55,6 +58,50 @@ pub(crate) fn splat(at: &[f64]) -> Vec<f64> {
     at.iter().flat_map(|&a| [a; 4]).collect()
 }
 
+/// Whether the map's first and last rows are unit rows (one coefficient `1`, zeros
+/// elsewhere: the end points an operator with interpolated ends keeps, e.g. L2 with
+/// `r = p = 0`), with at least one row between them. The kernel then sums only the rows
+/// between and copies the two end rows from their input points as `p_j + 0`: the bits of
+/// the kernel's chain for finite inputs (its zero terms add `+0`, its one term gives `p_j`
+/// with `-0` made `+0`). A non-finite input coordinate still reaches the summed rows'
+/// outputs of its coordinate, so the check still sees it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Units {
+    /// The columns of the ones of the first and the last row.
+    ends: Option<[usize; 2]>,
+}
+
+impl Units {
+    /// The end rows of the row-major `rows x cols` matrix `a`.
+    pub(crate) fn of(a: &[f64], rows: usize, cols: usize) -> Self {
+        let unit = |i: usize| -> Option<usize> {
+            let row = a.get(i * cols..(i + 1) * cols)?;
+            let one = row.iter().position(|&v| v == 1.0)?;
+            row.iter()
+                .enumerate()
+                .all(|(j, &v)| j == one || v == 0.0)
+                .then_some(one)
+        };
+        let ends = match rows {
+            0..=2 => None,
+            _ => unit(0).zip(unit(rows - 1)).map(|(a, b)| [a, b]),
+        };
+        Self { ends }
+    }
+
+    /// No unit rows: every row is summed.
+    #[cfg(test)]
+    pub(crate) fn none() -> Self {
+        Self { ends: None }
+    }
+
+    /// The columns of the ones of the end rows, when both are unit rows.
+    #[cfg(test)]
+    pub(crate) fn ends(&self) -> Option<[usize; 2]> {
+        self.ends
+    }
+}
+
 /// Applies the map whose [`splat`] table is `table` (`rows` output points) to the first
 /// curves of `input` (3-D, `cols * 3` doubles each): the whole groups of [`CURVES`] among
 /// all curves but the last. Returns how many curves it did and whether the sum of their
@@ -63,6 +110,7 @@ pub(crate) fn splat(at: &[f64]) -> Vec<f64> {
 /// the CPU lacks AVX2 + FMA.
 pub(crate) fn apply3(
     table: &[f64],
+    units: &Units,
     rows: usize,
     input: &[f64],
     output: &mut [f64],
@@ -84,6 +132,7 @@ pub(crate) fn apply3(
     {
         let finite = groups(
             table,
+            units,
             rows,
             cols,
             &input[..done * lin + 1],
@@ -100,7 +149,14 @@ pub(crate) fn apply3(
 /// [`POINTS_WIDE`] output points, all of a curve's points in one block (module `wide`);
 /// else in blocks of at most [`POINTS`].
 #[cfg(target_arch = "x86_64")]
-fn groups(table: &[f64], rows: usize, cols: usize, input: &[f64], output: &mut [f64]) -> bool {
+fn groups(
+    table: &[f64],
+    units: &Units,
+    rows: usize,
+    cols: usize,
+    input: &[f64],
+    output: &mut [f64],
+) -> bool {
     use std::arch::is_x86_feature_detected as has;
     use wide::sized as wide_sized;
     let mut finite = true;
@@ -114,17 +170,17 @@ fn groups(table: &[f64], rows: usize, cols: usize, input: &[f64], output: &mut [
                 wide_sized,
                 rows,
                 rows * cols,
-                (table, input, output, &mut finite)
+                (table, units, input, output, &mut finite)
             ) {
-                finite = wide::general(table, rows, cols, input, output);
+                finite = wide::general(table, units, rows, cols, input, output);
             }
         } else if !sized!(
             groups_sized,
             rows,
             rows * cols,
-            (table, input, output, &mut finite)
+            (table, units, input, output, &mut finite)
         ) {
-            finite = groups_avx2(table, rows, cols, input, output);
+            finite = groups_avx2(table, units, rows, cols, input, output);
         }
     }
     finite
@@ -133,8 +189,17 @@ fn groups(table: &[f64], rows: usize, cols: usize, input: &[f64], output: &mut [
 /// [`run`] with the sizes as values.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-fn groups_avx2(table: &[f64], rows: usize, cols: usize, input: &[f64], output: &mut [f64]) -> bool {
-    run::<0, 0>(table, rows, cols, input, output)
+fn groups_avx2(
+    table: &[f64],
+    units: &Units,
+    rows: usize,
+    cols: usize,
+    input: &[f64],
+    output: &mut [f64],
+) -> bool {
+    // The narrow instance sums every row, the end rows too: with a copy of them its
+    // blocks were no longer inlined (at (15,10) 34 against 38 ns per curve).
+    run::<0, 0, false>(table, units, rows, cols, input, output)
 }
 
 /// [`run`] with `rows = RW` and `cols = CL` as constants (its loops unroll and its index
@@ -143,11 +208,13 @@ fn groups_avx2(table: &[f64], rows: usize, cols: usize, input: &[f64], output: &
 #[target_feature(enable = "avx2,fma")]
 fn groups_sized<const RW: usize, const CL: usize>(
     table: &[f64],
+    units: &Units,
     input: &[f64],
     output: &mut [f64],
     finite: &mut bool,
 ) {
-    *finite = run::<RW, CL>(table, RW, CL, input, output);
+    // Every row summed, as in `groups_avx2`.
+    *finite = run::<RW, CL, false>(table, units, RW, CL, input, output);
 }
 
 /// The loop over the groups; `RW, CL > 0` are the sizes as constants (then `rows`, `cols`
@@ -155,8 +222,9 @@ fn groups_sized<const RW: usize, const CL: usize>(
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
 #[inline]
-fn run<const RW: usize, const CL: usize>(
+fn run<const RW: usize, const CL: usize, const E: bool>(
     table: &[f64],
+    units: &Units,
     rows: usize,
     cols: usize,
     input: &[f64],
@@ -167,13 +235,19 @@ fn run<const RW: usize, const CL: usize>(
     debug_assert_eq!(table.len(), rows * cols * 4);
     let (lin, lout) = (cols * 3, rows * 3);
     let mut chk = _mm256_setzero_pd();
+    // Rows `lo..hi` are summed; with `E` the end rows are copied (see `Units`).
+    let (lo, hi) = if E { (1, rows - 1) } else { (0, rows) };
+    let [j0, j1] = units.ends.unwrap_or([0, 0]);
     for (g, out) in output.chunks_exact_mut(CURVES * lout).enumerate() {
         let inp = &input[g * CURVES * lin..(g + 1) * CURVES * lin + 1];
-        let mut i0 = 0;
-        while i0 < rows {
+        if E {
+            copy_row(0, j0, rows, cols, inp, out);
+        }
+        let mut i0 = lo;
+        while i0 < hi {
             // Blocks of four points; five left go as three and two (a block of one point
             // has too few independent sums to hide the multiply-add latency).
-            let r = match rows - i0 {
+            let r = match hi - i0 {
                 5 => 3,
                 left => left.min(POINTS),
             };
@@ -186,9 +260,28 @@ fn run<const RW: usize, const CL: usize>(
             }
             i0 += r;
         }
+        if E {
+            copy_row(rows - 1, j1, rows, cols, inp, out);
+        }
     }
     let lanes: [f64; 4] = bytemuck::cast(chk);
     lanes.iter().all(|v| v.is_finite())
+}
+
+/// Row `i` of the [`CURVES`] curves of `inp` (plus one double), a unit row with its one
+/// in column `j` (see [`Units`]), copied from input point `j` as `p_j + 0`. Stored as
+/// four doubles but in the map's last row: the fourth lands on the next row's `x`, which
+/// is stored after it (the first row is copied before the summed rows, the last after).
+#[inline(always)]
+fn copy_row(i: usize, j: usize, rows: usize, cols: usize, inp: &[f64], out: &mut [f64]) {
+    let (lin, lout) = (cols * 3, rows * 3);
+    let n = if i + 1 < rows { 4 } else { 3 };
+    for c in 0..CURVES {
+        let (o, a) = (c * lout + 3 * i, c * lin + 3 * j);
+        for (q, p) in out[o..o + n].iter_mut().zip(&inp[a..a + n]) {
+            *q = p + 0.0;
+        }
+    }
 }
 
 /// Output points `i0 .. i0 + R` of the [`CURVES`] curves of `inp` (plus one double) into
@@ -259,37 +352,46 @@ macro_rules! kernel {
     ($name:ident, $features:literal, $maxp:expr, $($r:literal)*) => {
         #[cfg(target_arch = "x86_64")]
         mod $name {
-            use super::CURVES;
+            use super::{CURVES, Units, copy_row};
 
             /// [`run`] with the sizes as values.
             #[target_feature(enable = $features)]
             pub(super) fn general(
                 table: &[f64],
+                units: &Units,
                 rows: usize,
                 cols: usize,
                 input: &[f64],
                 output: &mut [f64],
             ) -> bool {
-                run::<0, 0>(table, rows, cols, input, output)
+                match units.ends.is_some() {
+                    true => run::<0, 0, true>(table, units, rows, cols, input, output),
+                    false => run::<0, 0, false>(table, units, rows, cols, input, output),
+                }
             }
 
             /// [`run`] with `rows = RW` and `cols = CL` as constants.
             #[target_feature(enable = $features)]
             pub(super) fn sized<const RW: usize, const CL: usize>(
                 table: &[f64],
+                units: &Units,
                 input: &[f64],
                 output: &mut [f64],
                 finite: &mut bool,
             ) {
-                *finite = run::<RW, CL>(table, RW, CL, input, output);
+                *finite = match units.ends.is_some() {
+                    true => run::<RW, CL, true>(table, units, RW, CL, input, output),
+                    false => run::<RW, CL, false>(table, units, RW, CL, input, output),
+                };
             }
 
             /// The loop over the groups; `RW, CL > 0` are the sizes as constants (then
             /// `rows`, `cols` are not read).
             #[target_feature(enable = $features)]
             #[inline]
-            fn run<const RW: usize, const CL: usize>(
+            fn run<const RW: usize, const CL: usize, const E: bool>(
                 table: &[f64],
+                units: &Units,
                 rows: usize,
                 cols: usize,
                 input: &[f64],
@@ -300,14 +402,20 @@ macro_rules! kernel {
                 debug_assert_eq!(table.len(), rows * cols * 4);
                 let (lin, lout) = (cols * 3, rows * 3);
                 let mut chk = _mm256_setzero_pd();
+                // Rows `lo..hi` are summed; with `E` the end rows are copied (see `Units`).
+                let (lo, hi) = if E { (1, rows - 1) } else { (0, rows) };
+                let [j0, j1] = units.ends.unwrap_or([0, 0]);
                 for (g, out) in output.chunks_exact_mut(CURVES * lout).enumerate() {
                     let inp = &input[g * CURVES * lin..(g + 1) * CURVES * lin + 1];
-                    let mut i0 = 0;
-                    while i0 < rows {
+                    if E {
+                        copy_row(0, j0, rows, cols, inp, out);
+                    }
+                    let mut i0 = lo;
+                    while i0 < hi {
                         // Blocks of at most `$maxp` points; five left (of blocks of four)
                         // go as three and two (a block of one point has too few independent
                         // sums to hide the multiply-add latency).
-                        let r = match rows - i0 {
+                        let r = match hi - i0 {
                             left if left <= $maxp => left,
                             5 => 3,
                             _ => $maxp,
@@ -318,6 +426,9 @@ macro_rules! kernel {
                             _ => block::<1, RW, CL>(at, inp, out, &mut chk),
                         }
                         i0 += r;
+                    }
+                    if E {
+                        copy_row(rows - 1, j1, rows, cols, inp, out);
                     }
                 }
                 let lanes: [f64; 4] = bytemuck::cast(chk);
