@@ -320,11 +320,16 @@ pub(crate) fn span_bounds_restricted(
         let (s, k) = (c.s, c.k);
         let sub = data.sub(src, i, &mut buf, &mut tmp);
         let local = &points[(s - m) * d..(s + 1) * d];
-        if src.rational {
+        if src.rational && d != blk {
             span_bezier((knots, points, d, m), s, (c.a, c.b), &mut tgt, &mut scratch);
         } else {
             // E Q: a convex combination per point (the rows of E are non-negative and sum
-            // to one); its rounding is in `NodeBound::bound`'s allowance.
+            // to one); its rounding is in `NodeBound::bound`'s allowance, which the
+            // numerator bound of a single NURBS takes over (`numerator_bound.rs`: the fit's
+            // piece within `((m + 1)(2m + 1) + 2) eps` of its sizes). A rational bundle
+            // keeps de Boor's algorithm on the points (its hull bound has no extraction
+            // allowance). ADDED: for a single NURBS this was a second de Boor extraction
+            // per cell, 3 % of reducing one to cubics within 1e-3.
             tgt.fill(0.0);
             for (t, e) in tgt.chunks_exact_mut(d).zip(ext.chunks_exact(m + 1)) {
                 for (c, q) in e.iter().zip(local.chunks_exact(d)) {
