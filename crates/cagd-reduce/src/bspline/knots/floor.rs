@@ -29,7 +29,8 @@ impl Raw {
     /// `avail` (the caller asks whether the floor does): the weight term alone,
     /// `R |dW_k| / v`, with `R` at least half the distance between the window's first and
     /// last model points (both lie within `R` of the centre) and `v` the largest of the
-    /// new weights (at least the smallest, which the report divides by) — without the
+    /// new weights (at least the smallest, which the report divides by; only when all are
+    /// positive, where the floor itself is finite) — without the
     /// window's frame, the larger part of the floor's cost (ADDED, issue 17's real-CAD-file
     /// row). Pass `f64::INFINITY` for the floor itself.
     ///
@@ -121,9 +122,13 @@ impl Raw {
             .map(|(a, b)| (a - b) * (a - b))
             .sum::<f64>()
             .sqrt();
-        let wmax = new_weights().fold(0.0f64, |m, x| m.max(*x));
+        let (wlo, wmax) = new_weights().fold((f64::INFINITY, 0.0f64), |(lo, hi), x| {
+            (lo.min(*x), hi.max(*x))
+        });
         let cheap = 0.5 * span * dw.abs() / wmax * (1.0 - 8.0 * f64::EPSILON);
-        if cheap > avail && cheap.is_finite() {
+        // Only where the floor below is finite (positive new weights): where it is not,
+        // the floor gives up (0) and so does this.
+        if wlo > 0.0 && cheap > avail && cheap.is_finite() {
             return cheap;
         }
         // The removal's window: its model points give the centre and radius, its new
@@ -192,6 +197,8 @@ mod tests {
                         let rr = knots.partition_point(|x| *x <= v) - 1;
                         let (lo, hi) = (rr.saturating_sub(2 * p + 1), (rr + p + 2 - s).min(n));
                         let floor = raw.removal_floor(rr, s, (lo, hi), f64::INFINITY);
+                        let window = raw.window(lo, hi).unwrap();
+                        let reported = window.remove_knot(v, 1, 1e300).unwrap().error_bound;
                         // With nothing available, the cheaper bound wherever it is
                         // positive: a lower bound of the report too.
                         let cheap = raw.removal_floor(rr, s, (lo, hi), 0.0);
@@ -199,8 +206,6 @@ mod tests {
                         if rational && cheap != floor {
                             cheaper += 1;
                         }
-                        let window = raw.window(lo, hi).unwrap();
-                        let reported = window.remove_knot(v, 1, 1e300).unwrap().error_bound;
                         let tag = format!("p={p} rational={rational} s={s} v={v}");
                         assert!(
                             floor <= reported,
