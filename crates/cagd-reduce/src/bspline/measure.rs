@@ -10,7 +10,7 @@ use crate::bezier::gemm::LinearMap;
 
 use cagd_core::{
     BSplineCurve, BSplineSurface, BezierSegment, Domain2, Error, Result, SurfacePatchPiece,
-    TensorPatch, max_distance_2d_with_grid, refine_sampled_maxima, tensor_patch_grid,
+    TensorPatch, max_distance_2d_with_grid, refine_sampled_maxima_above, tensor_patch_grid,
 };
 
 /// `max_t ||a(t) - b(t)||` (Euclidean; rational curves compared in model space) over the
@@ -26,7 +26,8 @@ use cagd_core::{
 /// the pairs that can still hold the maximum — at most [`SPLINE_MEASURED_PIECES`] of them
 /// — are sampled at
 /// `8 (p_a + p_b) + 64` equidistant parameters and their sampled maxima refined by Brent's
-/// method ([`cagd_core::refine_sampled_maxima`]); the pairs whose bound is below the
+/// method (those of their sampled local maxima that may exceed the largest distance
+/// found, [`cagd_core::refine_sampled_maxima_above`]); the pairs whose bound is below the
 /// largest distance found are not needed (SPEC-reduce §0 "sampled"; the bounded passes
 /// are ADDED). For polynomial curves, after the first refined pair a candidate is first
 /// taken at the other half of the Lobatto nodes of `2 N` intervals (factor `sec(n pi / (4
@@ -300,13 +301,16 @@ pub(crate) fn max_deviation_passes(
         }
         refined += 1;
         scratch.sampled(pa, &ta, pb, &tb, (lo, hi), dim, &mut d2)?;
-        let d = refine_sampled_maxima(
+        // Only the local maxima that may exceed the largest distance found (a hair below
+        // it, so that no maximum the full refinement would raise it with is skipped).
+        let d = refine_sampled_maxima_above(
             &|t, o| eval_piece(pa, t, o),
             &|t, o| eval_piece(pb, t, o),
             dim,
             lo,
             hi,
             &d2,
+            best.sqrt() * (1.0 - 1e-12),
         );
         best = best.max(d * d);
     }
