@@ -487,8 +487,8 @@ fn span_bezier(
 /// (after `r` levels, the start of point `m - r`), and each point continues from it with
 /// its levels at `b`, the weights of each level computed once for `a` and once for `b`.
 /// Every point is the same sequence of operations as one de Boor run per point
-/// ([`span_bezier_of_runs`], the route before; bitwise the same values, tested), with `m
-/// + m (m + 1) / 2` levels instead of `m (m + 1)` and a third of the divisions (ADDED,
+/// ([`span_bezier_of_runs`], the route before; bitwise the same values, tested), with
+/// `m + m (m + 1) / 2` levels instead of `m (m + 1)` and a third of the divisions (ADDED,
 /// issue 17's real-CAD-file row: the extractions were a tenth of reducing a NURBS to
 /// cubics within 1e-3).
 fn span_bezier_of(
