@@ -86,8 +86,8 @@ pub use bspline::{
 };
 pub use distance::{
     Domain2, MAX_REFINED_MAXIMA, curve_distance, max_distance_1d, max_distance_2d,
-    max_distance_2d_with_grid, refine_sampled_maxima, tensor_patch_distance, tensor_patch_grid,
-    tri_patch_distance, tri_patch_grid,
+    max_distance_2d_with_grid, refine_sampled_maxima, refine_sampled_maxima_above,
+    tensor_patch_distance, tensor_patch_grid, tri_patch_distance, tri_patch_grid,
 };
 pub use error::{Error, Result};
 pub use exact::{

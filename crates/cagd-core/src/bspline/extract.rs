@@ -121,7 +121,91 @@ fn span_bezier_into(
     }
 }
 
+/// The first Bézier point of the non-empty span `s` (the spline's value at `u_s`): the
+/// last point of the de Boor triangle at `u_s` on the span's points `local` (scratch
+/// `tri`), by the same operations as in [`span_bezier_into`], so bitwise its first point.
+fn span_start_into(u: &[f64], p: usize, local: &[f64], pdim: usize, s: usize, tri: &mut [f64]) {
+    let a = u[s];
+    tri.copy_from_slice(local);
+    for r in 1..=p {
+        for j in (r..=p).rev() {
+            let lo = u[s + j - p];
+            let alpha = (a - lo) / (u[s + 1 + j - r] - lo);
+            let (lo_part, hi) = tri.split_at_mut(j * pdim);
+            let prev = &lo_part[(j - 1) * pdim..];
+            for (y, z) in hi[..pdim].iter_mut().zip(prev) {
+                *y = (1.0 - alpha) * z + alpha * *y;
+            }
+        }
+    }
+}
+
 impl BSplineCurve {
+    /// The non-empty knot span `s` (`p <= s < n`, `u_s < u_{s+1}`) as a
+    /// [`BezierSegment`]: bitwise the element of [`Self::to_beziers`] on `[u_s, u_{s+1}]`
+    /// (its points from the span's two de Boor triangles, its last point the next
+    /// non-empty span's first, or the de Boor value at the domain's end), from the
+    /// span's own `p + 1` control points and the next span's: `O(p^2)` for one piece,
+    /// where [`Self::to_beziers`] extracts every piece. ADDED (issue 17's real-CAD-file
+    /// row): a measurement that visits a few pairs of pieces of two splines extracts only
+    /// those.
+    ///
+    /// # Errors
+    /// [`crate::Error::BadParameter`] when `s` is not a non-empty span of the domain; as
+    /// [`Self::to_beziers`] when the piece is not representable.
+    ///
+    /// ```
+    /// # use cagd_core::BSplineCurve;
+    /// let c = BSplineCurve::new(2, vec![0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0],
+    ///                           vec![0.0, 0.0, 1.0, 2.0, 3.0, 2.0, 4.0, 0.0], 2)?;
+    /// assert_eq!(c.bezier_piece(3)?, c.to_beziers()?[1]);
+    /// # Ok::<(), cagd_core::Error>(())
+    /// ```
+    pub fn bezier_piece(&self, s: usize) -> Result<BezierSegment> {
+        let (u, p) = (&self.knots, self.degree);
+        let n = self.n_points();
+        if s < p || s >= n || u[s] >= u[s + 1] {
+            return Err(crate::Error::BadParameter {
+                name: "span",
+                value: s as f64,
+                why: "must be a non-empty knot span of the domain (p <= s < n, u_s < u_(s+1))",
+            });
+        }
+        let (local, pdim) = self.local_work(s - p, p + 1);
+        let mut tri = vec![0.0; (p + 1) * pdim];
+        let mut bez = vec![0.0; (p + 1) * pdim];
+        span_bezier_into(u, p, &local, pdim, s, &mut tri, &mut bez);
+        let end = match (s + 1..n).find(|&j| u[j] < u[j + 1]) {
+            Some(next) => {
+                let (later, _) = self.local_work(next - p, p + 1);
+                span_start_into(u, p, &later, pdim, next, &mut tri);
+                tri[p * pdim..].to_vec()
+            }
+            None => {
+                let mut last = local;
+                blossom(u, s, p, &mut last, pdim, &vec![u[s + 1]; p]);
+                last[p * pdim..].to_vec()
+            }
+        };
+        let len = bez.len();
+        bez[len - pdim..].copy_from_slice(&end);
+        let curve = match self.weights {
+            None => BezierCurve::new(bez, self.dim)?,
+            Some(_) => {
+                let mut pts = vec![0.0; (p + 1) * self.dim];
+                let mut w = vec![0.0; p + 1];
+                check_points(&bez, pdim)?;
+                kernel::from_homogeneous(&bez, self.dim, &mut pts, &mut w);
+                BezierCurve::new_rational(pts, w, self.dim)?
+            }
+        };
+        Ok(BezierSegment {
+            start: u[s],
+            end: u[s + 1],
+            curve,
+        })
+    }
+
     /// Every non-empty span `[u_s, u_{s+1}]` of the domain as a [`BezierSegment`], in
     /// order; rational pieces for a NURBS curve (the blossom is taken of the homogeneous
     /// points, so the piece weights are positive).
@@ -170,6 +254,61 @@ mod tests {
     use super::*;
     use crate::bspline::insert::tests::curve_strategy;
     use proptest::prelude::*;
+
+    /// One piece ([`BSplineCurve::bezier_piece`]) is bitwise the element of
+    /// [`BSplineCurve::to_beziers`] on its span, at degrees 1–15, polynomial and rational,
+    /// with unclamped ends and knots of multiplicity 1..p (empty spans refused).
+    #[test]
+    fn one_piece_is_the_extracted_piece() {
+        for p in [1usize, 2, 4, 7, 11, 15] {
+            for rational in [false, true] {
+                let mut knots: Vec<f64> = (0..p).map(|i| -0.3 * (p - i) as f64).collect();
+                for (j, mult) in [1usize, p, 2.min(p), 1, p.saturating_sub(1).max(1)]
+                    .into_iter()
+                    .enumerate()
+                {
+                    knots.extend(std::iter::repeat_n(
+                        1.0 + 0.7 * j as f64 + 0.01 * j as f64 * j as f64,
+                        mult,
+                    ));
+                }
+                knots.extend((0..=p).map(|i| 5.0 + 0.4 * i as f64));
+                let n = knots.len() - p - 1;
+                let pts: Vec<f64> = (0..3 * n)
+                    .map(|i| ((i * 37 % 23) as f64 - 11.0) * 3.7)
+                    .collect();
+                let c = if rational {
+                    let w: Vec<f64> = (0..n).map(|i| 0.5 + (i * 7 % 5) as f64 * 0.35).collect();
+                    BSplineCurve::new_rational(p, knots.clone(), pts, w, 3).unwrap()
+                } else {
+                    BSplineCurve::new(p, knots.clone(), pts, 3).unwrap()
+                };
+                let all = c.to_beziers().unwrap();
+                let mut k = 0;
+                for s in 0..knots.len() - 1 {
+                    let piece = c.bezier_piece(s);
+                    if s < p || s >= n || knots[s] >= knots[s + 1] {
+                        assert!(piece.is_err(), "p {p} span {s} accepted");
+                        continue;
+                    }
+                    let piece = piece.unwrap();
+                    let bits = |b: &BezierSegment| {
+                        let mut v = vec![b.start.to_bits(), b.end.to_bits()];
+                        v.extend(b.curve.points().iter().map(|x| x.to_bits()));
+                        v.extend(b.curve.weights().unwrap_or(&[]).iter().map(|x| x.to_bits()));
+                        v
+                    };
+                    assert_eq!(
+                        bits(&piece),
+                        bits(&all[k]),
+                        "p {p} rational {rational} span {s}"
+                    );
+                    k += 1;
+                }
+                assert_eq!(k, all.len());
+            }
+        }
+    }
 
     /// The two-triangle extraction against the definition, one blossom `P[a^(p-i), b^i]`
     /// per Bézier point (the route it replaced), at degrees 4–15 with unclamped ends,

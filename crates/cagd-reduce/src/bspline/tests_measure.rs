@@ -7,9 +7,10 @@
 use cagd_core::BSplineCurve;
 use cagd_testkit::bench::random_input;
 
-use super::measure::{Known, SpanCaps, spline_max_deviation_known};
+use super::measure::{Known, SpanCaps, max_deviation_passes, spline_max_deviation_known};
 use super::test_support::{greville, jittered_knots, sweep_point, sweep_weight};
 use super::{BSplineOptions, reduce_bspline, spline_max_deviation};
+use crate::SPLINE_MEASURED_PIECES;
 
 /// A degree-`p` spline of `spans` jittered spans on `[t0, t0 + len]` over the smooth 3-D
 /// sweep of `test_support` scaled by `size` and moved by `offset` along x, rational
@@ -174,4 +175,52 @@ fn caps_below_the_error_hide_it_and_true_caps_do_not() {
     };
     let got = spline_max_deviation_known(&c, out, hidden).unwrap();
     assert!(got <= second * 1.001 && got < plain, "{got} vs {plain}");
+}
+
+/// The second pass's finer node check ([`max_deviation_passes`] with `finer`) against the
+/// second pass without it (the check is taken on polynomial curves only), on reductions of
+/// polynomial and rational curves (degree 4–15, 1–20 spans, 1e-3 / 1e-5 / 1e-7): bitwise
+/// the same measured maximum wherever neither route reaches the limit of refined pairs,
+/// and fewer pairs sampled densely in all (the check prunes).
+#[test]
+fn the_finer_check_keeps_the_maximum_and_samples_fewer_pairs() {
+    let (mut with, mut without, mut compared) = (0, 0, 0);
+    for case in 0..32usize {
+        let p = 4 + (case * 5) % 12;
+        let spans = 1 + (case * 7) % 20;
+        let domain = if case % 2 == 0 {
+            (0.0, 1.0)
+        } else {
+            (3.0, 250.0)
+        };
+        let c = sweep(
+            p,
+            spans,
+            1,
+            domain,
+            (10.0, 0.0),
+            case % 2 == 1,
+            900 + case as u64,
+        );
+        for tol in [1e-3, 1e-5, 1e-7] {
+            let r = reduce_bspline(&c, &BSplineOptions::new(3, tol)).unwrap();
+            let (fine, n_fine) =
+                max_deviation_passes(&c, &r.curve, Known::default(), true).unwrap();
+            let (plain, n_plain) =
+                max_deviation_passes(&c, &r.curve, Known::default(), false).unwrap();
+            with += n_fine;
+            without += n_plain;
+            if n_fine < SPLINE_MEASURED_PIECES && n_plain < SPLINE_MEASURED_PIECES {
+                assert_eq!(fine, plain, "case {case} tol {tol}");
+                compared += 1;
+            } else {
+                assert!(fine >= plain * (1.0 - 1e-12), "case {case} tol {tol}");
+            }
+        }
+    }
+    println!(
+        "{compared} compared; pairs sampled densely: {with} with the check, {without} without"
+    );
+    assert!(compared >= 60, "{compared}");
+    assert!(with < without, "{with} vs {without}");
 }

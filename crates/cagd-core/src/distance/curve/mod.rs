@@ -223,6 +223,28 @@ pub fn refine_sampled_maxima(
     hi: f64,
     d2: &[f64],
 ) -> f64 {
+    refine_sampled_maxima_above(f, g, dim, lo, hi, d2, 0.0)
+}
+
+/// [`refine_sampled_maxima`] for a caller that only needs the distance where it exceeds
+/// `above` (the largest distance it found elsewhere, in the units of `d2`'s square
+/// roots): a local maximum is also skipped when its reach (the parabola rule of
+/// [`refine_sampled_maxima`]) stays below `above^2`, so a pair of pieces whose samples
+/// stay below another pair's maximum is not refined at all. Never below the sampled
+/// maximum; equal to [`refine_sampled_maxima`] wherever that is at least `above` (to
+/// the parabola rule: the maxima skipped here are those the rule says cannot exceed
+/// `above`). ADDED (issue 17's real-CAD-file row: Brent on the pairs below the maximum
+/// was 7 % of measuring a NURBS reduced to cubics within 1e-3).
+pub fn refine_sampled_maxima_above(
+    f: &impl Fn(f64, &mut [f64]),
+    g: &impl Fn(f64, &mut [f64]),
+    dim: usize,
+    lo: f64,
+    hi: f64,
+    d2: &[f64],
+    above: f64,
+) -> f64 {
+    let floor = if above > 0.0 { above * above } else { 0.0 };
     let mut best = d2.iter().copied().fold(0.0f64, f64::max);
     let n = d2.len().saturating_sub(1);
     if hi > lo && n >= 1 {
@@ -247,7 +269,7 @@ pub fn refine_sampled_maxima(
         let (mut a, mut b) = (vec![0.0; dim], vec![0.0; dim]);
         let mut h = |t: f64| sq_dist(f, g, t, &mut a, &mut b);
         for (i, reach) in maxima {
-            if reach < best {
+            if reach < best || reach < floor {
                 continue;
             }
             let (ta, tb) = (t_at(i.saturating_sub(1)), t_at((i + 1).min(n)));

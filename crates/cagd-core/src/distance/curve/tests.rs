@@ -277,3 +277,48 @@ fn maximum_inside_an_end_interval_is_refined() {
         }
     }
 }
+
+/// [`refine_sampled_maxima_above`]: with `above` at or below the refined maximum the
+/// result is [`refine_sampled_maxima`]'s bitwise; with `above` over it, never below the
+/// sampled maximum nor above the refined one, and no evaluation at all when every
+/// sampled maximum's reach is below `above` (the pair is left to the caller's maximum).
+#[test]
+fn refinement_above_a_floor_keeps_the_maxima_that_reach_it() {
+    use std::cell::Cell;
+    for (k, freq) in [3.0f64, 7.0, 11.0].into_iter().enumerate() {
+        let f = move |t: f64, o: &mut [f64]| {
+            o[0] = (freq * t).sin() * (1.0 + 0.3 * t) + 0.1 * k as f64;
+            o[1] = (0.5 * freq * t).cos();
+        };
+        let calls = Cell::new(0usize);
+        let g = |t: f64, o: &mut [f64]| {
+            calls.set(calls.get() + 1);
+            o[0] = 0.2 * t;
+            o[1] = 0.0;
+        };
+        let n = 40;
+        let d2: Vec<f64> = (0..=n)
+            .map(|i| {
+                let (mut a, mut b) = ([0.0; 2], [0.0; 2]);
+                let t = i as f64 / n as f64;
+                f(t, &mut a);
+                g(t, &mut b);
+                (a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)
+            })
+            .collect();
+        let sampled = d2.iter().copied().fold(0.0f64, f64::max).sqrt();
+        let full = refine_sampled_maxima(&f, &g, 2, 0.0, 1.0, &d2);
+        for above in [0.0, 0.5 * full, full * (1.0 - 1e-9)] {
+            let got = refine_sampled_maxima_above(&f, &g, 2, 0.0, 1.0, &d2, above);
+            assert_eq!(got.to_bits(), full.to_bits(), "freq {freq} above {above}");
+        }
+        let got = refine_sampled_maxima_above(&f, &g, 2, 0.0, 1.0, &d2, 1.5 * full);
+        assert!(
+            got >= sampled && got <= full,
+            "freq {freq}: {got} vs {sampled} / {full}"
+        );
+        calls.set(0);
+        let _ = refine_sampled_maxima_above(&f, &g, 2, 0.0, 1.0, &d2, 3.0 * full);
+        assert_eq!(calls.get(), 0, "freq {freq}: refined below the floor");
+    }
+}

@@ -304,7 +304,7 @@ pub(crate) fn span_bounds_restricted(
     }
     let mut out: Vec<SpanBound> = Vec::with_capacity(n - m);
     let (mut buf, mut tmp) = (Vec::new(), [Vec::new(), Vec::new(), Vec::new()]);
-    let (mut tgt, mut scratch) = (vec![0.0; (m + 1) * d], vec![0.0; (m + 1) * d]);
+    let (mut tgt, mut scratch) = (vec![0.0; (m + 1) * d], vec![0.0; 2 * (m + 1) * d]);
     let (mut sb, mut tb) = (vec![0.0; (p + 1) * blk], vec![0.0; (m + 1) * blk]);
     let (mut qb, mut pb) = (vec![0.0; (m + 1) * blk], vec![0.0; (p + 1) * blk]);
     let nodes = NodeBound::cached(p, m);
@@ -320,11 +320,16 @@ pub(crate) fn span_bounds_restricted(
         let (s, k) = (c.s, c.k);
         let sub = data.sub(src, i, &mut buf, &mut tmp);
         let local = &points[(s - m) * d..(s + 1) * d];
-        if src.rational {
+        if src.rational && d != blk {
             span_bezier((knots, points, d, m), s, (c.a, c.b), &mut tgt, &mut scratch);
         } else {
             // E Q: a convex combination per point (the rows of E are non-negative and sum
-            // to one); its rounding is in `NodeBound::bound`'s allowance.
+            // to one); its rounding is in `NodeBound::bound`'s allowance, which the
+            // numerator bound of a single NURBS takes over (`numerator_bound.rs`: the fit's
+            // piece within `((m + 1)(2m + 1) + 2) eps` of its sizes). A rational bundle
+            // keeps de Boor's algorithm on the points (its hull bound has no extraction
+            // allowance). ADDED: for a single NURBS this was a second de Boor extraction
+            // per cell, 3 % of reducing one to cubics within 1e-3.
             tgt.fill(0.0);
             for (t, e) in tgt.chunks_exact_mut(d).zip(ext.chunks_exact(m + 1)) {
                 for (c, q) in e.iter().zip(local.chunks_exact(d)) {
@@ -412,7 +417,7 @@ pub(crate) fn hull_span_bound(
     }
     let s = knots.partition_point(|x| *x <= a) - 1;
     debug_assert!(knots[s] == a && knots[s + 1] == b);
-    let (mut tgt, mut work) = (vec![0.0; (m + 1) * d], vec![0.0; (m + 1) * d]);
+    let (mut tgt, mut work) = (vec![0.0; (m + 1) * d], vec![0.0; 2 * (m + 1) * d]);
     let mut sub = Vec::with_capacity((p + 1) * d);
     let mut tmp = [Vec::new(), Vec::new(), Vec::new()];
     let mut scratch = [Vec::new(), Vec::new(), Vec::new()];
@@ -474,7 +479,18 @@ fn span_bezier(
 /// [`span_bezier`] from the span's own `m + 1` points `local` (those of `s - m ..= s`, `d`
 /// coordinates each); with the unit vectors as points, the span's Bézier extraction on
 /// `[a, b]`. For `a`, `b` inside the span every de Boor weight is in `[0, 1]`, so the
-/// values are convex combinations of `local`, as on the whole span.
+/// values are convex combinations of `local`, as on the whole span. `work` is scratch of
+/// at least `2 (m + 1) d` values.
+///
+/// Point `k` is the blossom `S(a^(m - k), b^k)`: `m` levels of de Boor's algorithm, the
+/// first `m - k` at `a`, the rest at `b`. The levels at `a` are shared: one chain of them
+/// (after `r` levels, the start of point `m - r`), and each point continues from it with
+/// its levels at `b`, the weights of each level computed once for `a` and once for `b`.
+/// Every point is the same sequence of operations as one de Boor run per point
+/// ([`span_bezier_of_runs`], the route before; bitwise the same values, tested), with
+/// `m + m (m + 1) / 2` levels instead of `m (m + 1)` and a third of the divisions (ADDED,
+/// issue 17's real-CAD-file row: the extractions were a tenth of reducing a NURBS to
+/// cubics within 1e-3).
 fn span_bezier_of(
     (knots, m): (&[f64], usize),
     s: usize,
@@ -483,6 +499,65 @@ fn span_bezier_of(
     out: &mut [f64],
     work: &mut [f64],
 ) {
+    const MAX_M: usize = 8;
+    if m > MAX_M || m == 0 {
+        span_bezier_of_runs((knots, m), s, (a, b), (local, d), out, work);
+        return;
+    }
+    let len = (m + 1) * d;
+    // Level r's weights for point i = s - m + j (j = r..=m), at `a` and at `b`.
+    let (mut wa, mut wb) = ([0.0f64; MAX_M * MAX_M], [0.0f64; MAX_M * MAX_M]);
+    for r in 1..=m {
+        for j in r..=m {
+            let i = s - m + j;
+            let (lo, hi) = (knots[i], knots[i + m + 1 - r]);
+            let at = (r - 1) * MAX_M + (j - 1);
+            wa[at] = (a - lo) / (hi - lo);
+            wb[at] = (b - lo) / (hi - lo);
+        }
+    }
+    let (chain, cur) = work[..2 * len].split_at_mut(len);
+    chain.copy_from_slice(local);
+    for k in (0..=m).rev() {
+        let ra = m - k;
+        if ra > 0 {
+            // One more level at `a` on the chain: level `ra`.
+            de_boor_level(chain, d, ra, m, &wa[(ra - 1) * MAX_M..ra * MAX_M]);
+        }
+        cur.copy_from_slice(chain);
+        for r in ra + 1..=m {
+            de_boor_level(cur, d, r, m, &wb[(r - 1) * MAX_M..r * MAX_M]);
+        }
+        out[k * d..(k + 1) * d].copy_from_slice(&cur[m * d..(m + 1) * d]);
+    }
+}
+
+/// One level `r` of de Boor's algorithm on the `m + 1` points `x` (`d` coordinates each):
+/// point `j` (descending from `m` to `r`) becomes `(1 - w) x_(j-1) + w x_j` with `w =
+/// weights[j - 1]`.
+#[inline(always)]
+fn de_boor_level(x: &mut [f64], d: usize, r: usize, m: usize, weights: &[f64]) {
+    for j in (r..=m).rev() {
+        let alpha = weights[j - 1];
+        let (lo, hi) = x.split_at_mut(j * d);
+        let prev = &lo[(j - 1) * d..];
+        for (y, z) in hi[..d].iter_mut().zip(prev) {
+            *y = (1.0 - alpha) * z + alpha * *y;
+        }
+    }
+}
+
+/// [`span_bezier_of`] by one de Boor run of `m` levels per point (the route before the
+/// shared chain; kept for `m` above its stack tables and as the tests' reference).
+fn span_bezier_of_runs(
+    (knots, m): (&[f64], usize),
+    s: usize,
+    (a, b): (f64, f64),
+    (local, d): (&[f64], usize),
+    out: &mut [f64],
+    work: &mut [f64],
+) {
+    let work = &mut work[..(m + 1) * d];
     for k in 0..=m {
         work.copy_from_slice(local);
         for r in 1..=m {

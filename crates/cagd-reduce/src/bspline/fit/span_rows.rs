@@ -114,6 +114,64 @@ impl SpanRows {
         rows: &mut [f64],
         rhs: &mut [f64],
     ) {
+        if self.m == 3 && d == 4 {
+            self.rows_fixed::<4, 4>(h, ext, sub, rows, rhs);
+            return;
+        }
+        self.rows_general(h, ext, sub, d, rows, rhs);
+    }
+
+    /// [`Self::rows`] with `m + 1 = M1` and `d = D` known at compile time (cubic fits of
+    /// 3-D NURBS: 4 and 4): the same sums in the same order, so the same values, in fixed
+    /// arrays (ADDED, issue 17's real-CAD-file row).
+    fn rows_fixed<const M1: usize, const D: usize>(
+        &self,
+        h: f64,
+        ext: &[f64],
+        sub: &[f64],
+        rows: &mut [f64],
+        rhs: &mut [f64],
+    ) {
+        let p1 = self.p + 1;
+        let sh = h.sqrt();
+        let ext: &[f64] = &ext[..M1 * M1];
+        for i in 0..M1 {
+            let mut row = [0.0f64; M1];
+            for l in i..M1 {
+                let c = sh * self.r[i * M1 + l];
+                let e: &[f64; M1] = ext[l * M1..(l + 1) * M1].try_into().expect("a row");
+                for j in 0..M1 {
+                    row[j] += c * e[j];
+                }
+            }
+            rows[i * M1..(i + 1) * M1].copy_from_slice(&row);
+            let mut out = [0.0f64; D];
+            for (c, x) in self.mv[i * p1..(i + 1) * p1]
+                .iter()
+                .zip(sub.chunks_exact(D))
+            {
+                let x: &[f64; D] = x.try_into().expect("a point");
+                for k in 0..D {
+                    out[k] += c * x[k];
+                }
+            }
+            for v in &mut out {
+                *v *= sh;
+            }
+            rhs[i * D..(i + 1) * D].copy_from_slice(&out);
+        }
+    }
+
+    /// [`Self::rows`] for any `m` and `d`.
+    fn rows_general(
+        &self,
+        h: f64,
+        ext: &[f64],
+        sub: &[f64],
+        d: usize,
+        rows: &mut [f64],
+        rhs: &mut [f64],
+    ) {
         let (m1, p1) = (self.m + 1, self.p + 1);
         let sh = h.sqrt();
         rows.fill(0.0);
@@ -146,6 +204,22 @@ impl SpanRows {
 mod tests {
     use super::*;
     use cagd_testkit::bench::random_input;
+
+    /// The fixed-size rows (cubic, 4 coordinates) are bitwise the general loop's.
+    #[test]
+    fn the_fixed_rows_are_the_general_ones() {
+        for p in [4usize, 9, 15] {
+            let rows = SpanRows::new(p, 3).unwrap();
+            let ext = random_input(16, 7 + p as u64);
+            let sub = random_input((p + 1) * 4, 8 + p as u64);
+            let (mut r1, mut b1) = (vec![0.0; 16], vec![0.0; 16]);
+            let (mut r2, mut b2) = (vec![0.0; 16], vec![0.0; 16]);
+            rows.rows(0.37, &ext, &sub, 4, &mut r1, &mut b1);
+            rows.rows_general(0.37, &ext, &sub, 4, &mut r2, &mut b2);
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!((bits(&r1), bits(&b1)), (bits(&r2), bits(&b2)), "p {p}");
+        }
+    }
 
     /// The compressed rows against the `k` uncompressed Gauss rows of the same span (an
     /// independent route: Bernstein values at the nodes, no QR): the two squared residuals

@@ -136,7 +136,7 @@ impl SpanData {
         for i in 0..m1 {
             unit[i * m1 + i] = 1.0;
         }
-        let (mut ext, mut work) = (vec![0.0; m1 * m1], vec![0.0; m1 * m1]);
+        let (mut ext, mut work) = (vec![0.0; m1 * m1], vec![0.0; 2 * m1 * m1]);
         debug_assert!(self.cells.last().is_none_or(|c| c.s < n));
         for c in &self.cells {
             if self.stored {

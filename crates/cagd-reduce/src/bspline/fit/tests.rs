@@ -107,3 +107,53 @@ fn restrictions_kept_or_not_give_the_same_fit() {
     assert_eq!(ba, bb);
     assert_eq!(ba.len(), 6);
 }
+
+/// The shared-chain extraction ([`span_bezier_of`]) against one de Boor run per point
+/// ([`span_bezier_of_runs`], the route it replaced): bitwise the same points at degrees
+/// 1–8 (and the runs themselves above), 1–5 coordinates, simple and multiple knots, whole
+/// spans and cells inside them; its end points are the spline's values (`eval`).
+#[test]
+fn the_shared_chain_extraction_is_the_per_point_runs() {
+    use cagd_testkit::bench::random_input;
+    let mut seed = 40;
+    for m in 1..=10usize {
+        for d in 1..=5usize {
+            seed += 1;
+            let r = random_input(64 + 40 * d, seed);
+            // Clamped knots on [0, 1] with a knot of multiplicity m - 1 (at least 1).
+            let mut knots = vec![0.0; m + 1];
+            let mut t = 0.0;
+            for (i, x) in r.iter().take(5).enumerate() {
+                t += 0.1 + 0.2 * x.abs();
+                let mult = if i == 2 { (m - 1).max(1) } else { 1 };
+                knots.extend(std::iter::repeat_n(t, mult));
+            }
+            let end = t + 0.3;
+            knots.extend(std::iter::repeat_n(end, m + 1));
+            let n = knots.len() - m - 1;
+            let pts: Vec<f64> = r[8..8 + n * d].iter().map(|x| 10.0 * x).collect();
+            let c = BSplineCurve::new(m, knots.clone(), pts.clone(), d).unwrap();
+            for s in m..n {
+                let (ka, kb) = (knots[s], knots[s + 1]);
+                if ka >= kb {
+                    continue;
+                }
+                for (a, b) in [(ka, kb), (ka + 0.3 * (kb - ka), ka + 0.8 * (kb - ka))] {
+                    let local = &pts[(s - m) * d..(s + 1) * d];
+                    let (mut x, mut y) = (vec![0.0; (m + 1) * d], vec![0.0; (m + 1) * d]);
+                    let mut work = vec![0.0; 2 * (m + 1) * d];
+                    span_bezier_of((&knots, m), s, (a, b), (local, d), &mut x, &mut work);
+                    span_bezier_of_runs((&knots, m), s, (a, b), (local, d), &mut y, &mut work);
+                    let bits = |v: &[f64]| v.iter().map(|z| z.to_bits()).collect::<Vec<_>>();
+                    assert_eq!(bits(&x), bits(&y), "m {m} d {d} span {s} [{a}, {b}]");
+                    for (u, at) in [(a, 0), (b, m)] {
+                        let v = c.eval(u).unwrap();
+                        for (e, z) in v.iter().zip(&x[at * d..(at + 1) * d]) {
+                            assert!((e - z).abs() <= 1e-12 * 10.0, "m {m} end {u}: {e} vs {z}");
+                        }
+                    }
+                }
+            }
+        }
+    }
+}

@@ -105,7 +105,7 @@ impl LocalBounds {
             return Ok(false);
         }
         let (lo, hi) = (r.saturating_sub(2 * m + 1), (r + m + 2 - s).min(n));
-        if c.removal_floor(r, s, (lo, hi)) > avail {
+        if c.removal_floor(r, s, (lo, hi), avail) > avail {
             // The removal's own bound is at least this (`floor.rs`): it cannot succeed.
             return Ok(false);
         }
