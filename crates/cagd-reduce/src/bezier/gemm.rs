@@ -9,14 +9,16 @@
 //! `lanes.rs` in blocks of curves (about 64 KiB of input each, so that a block's input and
 //! output stay in L2 while the block is checked for non-finite values). Both do exactly
 //! the `(m+1)(n+1) dim` multiply-adds of the definition per curve in the same order, so
-//! they give the same bits. They replaced nalgebra's `gemm` (the `matrixmultiply`
+//! they give the same bits (with AVX-512VL the padded kernel copies a map's unit end rows
+//! instead, the same bits for finite inputs: `padded::Units`). They replaced nalgebra's `gemm` (the `matrixmultiply`
 //! kernel) over a strided point-major view per coordinate and, for maps with a side below
 //! 6, over the Kronecker expansion `(A ⊗ I_dim)^T` (`dim` times the flops); figures in
 //! `benches/README.md`.
 //!
-//! Every output of coordinate `k` is a dense sum over all points of its curve with the
-//! zeros of the map included, so a NaN or infinity anywhere in a curve reaches its outputs;
-//! the callers detect non-finite input from the output alone.
+//! Every summed output of coordinate `k` is a dense sum over all points of its curve with
+//! the zeros of the map included, so a NaN or infinity anywhere in a curve reaches its
+//! summed outputs (a map has at least one summed row); the callers detect non-finite
+//! input from the output alone.
 
 use std::sync::OnceLock;
 
