@@ -194,8 +194,10 @@ pub unsafe extern "C" fn cagd_bspline_reduce(
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` below `sizeof(CagdReduceOptions)`,
 ///   an invalid `method` or `merge` code, `CAGD_MERGE_EXACT` with a method that does not
 ///   interpolate the segment ends, the two outputs are the same address, a pointer is
-///   misaligned, or coordinates so large (near `1e300`) that the certified bound
-///   overflows.
+///   misaligned, or coordinates so near the largest double that the certified bound or
+///   the reduced points overflow (coordinates outside `[2^-450, 2^450]`, e.g. near
+///   `1e300`, are reduced in a frame scaled by a power of two: only what overflows in
+///   model units is refused).
 /// - `CAGD_ERR_BAD_KNOTS`: the knots are not uniform (a spacing of a few ulps of the knots
 ///   is not: its gaps differ by whole ulps).
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS`: as `cagd_curve_reduce`
