@@ -10,12 +10,12 @@
 //! curve is a convex combination of its control points (positive weights), so moving each
 //! point by at most `d` (Euclidean) moves the curve by at most `d`. With `C` the input,
 //! `C_s` the curve of the scaled points, `C'_s` the reduction in the scaled frame (bound
-//! `b_s`) and `C'` the result moved back: `||C - C'|| <= ||C - 2^e C_s|| + 2^e ||C_s - C'_s||
-//! + ||2^e C'_s - C'|| <= 2^e (b_s + a) + a` with `a = dim 2^-1074` (each rounding at most
-//! half an ulp of the subnormals, `sqrt(dim) <= dim`); only one of the two roundings can
-//! happen (scaling down, the input's small coordinates; scaling up, the result's). The sums
-//! are rounded upwards (`next_up`), and a bound that overflows in model units is the only
-//! refusal.
+//! `b_s`) and `C'` the result moved back, `||C - C'||` is at most `||C - 2^e C_s|| +
+//! 2^e ||C_s - C'_s|| + ||2^e C'_s - C'|| <= 2^e (b_s + a) + a` with `a = dim 2^-1074`
+//! (each rounding at most half an ulp of the subnormals, `sqrt(dim) <= dim`); only one of
+//! the two roundings can happen (scaling down, the input's small coordinates; scaling up,
+//! the result's). The sums are rounded upwards ([`next_up`]), and a bound that overflows in
+//! model units is the only refusal.
 
 use cagd_core::{BSplineCurve, BezierCurve, Error, Result};
 
@@ -55,7 +55,7 @@ pub(super) fn reduce_scaled(
     let red = reduce(&scaled)?;
     #[allow(clippy::cast_precision_loss, reason = "dim is small")]
     let a = dim as f64 * f64::from_bits(1);
-    let model_bound = |b: f64| ((b + a).next_up() / s1 / s2 + a).next_up();
+    let model_bound = |b: f64| next_up(next_up(b + a) / s1 / s2 + a);
     let (segment_bound, error_bound) =
         (model_bound(red.segment_bound), model_bound(red.error_bound));
     let c = &red.curve;
@@ -92,6 +92,17 @@ pub(super) fn reduce_scaled(
         segment_bound,
         error_bound,
     })
+}
+
+/// The next double above `x >= 0` (`f64::next_up`, stable only from Rust 1.86, above the
+/// workspace's MSRV); `x` itself when it is infinite or NaN.
+fn next_up(x: f64) -> f64 {
+    if x.is_finite() && x >= 0.0 {
+        // +0 and -0 both go to the smallest subnormal.
+        f64::from_bits(x.abs().to_bits() + 1)
+    } else {
+        x
+    }
 }
 
 /// The refusal of a curve whose result overflows in model units (coordinates near the
