@@ -48,7 +48,7 @@ pub struct PiecewiseReport {
     /// plus what merging the pieces into the spline moved (`<= tolerance`).
     pub error_bound: f64,
     /// The measured `max_t ||original(t) - spline(t)||` (on request): [`max_distance_1d`]
-    /// on every piece's interval.
+    /// on every piece's interval (fewer samples per piece when the pieces are many).
     pub max_error: Option<f64>,
     /// For the stepwise [`crate::reduce_to_tolerance_alg_14_2_1`]: the largest bound of
     /// each one-degree step, `n -> n-1` first (their sum is the seed's certified total).
