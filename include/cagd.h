@@ -5497,6 +5497,8 @@ CagdStatus cagd_curve_reduce_to_tolerance(const struct CagdCurve *curve,
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n` or `target == 0`.
  * - `CAGD_ERR_NO_CONVERGENCE`: more than `max_depth` levels or 2^20 pieces would be
  *   needed.
+ * - `CAGD_ERR_NON_FINITE`: a reduced point overflows f64 (coordinates near the limits of
+ *   f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety

@@ -90,7 +90,9 @@ fn perturbation_error(k: usize, norm_f: f64) -> f64 {
 /// largest step error reached); [`Error::ConditionNotMet`] (eq. "tolerance") when the
 /// steps would reduce more than [`MAX_TOLERANCE_WORK`] pieces, each counted `((k + 1)^2 +
 /// 64) (dim + 1)` at degree `k` (ADDED, bounded work: a degree-64 curve reduced to degree
-/// 1 reduces every piece 63 times, and the C ABI fuzz saw such a call run 13 s).
+/// 1 reduces every piece 63 times, and the C ABI fuzz saw such a call run 13 s);
+/// [`Error::NonFinite`] when a reduced point overflows (coordinates near the limits of
+/// `f64`).
 pub fn reduce_to_tolerance_alg_14_2_1(
     curve: &BezierCurve,
     opts: &ToleranceOptions,
