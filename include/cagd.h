@@ -1853,8 +1853,10 @@ CagdStatus cagd_bspline_reduce(const struct CagdBSpline *spline,
  * - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` below `sizeof(CagdReduceOptions)`,
  *   an invalid `method` or `merge` code, `CAGD_MERGE_EXACT` with a method that does not
  *   interpolate the segment ends, the two outputs are the same address, a pointer is
- *   misaligned, or coordinates so large (near `1e300`) that the certified bound
- *   overflows.
+ *   misaligned, or coordinates so near the largest double that the certified bound or
+ *   the reduced points overflow (coordinates outside `[2^-450, 2^450]`, e.g. near
+ *   `1e300`, are reduced in a frame scaled by a power of two: only what overflows in
+ *   model units is refused).
  * - `CAGD_ERR_BAD_KNOTS`: the knots are not uniform (a spacing of a few ulps of the knots
  *   is not: its gaps differ by whole ulps).
  * - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS`: as `cagd_curve_reduce`
@@ -5465,9 +5467,11 @@ CagdStatus cagd_curve_reduce_to_tolerance(const struct CagdCurve *curve,
  * Reduces a polynomial Bézier curve of degree `n` to a `C^0` B-spline of degree
  * `opts->target` within `opts->tolerance` by seed 000's Algorithm 14.2.1 as corrected in
  * SPEC-reduce §2.2: one degree at a time by control-point perturbation (eq. 14.2.5),
- * subdividing before each step so that every step's error stays below
- * `tolerance / (n - target)`. The per-step maxima are read with
- * `cagd_report_step_bounds` (their sum is the seed's certified total).
+ * subdividing before each step so that every step's error, as eq. 14.2.11 predicts it,
+ * stays below `tolerance / (n - target)`. The per-step maxima of the certified bounds are
+ * read with `cagd_report_step_bounds` (their sum is the seed's certified total; one may
+ * exceed the prediction by the certified bound's margin); `cagd_report_bound`, the largest
+ * sum along a piece's steps, is `<= tolerance`.
  *
  * Options used: `method` (must be `CAGD_METHOD_PERTURB`), `target`, `tolerance`,
  * `continuity` (must be 0), `measure`, `max_depth` (total over all steps).
@@ -5488,10 +5492,13 @@ CagdStatus cagd_curve_reduce_to_tolerance(const struct CagdCurve *curve,
  *   and `> 0`, the two outputs are the same address, or a pointer is misaligned.
  * - `CAGD_ERR_CONDITION_NOT_MET`: `method` is not `CAGD_METHOD_PERTURB`,
  *   `continuity > 0`, or the curve is rational (the algorithm's preconditions; use
- *   `cagd_curve_reduce_to_tolerance`).
+ *   `cagd_curve_reduce_to_tolerance`); or the steps need too much work (more than `2^27`
+ *   pieces reduced times `((k + 1)^2 + 64) (dim + 1)` at degree `k`, bounded work).
  * - `CAGD_ERR_BAD_DEGREE_PAIR`: `target >= n` or `target == 0`.
  * - `CAGD_ERR_NO_CONVERGENCE`: more than `max_depth` levels or 2^20 pieces would be
  *   needed.
+ * - `CAGD_ERR_NON_FINITE`: a reduced point overflows f64 (coordinates near the limits of
+ *   f64).
  * - `CAGD_ERR_PANIC`: internal bug caught at the boundary.
  *
  * # Safety

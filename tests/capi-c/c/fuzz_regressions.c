@@ -277,3 +277,44 @@ cleanup:
     cagd_curve_free(r);
     return rc;
 }
+
+/* A uniform NURBS with a coordinate at DBL_MAX (C ABI fuzz session 0x533eda5fd3486d99):
+ * reduced in a scaled frame, and with `measure` its sampled error measured there too (the
+ * model-space measurement overflowed in the homogeneous points and the call returned
+ * CAGD_ERR_NON_FINITE, which its doc does not list); the error is at most the bound. */
+int cagd_ctest_fuzz_uniform_nurbs_near_dbl_max_measured(void) {
+    int rc = 1;
+    CagdBSpline *s = NULL, *q = NULL;
+    CagdReport *rep = NULL;
+    const double p[12] = {-1e16, -9.9998886718268301e-321, 3, 1e16, 1.0000000000000011,
+                          1.7976931348623157e+308, 1e-08, 0, -9.9998886718268301e-321, 0, 3,
+                          1e16};
+    const double w[6] = {3.2407868174935386, 4.0352860783076947, 2.2778534221163467,
+                         1.1665886321272612, 1.274978810947673, 0.60069200466841544};
+    const double k[10] = {0, 0.5, 1, 1.5, 2, 2.5, 3, 3.5, 4, 4.5};
+    double bound = -1.0, e = -1.0;
+    int merge;
+    CagdReduceOptions o;
+    CHECK_OK(cagd_bspline_new_rational(3, k, 10, p, w, 6, 2, &s));
+    for (merge = 0; merge < 2; ++merge) {
+        CHECK_OK(cagd_reduce_options_init(&o));
+        o.method = CAGD_METHOD_L2;
+        o.target = 1;
+        o.merge = merge;
+        o.measure = true;
+        CHECK_OK(cagd_bspline_reduce_uniform(s, &o, &q, &rep));
+        CHECK_OK(cagd_report_bound(rep, &bound));
+        CHECK_OK(cagd_report_max_error(rep, &e));
+        CHECK(isfinite(bound) && e > 1e306 && e <= bound);
+        cagd_bspline_free(q);
+        cagd_report_free(rep);
+        q = NULL;
+        rep = NULL;
+    }
+    rc = 0;
+cleanup:
+    cagd_report_free(rep);
+    cagd_bspline_free(q);
+    cagd_bspline_free(s);
+    return rc;
+}

@@ -54,6 +54,7 @@ c_tests![
     fuzz_nurbs_span_extrapolation_overflow_refused,
     fuzz_tensor_degeneracy_overflow_is_non_finite,
     fuzz_subdivide_extrapolation_refused,
+    fuzz_uniform_nurbs_near_dbl_max_measured,
     // c/interval.c
     intervaltri_example_1,
     intervaltri_elevation_matrix,

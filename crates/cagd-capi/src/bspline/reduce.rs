@@ -37,6 +37,35 @@ unsafe fn outputs<'a>(
     }
 }
 
+/// [`spline_max_deviation`] of `a` and `b`, or, when that overflows (a NURBS near the
+/// largest double: its homogeneous points `w x` overflow), the same measured on both curves
+/// scaled by one power of two (exact but for subnormal coordinates, far below the bound)
+/// and scaled back: the curves `cagd_bspline_reduce_uniform` reduces in a scaled frame.
+fn measured(a: &BSplineCurve, b: &BSplineCurve) -> cagd_core::Result<f64> {
+    let amax = a
+        .points()
+        .iter()
+        .chain(b.points())
+        .fold(0.0f64, |m, x| m.max(x.abs()));
+    match spline_max_deviation(a, b) {
+        Err(cagd_core::Error::NonFinite { .. }) if amax > 1.0 && amax.is_finite() => {}
+        other => return other,
+    }
+    // 2^-k in two normal factors, k = the binary exponent of amax (|k| <= 1024).
+    #[allow(clippy::cast_possible_truncation, reason = "|log2| <= 1075")]
+    let k = amax.log2().floor() as i32;
+    let (s1, s2) = (2f64.powi(-k / 2), 2f64.powi(-k + k / 2));
+    let scale = |c: &BSplineCurve| -> cagd_core::Result<BSplineCurve> {
+        let pts: Vec<f64> = c.points().iter().map(|x| x * s1 * s2).collect();
+        let knots = c.knots().to_vec();
+        match c.weights() {
+            Some(w) => BSplineCurve::new_rational(c.degree(), knots, pts, w.to_vec(), c.dim()),
+            None => BSplineCurve::new(c.degree(), knots, pts, c.dim()),
+        }
+    };
+    Ok(spline_max_deviation(&scale(a)?, &scale(b)?)? / s1 / s2)
+}
+
 /// Number of non-empty knot spans of the domain of `s`.
 fn spans(s: &BSplineCurve) -> usize {
     let (p, n, u) = (s.degree(), s.n_points(), s.knots());
@@ -194,8 +223,10 @@ pub unsafe extern "C" fn cagd_bspline_reduce(
 /// - `CAGD_ERR_INVALID_ARGUMENT`: `opts->struct_size` below `sizeof(CagdReduceOptions)`,
 ///   an invalid `method` or `merge` code, `CAGD_MERGE_EXACT` with a method that does not
 ///   interpolate the segment ends, the two outputs are the same address, a pointer is
-///   misaligned, or coordinates so large (near `1e300`) that the certified bound
-///   overflows.
+///   misaligned, or coordinates so near the largest double that the certified bound or
+///   the reduced points overflow (coordinates outside `[2^-450, 2^450]`, e.g. near
+///   `1e300`, are reduced in a frame scaled by a power of two: only what overflows in
+///   model units is refused).
 /// - `CAGD_ERR_BAD_KNOTS`: the knots are not uniform (a spacing of a few ulps of the knots
 ///   is not: its gaps differ by whole ulps).
 /// - `CAGD_ERR_BAD_DEGREE_PAIR`, `CAGD_ERR_TOO_MANY_CONSTRAINTS`: as `cagd_curve_reduce`
@@ -236,7 +267,7 @@ pub unsafe extern "C" fn cagd_bspline_reduce_uniform(
         let red =
             reduce_uniform_bspline(&s.0, o.target, o.method()?, merge).map_err(spline_failure)?;
         let max_error = if o.measure {
-            Some(spline_max_deviation(&s.0, &red.curve)?)
+            Some(measured(&s.0, &red.curve)?)
         } else {
             None
         };

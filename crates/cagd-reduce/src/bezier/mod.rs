@@ -38,4 +38,5 @@ pub use tolerance::{
 };
 pub use wn_table::perturbation_error_factor;
 
+pub(crate) use bound::{pow2_factors, safe_amax};
 pub(crate) use operator::{exact_operator, hull_bound, lobatto_node, max_norm};

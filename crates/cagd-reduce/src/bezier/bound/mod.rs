@@ -89,12 +89,7 @@ impl Operator {
             return self.fused_bound(bm, points, dim);
         }
         let amax = points.iter().fold(0.0f64, |a, x| a.max(x.abs()));
-        // 2^-e with e the binary exponent of amax: the scaled maximum is in [1, 2) (for a
-        // subnormal amax, in [2^-52, 1)).
-        let biased = i32::try_from((amax.to_bits() >> 52) & 0x7ff).unwrap_or(1023);
-        let e = biased - 1023;
-        // In two factors, each a normal number for every exponent (|e| <= 1075).
-        let (s1, s2) = (2f64.powi(-e / 2), 2f64.powi(-e + e / 2));
+        let (s1, s2) = pow2_factors(amax);
         let scaled: Vec<f64> = points.iter().map(|x| x * s1 * s2).collect();
         let b = self.fused_bound(bm, &scaled, dim) / s1 / s2;
         // Subnormal rounding of the reduced points in the caller's scale: far below this.
@@ -209,6 +204,17 @@ impl Operator {
 /// (its bound is `+inf`, or the caller reports it).
 pub(crate) fn safe_range(points: &[f64]) -> bool {
     safe_amax(points.iter().fold(0.0f64, |a, x| a.max(x.abs())))
+}
+
+/// The two factors `(s1, s2)`, each a power of two and a normal number, whose product is
+/// `2^-e` with `e` the binary exponent of `amax`: `amax s1 s2` is in `[1, 2)` (for a
+/// subnormal `amax`, in `[2^-52, 1)`). Multiplying by them is exact but where a product
+/// underflows to a subnormal number; dividing by them undoes it.
+pub(crate) fn pow2_factors(amax: f64) -> (f64, f64) {
+    let biased = i32::try_from((amax.to_bits() >> 52) & 0x7ff).unwrap_or(1023);
+    let e = biased - 1023;
+    // In two factors, each a normal number for every exponent (|e| <= 1075).
+    (2f64.powi(-e / 2), 2f64.powi(-e + e / 2))
 }
 
 /// [`safe_range`] from the largest coordinate magnitude `amax`.

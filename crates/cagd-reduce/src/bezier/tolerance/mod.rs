@@ -24,7 +24,8 @@ pub const MAX_PIECES: usize = 1 << 20;
 
 /// Most work of one [`reduce_to_tolerance`]: the pieces tried (accepted or not), each
 /// counted `((n + 1)^2 + 64) (d + 1)` for degree `n` in dimension `d`: `2^27`, under a
-/// second in a release build (ADDED, bounded work, issue 18: a degree-52 curve ran a
+/// second in a release build (also the limit of [`reduce_to_tolerance_alg_14_2_1`]'s
+/// steps, and about that of the measurement of either) (ADDED, bounded work, issue 18: a degree-52 curve ran a
 /// million reductions of 27 us each in the C ABI fuzz run; measured, a degree-5 curve in
 /// 1D takes 1.2 us per piece).
 pub const MAX_TOLERANCE_WORK: usize = 1 << 27;

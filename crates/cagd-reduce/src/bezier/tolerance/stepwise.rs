@@ -5,7 +5,7 @@
 use cagd_core::{BezierCurve, Error, Result, binomial, check_degree, check_tolerance};
 
 use super::piecewise::{PiecewiseReduction, ReducedPiece};
-use super::{MAX_PIECES, ToleranceOptions, finish, levels_for, split_levels};
+use super::{MAX_PIECES, MAX_TOLERANCE_WORK, ToleranceOptions, finish, levels_for, split_levels};
 use crate::bezier::method::Method;
 use crate::bezier::operator::operator;
 use crate::bezier::wn_table::perturbation_error_factor;
@@ -87,7 +87,12 @@ fn perturbation_error(k: usize, norm_f: f64) -> f64 {
 /// or a rational curve (use [`crate::reduce_to_tolerance`]); [`Error::BadTolerance`]; as
 /// [`Method::check`] (`d >= n`, `d = 0`); [`Error::NoConvergence`] when a piece would need
 /// more than `max_depth` levels or the pieces would exceed [`MAX_PIECES`] (with the
-/// largest step error reached).
+/// largest step error reached); [`Error::ConditionNotMet`] (eq. "tolerance") when the
+/// steps would reduce more than [`MAX_TOLERANCE_WORK`] pieces, each counted `((k + 1)^2 +
+/// 64) (dim + 1)` at degree `k` (ADDED, bounded work: a degree-64 curve reduced to degree
+/// 1 reduces every piece 63 times, and the C ABI fuzz saw such a call run 13 s);
+/// [`Error::NonFinite`] when a reduced point overflows (coordinates near the limits of
+/// `f64`).
 pub fn reduce_to_tolerance_alg_14_2_1(
     curve: &BezierCurve,
     opts: &ToleranceOptions,
@@ -106,8 +111,10 @@ pub fn reduce_to_tolerance_alg_14_2_1(
     // (start, end, depth, piece, bound accumulated along the piece's history)
     let mut pieces = vec![(0.0, 1.0, 0usize, curve.clone(), 0.0f64)];
     let mut step_bounds = Vec::with_capacity(n - d);
+    let mut work = 0usize;
     for k in ((d + 1)..=n).rev() {
         let op = operator(Method::Perturb, k, k - 1)?;
+        let unit = ((k + 1) * (k + 1) + 64) * (dim + 1);
         let mut next = Vec::with_capacity(pieces.len());
         let mut step_max = 0.0f64;
         for (a, b, depth, s, acc) in pieces {
@@ -124,6 +131,14 @@ pub fn reduce_to_tolerance_alg_14_2_1(
                 return Err(Error::NoConvergence {
                     tolerance: opts.tolerance,
                     achieved: e,
+                });
+            }
+            work = work.saturating_add((1usize << levels.min(40)).saturating_mul(unit));
+            if work > MAX_TOLERANCE_WORK {
+                return Err(Error::ConditionNotMet {
+                    eq: "tolerance",
+                    why: "the steps need too much work (more than 2^27 pieces reduced times \
+                          ((k + 1)^2 + 64) (d + 1))",
                 });
             }
             for (a2, b2, sub) in split_levels(s, a, b, levels)? {

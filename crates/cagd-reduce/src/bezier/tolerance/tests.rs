@@ -389,3 +389,199 @@ proptest::proptest! {
         check_result(&red, &format!("{} k={k} tol={tol:e}", method.name()));
     }
 }
+
+/// The C ABI fuzz input (session 0x544177ccc84a9a70, call 148) that ran 13.3 s: a smooth
+/// degree-63 curve in 2-D reduced stepwise to degree 1 within `1.06e-6` (every piece of
+/// every step reduced again, 62 steps).
+#[allow(
+    clippy::excessive_precision,
+    reason = "17 significant digits as gdb printed the fuzz input: kept as read"
+)]
+const FUZZ_DEGREE_63: [f64; 128] = [
+    -0.1597580533548093,
+    0.97922550091989802,
+    -0.18013734513965174,
+    0.94112352953192702,
+    -0.19768186791253181,
+    0.90497835088803147,
+    -0.21520004867254369,
+    0.86923898719719828,
+    -0.23161111614507987,
+    0.83760446744150918,
+    -0.24602063945424696,
+    0.80689333127777108,
+    -0.25635276022022779,
+    0.77843154406719606,
+    -0.2641593796507356,
+    0.75150269025632876,
+    -0.27239322597657672,
+    0.72471253343701481,
+    -0.28183535693847872,
+    0.69852913554238361,
+    -0.28996293134369283,
+    0.67447730943276085,
+    -0.29451227850424727,
+    0.654404159596505,
+    -0.29550528823688571,
+    0.63805028634571714,
+    -0.29440225116910651,
+    0.62285342970419755,
+    -0.29287468230302183,
+    0.60635325674701424,
+    -0.29177713389106658,
+    0.5877901873083955,
+    -0.29130162952318445,
+    0.5677830362458941,
+    -0.29249178773020357,
+    0.54787257830683589,
+    -0.29717575513511119,
+    0.52819439162946302,
+    -0.30393786275157858,
+    0.50877018228738613,
+    -0.31156012020543306,
+    0.4900627615542742,
+    -0.31730295119898416,
+    0.48277706340196264,
+    -0.32513386519542792,
+    0.48110034378783562,
+    -0.31955672108440669,
+    0.50630587092864454,
+    -0.33254707435658676,
+    0.50432285876236249,
+    -0.33813414562677263,
+    0.52664072104798554,
+    -0.40057490069161,
+    0.44400264680235751,
+    -0.34599606321928428,
+    0.54358106016326635,
+    -0.41913977095890664,
+    0.4624027158628235,
+    -0.32244341698467804,
+    0.61384251125586153,
+    -0.37821205286922477,
+    0.3131121625136043,
+    -0.4411732770633911,
+    0.74756365169738215,
+    -0.42266171907348138,
+    0.62640091576522106,
+    -0.40887132656171482,
+    0.52373806608983786,
+    -0.3048272702345507,
+    0.6791507646436663,
+    -0.48014748173874011,
+    0.43408653121499818,
+    -0.41563699128751119,
+    0.59770514673726793,
+    -0.43579191354060359,
+    0.53261445757195935,
+    -0.38754924884991671,
+    0.61681669736243183,
+    -0.4217091620303795,
+    0.61703195090229035,
+    -0.43478209999950312,
+    0.64880992416084204,
+    -0.45644936246486489,
+    0.62569644988411299,
+    -0.4625271222729348,
+    0.60650998206801576,
+    -0.4653711480432054,
+    0.59078453515149032,
+    -0.46112142512646465,
+    0.59614605268270882,
+    -0.45849136826341236,
+    0.61113294835878851,
+    -0.46248031311203935,
+    0.62916950051074394,
+    -0.47670674216809189,
+    0.64541979063911292,
+    -0.49988175458514328,
+    0.65914871551783949,
+    -0.52831466917099767,
+    0.66879244912093516,
+    -0.55795765010585863,
+    0.67483596260831402,
+    -0.58560320933000409,
+    0.68128280520672013,
+    -0.61003108311065413,
+    0.69093408777837728,
+    -0.6326673139392901,
+    0.70213847790068795,
+    -0.65572978152368377,
+    0.7122346177493587,
+    -0.67926091645456299,
+    0.72074437600585572,
+    -0.70102016462479944,
+    0.72799994325622808,
+    -0.71923523638394327,
+    0.73309476656208183,
+    -0.73507774521586011,
+    0.73532117555322007,
+    -0.75205241953658364,
+    0.7362082123662631,
+    -0.77258640944225487,
+    0.7367792472015593,
+    -0.79741848731532872,
+    0.73238939599574859,
+    -0.82189520767217106,
+    0.72732402010436303,
+    -0.84467925869390226,
+    0.71990033697794575,
+];
+
+#[test]
+fn stepwise_fuzz_degree_63_is_measured_within_bounded_work() {
+    // 9 232 pieces: the reduction is light, its measurement (576 samples of the degree-63
+    // curve per piece) took 13 s; now fewer samples per piece, and the measured error still
+    // close below the certified bound.
+    let curve = BezierCurve::new(FUZZ_DEGREE_63.to_vec(), 2).unwrap();
+    let opts = ToleranceOptions {
+        measure: true,
+        ..ToleranceOptions::new(Method::Perturb, 1, 1.06048e-06, 0)
+    };
+    let red = reduce_to_tolerance_alg_14_2_1(&curve, &opts).unwrap();
+    let r = &red.report;
+    let e = r.max_error.unwrap();
+    assert!(r.pieces > 9000 && e <= r.error_bound, "{e:e}");
+    // Against an independent dense sampling (2^16 parameters): the measurement finds at
+    // least what it finds.
+    let dense = (0..=1u32 << 16)
+        .map(|i| {
+            let t = f64::from(i) / f64::from(1u32 << 16);
+            let (a, b) = (curve.eval(t), red.spline.eval(t).unwrap());
+            a.iter()
+                .zip(&b)
+                .map(|(x, y)| (x - y) * (x - y))
+                .sum::<f64>()
+                .sqrt()
+        })
+        .fold(0.0f64, f64::max);
+    assert!(e >= dense * (1.0 - 1e-6), "{e:e} below the dense {dense:e}");
+    let samples = super::piecewise::samples_per_piece(63, 1, r.pieces);
+    assert!((super::piecewise::MIN_SAMPLES..8 * 64 + 64).contains(&samples));
+    assert!(
+        samples == super::piecewise::MIN_SAMPLES
+            || samples * r.pieces * (64 * 64 + 4 + 64) <= crate::MAX_TOLERANCE_WORK
+    );
+    // Few pieces: the full count.
+    assert_eq!(super::piecewise::samples_per_piece(63, 1, 10), 8 * 64 + 64);
+}
+
+#[test]
+fn stepwise_work_is_bounded() {
+    // Pieces split at a high degree are reduced again at every later step: a random
+    // degree-24 curve in 8-D to degree 1 within 1e-9 would reduce millions of pieces.
+    let curve = BezierCurve::new(random_points(25, 8, 5), 8).unwrap();
+    let opts = ToleranceOptions::new(Method::Perturb, 1, 1e-9, 0);
+    match reduce_to_tolerance_alg_14_2_1(&curve, &opts) {
+        Err(Error::ConditionNotMet {
+            eq: "tolerance",
+            why,
+        }) => {
+            assert!(why.contains("too much work"), "{why}");
+        }
+        other => panic!(
+            "{:?}",
+            other.map(|r| (r.report.pieces, r.report.error_bound))
+        ),
+    }
+}

@@ -7,6 +7,10 @@
 //! The per-segment matrices `T S^(n)` (exact merge) and `S^(m)^{-1} T S^(n)` (lossy merge)
 //! are built once per `(method, n, m)` in exact rational arithmetic, rounded once to `f64`
 //! and cached process-wide, as the paper intends (one matrix product per segment).
+//! Coordinates outside `[2^-450, 2^450]` are reduced in a frame scaled by a power of two
+//! (`scaled.rs`).
+
+mod scaled;
 
 use std::collections::HashMap;
 use std::sync::{Arc, OnceLock, RwLock};
@@ -17,7 +21,7 @@ use cagd_core::{
 
 use super::framed;
 use super::measure::euclidean_from_homogeneous;
-use crate::bezier::{hull_bound, max_norm};
+use crate::bezier::{hull_bound, max_norm, safe_amax};
 use crate::exact::{Q, RatMat};
 use crate::{Method, operator};
 
@@ -166,10 +170,17 @@ fn pieces(degree: usize, knots: &[f64], work: &[f64], pdim: usize) -> Result<Vec
 /// measured errors match the spec (reduction step `1.30e-2`, after the lossy merge
 /// `5.4e-2`; the paper's "average error 5e-3" is the mean of the reduction step).
 ///
+/// Coordinates outside `[2^-450, 2^450]` (e.g. near `1e300`, where the squares in the
+/// bounds overflow), or a curve whose bounds overflow in its own units, are reduced in a
+/// frame scaled by a power of two (exact; the result and its bounds moved back, the
+/// rounding of subnormal coordinates added; ADDED, beyond the seed): only a bound or a
+/// point that overflows in model units is refused.
+///
 /// # Errors
 /// [`Error::BadParameter`] (knots not uniform, [`Merge::Exact`] with a method that does
-/// not interpolate the segment ends, or coordinates so large, near `1e300`, that the
-/// certified bound overflows); the errors of [`Method::check`] for `(n, m)`;
+/// not interpolate the segment ends, or coordinates so near the largest double that the
+/// certified bound or the reduced points overflow in model units); the errors of
+/// [`Method::check`] for `(n, m)`;
 /// [`Error::ConditionNotMet`] if the exact merge finds joints that do not meet;
 /// [`Error::NonPositiveWeight`] when a reduced weight of a NURBS is not positive.
 ///
@@ -191,6 +202,25 @@ fn pieces(degree: usize, knots: &[f64], work: &[f64], pdim: usize) -> Result<Vec
 /// # Ok::<(), cagd_reduce::Error>(())
 /// ```
 pub fn reduce_uniform_bspline(
+    curve: &BSplineCurve,
+    m: usize,
+    method: Method,
+    merge: Merge,
+) -> Result<UniformReduction> {
+    let amax = curve.points().iter().fold(0.0f64, |a, x| a.max(x.abs()));
+    if safe_amax(amax) {
+        match uniform_model(curve, m, method, merge) {
+            // Bounds that overflow in the curve's own units: again in the scaled frame.
+            Err(Error::BadParameter { name: "points", .. }) => {}
+            r => return r,
+        }
+    }
+    scaled::reduce_scaled(curve, amax, |c| uniform_model(c, m, method, merge))
+}
+
+/// [`reduce_uniform_bspline`] in model units: a NURBS in its frame, a polynomial curve as
+/// it is.
+fn uniform_model(
     curve: &BSplineCurve,
     m: usize,
     method: Method,
@@ -369,14 +399,14 @@ fn uniform_at(
     })
 }
 
-/// The error for coordinates near the largest double (e.g. 1e300), whose certified bound
-/// overflows: a report without a finite bound would be garbage.
+/// The error for coordinates whose certified bound overflows (e.g. near 1e300): a report
+/// without a finite bound would be garbage; [`reduce_uniform_bspline`] tries such a curve
+/// again in a scaled frame.
 fn overflow(curve: &BSplineCurve) -> Error {
-    Error::BadParameter {
-        name: "points",
-        value: max_norm(curve.points(), curve.dim()),
-        why: "coordinates too large: the certified error bound overflows",
-    }
+    scaled::too_large(
+        curve,
+        "coordinates too large: the certified error bound overflows",
+    )
 }
 
 /// A Bézier curve from working points (homogeneous when `rational`).

@@ -250,27 +250,142 @@ fn rounded_uniform_knots_far_from_zero_keep_true_bounds() {
     }
 }
 
-#[test]
-fn coordinates_whose_bound_overflows_are_an_error_not_an_infinite_bound() {
-    // A C ABI fuzz input (seed 121): a 2-D uniform cubic-to-quartic spline with one
-    // coordinate 1e300. Both merges used to return a report with an infinite segment bound.
+/// The C ABI fuzz input of seed 121: a 2-D uniform quartic spline (12 knots at spacing 0.5)
+/// with one coordinate `big`, the others `sin(0.37 i)`.
+fn fuzz_121(big: f64, weights: Option<Vec<f64>>) -> BSplineCurve {
     let knots: Vec<f64> = (0..13).map(|i| 17.0 + 0.5 * f64::from(i)).collect();
     let mut pts: Vec<f64> = (0..16).map(|i| (f64::from(i) * 0.37).sin()).collect();
-    pts[7] = 1e300;
-    let c = BSplineCurve::new(4, knots, pts.clone(), 2).expect("curve");
-    for merge in [Merge::Lossy, Merge::Exact] {
-        match reduce_uniform_bspline(&c, 3, Method::L2 { r: 0, p: 0 }, merge) {
-            Err(Error::BadParameter { name: "points", .. }) => {}
-            Ok(r) => assert!(
+    pts[7] = big;
+    match weights {
+        Some(w) => BSplineCurve::new_rational(4, knots, pts, w, 2).expect("curve"),
+        None => BSplineCurve::new(4, knots, pts, 2).expect("curve"),
+    }
+}
+
+/// `c` with its control points multiplied by `s` (a power of two: exact here).
+fn times(c: &BSplineCurve, s: f64) -> BSplineCurve {
+    let pts: Vec<f64> = c.points().iter().map(|x| x * s).collect();
+    match c.weights() {
+        Some(w) => {
+            BSplineCurve::new_rational(c.degree(), c.knots().to_vec(), pts, w.to_vec(), c.dim())
+        }
+        None => BSplineCurve::new(c.degree(), c.knots().to_vec(), pts, c.dim()),
+    }
+    .expect("scaled curve")
+}
+
+#[test]
+fn coordinates_near_1e300_are_reduced_in_a_scaled_frame() {
+    // The fuzz input of seed 121 (coordinate 1e300) used to be refused by both merges (its
+    // certified bound overflowed). Now reduced, with finite bounds that hold: against a
+    // dense measurement in model units and in a frame scaled by 2^-900 (exact), and the
+    // result is the reduction of the curve scaled by 2^-900 (where no square overflows, the
+    // unscaled route) scaled back, bit for bit.
+    let k = 2f64.powi(-900);
+    let weights = vec![1.0, 0.5, 2.0, 1.5, 1.0, 0.75, 1.25, 1.0];
+    for rational in [false, true] {
+        let c = fuzz_121(1e300, rational.then(|| weights.clone()));
+        let small = times(&c, k);
+        for merge in [Merge::Lossy, Merge::Exact] {
+            let what = format!("rational {rational} {merge:?}");
+            let r = reduce_uniform_bspline(&c, 3, Method::L2 { r: 0, p: 0 }, merge)
+                .unwrap_or_else(|e| panic!("{what}: {e}"));
+            assert!(
                 r.segment_bound.is_finite() && r.error_bound.is_finite(),
-                "{merge:?}: an Ok report must carry finite bounds"
-            ),
-            Err(e) => panic!("{merge:?}: unexpected error {e}"),
+                "{what}"
+            );
+            assert!(r.segment_bound <= r.error_bound, "{what}");
+            let d = spline_max_deviation(&c, &r.curve).unwrap();
+            assert!(
+                d > 1e280 && d <= r.error_bound,
+                "{what}: {d:e} {:e}",
+                r.error_bound
+            );
+            let d_small = spline_max_deviation(&small, &times(&r.curve, k)).unwrap();
+            assert!(d_small <= r.error_bound * k, "{what}: {d_small:e}");
+            let direct = reduce_uniform_bspline(&small, 3, Method::L2 { r: 0, p: 0 }, merge)
+                .unwrap_or_else(|e| panic!("{what}: scaled input {e}"));
+            assert_eq!(times(&direct.curve, 1.0 / k), r.curve, "{what}: curve");
+            for (a, b) in direct.segments.iter().zip(&r.segments) {
+                let back: Vec<f64> = a.points().iter().map(|x| x / k).collect();
+                assert_eq!(back, b.points(), "{what}: segment");
+            }
+            // The bounds are those of the scaled frame up to its rounding allowances (a
+            // few ulps of the result's size).
+            let rel = (r.error_bound / (direct.error_bound / k) - 1.0).abs();
+            assert!(
+                rel < 1e-6,
+                "{what}: {:e} vs {:e}",
+                r.error_bound,
+                direct.error_bound / k
+            );
         }
     }
-    // Moderate coordinates still reduce.
-    pts[7] = 0.5;
-    let c = BSplineCurve::new(4, c.knots().to_vec(), pts, 2).expect("curve");
-    let r = reduce_uniform_bspline(&c, 3, Method::L2 { r: 0, p: 0 }, Merge::Lossy).expect("ok");
-    assert!(r.segment_bound.is_finite() && r.error_bound.is_finite());
+}
+
+#[test]
+fn coordinates_near_1e_minus_300_are_reduced_in_a_scaled_frame() {
+    // Tiny coordinates (their bounds' squares would underflow): reduced in the frame scaled
+    // by a power of two; the bound holds against a measurement in a frame scaled by 2^900
+    // (exact), where the rounding of the result's subnormal coordinates is small.
+    let k = 2f64.powi(900);
+    let c = times(&fuzz_121(0.5, None), 2f64.powi(-990));
+    for merge in [Merge::Lossy, Merge::Exact] {
+        let r = reduce_uniform_bspline(&c, 3, Method::L2 { r: 0, p: 0 }, merge)
+            .unwrap_or_else(|e| panic!("{merge:?}: {e}"));
+        assert!(
+            r.error_bound > 0.0 && r.error_bound.is_finite(),
+            "{merge:?}"
+        );
+        let d = spline_max_deviation(&times(&c, k), &times(&r.curve, k)).unwrap();
+        assert!(
+            d <= r.error_bound * k,
+            "{merge:?}: {d:e} {:e}",
+            r.error_bound * k
+        );
+        assert!(
+            d > 0.25 * r.error_bound * k,
+            "{merge:?}: a bound {:e} far above {d:e}",
+            r.error_bound * k
+        );
+    }
+}
+
+#[test]
+fn only_a_bound_or_result_that_overflows_in_model_units_is_refused() {
+    // Control points alternating in pairs at +-DBL_MAX: in 2-D the reduction's error is
+    // about 0.3 DBL_MAX, so the curve is reduced, with a finite bound that holds.
+    let pattern = |dim: usize| -> BSplineCurve {
+        let knots: Vec<f64> = (0..13).map(f64::from).collect();
+        let pts: Vec<f64> = (0..8 * dim)
+            .map(|i| {
+                if (i / dim) % 4 < 2 {
+                    f64::MAX
+                } else {
+                    -f64::MAX
+                }
+            })
+            .collect();
+        BSplineCurve::new(4, knots, pts, dim).expect("curve")
+    };
+    let c = pattern(2);
+    for merge in [Merge::Lossy, Merge::Exact] {
+        let r = reduce_uniform_bspline(&c, 1, Method::L2 { r: 0, p: 0 }, merge)
+            .unwrap_or_else(|e| panic!("{merge:?}: {e}"));
+        let d = spline_max_deviation(&c, &r.curve).unwrap();
+        assert!(
+            r.error_bound.is_finite() && d <= r.error_bound,
+            "{merge:?}: {d:e}"
+        );
+    }
+    // In 32 dimensions the same error has a Euclidean norm beyond DBL_MAX: no finite
+    // certified bound exists in model units, and the curve is refused.
+    let c = pattern(32);
+    for merge in [Merge::Lossy, Merge::Exact] {
+        let r = reduce_uniform_bspline(&c, 1, Method::L2 { r: 0, p: 0 }, merge);
+        assert!(
+            matches!(r, Err(Error::BadParameter { name: "points", .. })),
+            "{merge:?}: {r:?}"
+        );
+    }
 }

@@ -215,25 +215,36 @@ fn no_exact_fallback_at_degree_64() {
     }
 }
 
-/// The compensated route of Farin's and the perturbation method (`compensated.rs`) at every
-/// pair `n <= 16` and at `(20,10)`, `(24,12)`, `(30,15)`: proven at the rounding level
-/// (`build`'s `strict`), every row of the matrix and every bound term within its proven
-/// error of the exact oracle, and `build` takes it there.
-#[test]
-fn compensated_route_matches_the_exact_oracle() {
+/// The pairs of the two stepwise routes' oracle tests: every pair `n <= 16` and `(20,10)`,
+/// `(24,12)`, `(30,15)`.
+fn stepwise_oracle_pairs() -> Vec<(usize, usize)> {
     let mut pairs: Vec<(usize, usize)> =
         (1..=16).flat_map(|n| (0..n).map(move |m| (n, m))).collect();
     pairs.extend([(20, 10), (24, 12), (30, 15)]);
-    for method in [Method::Farin, Method::Perturb] {
-        for &(n, m) in &pairs {
+    pairs
+}
+
+/// For every method of `methods` at every pair of [`stepwise_oracle_pairs`] it accepts:
+/// the rows and terms `stepwise` gives, rounded by `finish` as `route`, are proven at the
+/// rounding level (`build`'s `strict`), every row of the matrix and every bound term is
+/// within its proven error of the exact oracle, and `build` takes that matrix; `more` then
+/// checks the finished operator and `build`'s further.
+fn stepwise_route_matches_the_exact_oracle<R: Rounded>(
+    methods: [Method; 2],
+    route: OperatorRoute,
+    stepwise: impl Fn(Method, usize, usize) -> Option<(Vec<R>, Vec<(f64, R)>)>,
+    more: impl Fn(Method, usize, usize, &Built, &Built),
+) {
+    for method in methods {
+        for (n, m) in stepwise_oracle_pairs() {
             if method.check(n, m).is_err() {
                 continue;
             }
             #[allow(clippy::cast_precision_loss, reason = "n <= 30")]
             let strict = 2.0 * (n as f64 + 3.0) * f64::EPSILON;
-            let (rows, terms) = compensated::stepwise(method, n, m)
-                .unwrap_or_else(|| panic!("{method:?} {n}->{m}: given up"));
-            let b = finish(&rows, &terms, OperatorRoute::DoubleWord, strict)
+            let (rows, terms) =
+                stepwise(method, n, m).unwrap_or_else(|| panic!("{method:?} {n}->{m}: given up"));
+            let b = finish(&rows, &terms, route, strict)
                 .unwrap_or_else(|| panic!("{method:?} {n}->{m}: not proven at {strict:e}"));
             let (e, te, _) = compare_built(method, n, m, &b).unwrap();
             assert!(
@@ -242,8 +253,23 @@ fn compensated_route_matches_the_exact_oracle() {
             );
             let built = build(method, n, m).unwrap();
             assert_eq!(built.matrix, b.matrix, "{method:?} {n}->{m}: build's route");
+            more(method, n, m, &b, &built);
         }
     }
+}
+
+/// The compensated route of Farin's and the perturbation method (`compensated.rs`) at every
+/// pair `n <= 16` and at `(20,10)`, `(24,12)`, `(30,15)`: proven at the rounding level
+/// (`build`'s `strict`), every row of the matrix and every bound term within its proven
+/// error of the exact oracle, and `build` takes it there.
+#[test]
+fn compensated_route_matches_the_exact_oracle() {
+    stepwise_route_matches_the_exact_oracle(
+        [Method::Farin, Method::Perturb],
+        OperatorRoute::DoubleWord,
+        compensated::stepwise,
+        |_, _, _, _, _| {},
+    );
 }
 
 /// The row-bound route of Forrest and Piegl–Tiller (`row_bound.rs`) at every pair `n <= 16`
@@ -255,27 +281,11 @@ fn compensated_route_matches_the_exact_oracle() {
 /// allowances; Piegl–Tiller's middle point is bounded as Forrest's, a little tighter).
 #[test]
 fn row_bound_route_matches_the_exact_oracle() {
-    let mut pairs: Vec<(usize, usize)> =
-        (1..=16).flat_map(|n| (0..n).map(move |m| (n, m))).collect();
-    pairs.extend([(20, 10), (24, 12), (30, 15)]);
-    for method in [Method::Forrest, Method::PieglTiller] {
-        for &(n, m) in &pairs {
-            if method.check(n, m).is_err() {
-                continue;
-            }
-            #[allow(clippy::cast_precision_loss, reason = "n <= 30")]
-            let strict = 2.0 * (n as f64 + 3.0) * f64::EPSILON;
-            let (rows, terms) = row_bound::stepwise(method, n, m)
-                .unwrap_or_else(|| panic!("{method:?} {n}->{m}: given up"));
-            let b = finish(&rows, &terms, OperatorRoute::F64, strict)
-                .unwrap_or_else(|| panic!("{method:?} {n}->{m}: not proven at {strict:e}"));
-            let (e, te, _) = compare_built(method, n, m, &b).unwrap();
-            assert!(
-                e <= strict && te <= 1.0,
-                "{method:?} {n}->{m}: {e:e} {te:e}"
-            );
-            let built = build(method, n, m).unwrap();
-            assert_eq!(built.matrix, b.matrix, "{method:?} {n}->{m}: build's route");
+    stepwise_route_matches_the_exact_oracle(
+        [Method::Forrest, Method::PieglTiller],
+        OperatorRoute::F64,
+        row_bound::stepwise,
+        |method, n, m, b, built| {
             assert_eq!(built.route, OperatorRoute::F64, "{method:?} {n}->{m}");
             let (rows, terms) = rows_of::<f64>(method, n, m, false).unwrap();
             let tracked = finish(&rows, &terms, OperatorRoute::F64, 1e300).unwrap();
@@ -286,9 +296,11 @@ fn row_bound_route_matches_the_exact_oracle() {
                 b.error,
                 tracked.error
             );
-        }
-        // Degree 64 (the oracle there is the ignored sweep's): accepted, the tracked
-        // route's matrix.
+        },
+    );
+    // Degree 64 (the oracle there is the ignored sweep's): accepted, the tracked route's
+    // matrix.
+    for method in [Method::Forrest, Method::PieglTiller] {
         for (n, m) in [(64, 63), (64, 32), (64, 10)] {
             let strict = 2.0 * (64.0 + 3.0) * f64::EPSILON;
             let (rows, terms) = row_bound::stepwise(method, n, m).unwrap();
