@@ -411,16 +411,7 @@ mod tests_padded {
         assert_eq!(Units::of(&a, 5, 6).ends(), None);
         let (a, _) = map(5, 6);
         assert_eq!(Units::of(&a, 5, 6).ends(), None);
-        // The operators: L2 with C0 ends has them, plain L2 has not.
-        use crate::{Method, operator};
-        for (n, m) in [(4, 3), (5, 4), (10, 5), (15, 10)] {
-            let ends = |r| {
-                let op = operator(Method::L2 { r, p: r }, n, m).unwrap();
-                Units::of(op.matrix(), m + 1, n + 1).ends()
-            };
-            assert_eq!(ends(0), Some([0, n]), "({n},{m})");
-            assert_eq!(ends(-1), None, "({n},{m})");
-        }
+        // The operators: `operator::tests` (this module may not import `operator`).
     }
 
     #[test]

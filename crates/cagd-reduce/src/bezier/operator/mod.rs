@@ -420,6 +420,20 @@ mod tests {
     use crate::exact::{Q, q_to_f64};
     use num_traits::{Signed, Zero};
 
+    #[test]
+    fn l2_with_c0_ends_has_the_unit_end_rows_the_batch_kernel_copies() {
+        // `padded::Units` on the operators: L2 with C0 ends has them, plain L2 has not.
+        use crate::bezier::padded::Units;
+        for (n, m) in [(4, 3), (5, 4), (10, 5), (15, 10)] {
+            let ends = |r| {
+                let op = operator(Method::L2 { r, p: r }, n, m).unwrap();
+                Units::of(op.matrix(), m + 1, n + 1).ends()
+            };
+            assert_eq!(ends(0), Some([0, n]), "({n},{m})");
+            assert_eq!(ends(-1), None, "({n},{m})");
+        }
+    }
+
     /// Applies the f64 operator to a curve and compares with the exact rational operator
     /// applied exactly: the max deviation relative to the largest exact reduced coordinate.
     fn relative_error(method: Method, n: usize, m: usize) -> f64 {
