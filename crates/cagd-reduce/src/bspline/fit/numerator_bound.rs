@@ -506,7 +506,8 @@ mod tests {
                         })
                         .sum();
                     assert!((at.sqrt() - b.sqrt()).abs() <= tol, "({p}, {m}) node {j}");
-                    if tilt {
+                    if tilt && b > 0.0 {
+                        // (At 1e-300 the squares underflow: every node is zero.)
                         assert!(2 * j > nodes.big_n, "({p}, {m}): node {j}");
                     }
                 }
