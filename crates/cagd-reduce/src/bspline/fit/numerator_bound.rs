@@ -104,7 +104,7 @@ impl NumeratorNodes {
         let bn = grid.bernstein(deg);
         let big_n = grid.big_n();
         let half = (big_n / 2 + 1).div_ceil(LANES) * LANES;
-        let (pairs, rows) = ((deg + 1) / 2, deg / 2 + 1);
+        let (pairs, rows) = (deg.div_ceil(2), deg / 2 + 1);
         let (mut even, mut odd) = (vec![0.0; rows * half], vec![0.0; pairs * half]);
         for j in 0..=big_n / 2 {
             for k in 0..rows {
@@ -303,7 +303,7 @@ impl NumeratorNodes {
     #[inline(never)]
     fn symmetric_max<const D: usize>(&self, num: &[f64]) -> (f64, usize) {
         let (n, hn, big_n) = (self.p + self.m, self.half, self.big_n);
-        let pairs = (n + 1) / 2;
+        let pairs = n.div_ceil(2);
         let rows = n / 2 + 1;
         let mut e = [[0.0f64; D]; 16];
         let mut o = [[0.0f64; D]; 16];
