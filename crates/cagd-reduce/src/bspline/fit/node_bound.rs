@@ -68,6 +68,11 @@ impl NodeGrid {
         Self { big_n, nodes, sec }
     }
 
+    /// `N`: the nodes are `t_j`, `j = 0..=N`.
+    pub(super) fn big_n(&self) -> usize {
+        self.big_n
+    }
+
     /// The Bernstein matrix of degree `n` at the nodes: `(n + 1) x nodes`, row `i` the
     /// values `B^n_i(t_j)` ([`push_bernstein`]), zero in the padding columns.
     pub(super) fn bernstein(&self, n: usize) -> Vec<f64> {

@@ -48,6 +48,16 @@ pub(crate) struct NumeratorNodes {
     prod: Vec<f64>,
     /// `sec((p + m) (pi / (2N) + margin))`, rounded up.
     sec: f64,
+    /// `N` (the nodes `t_j`, `j = 0..=N`).
+    big_n: usize,
+    /// The columns `j = 0..=N/2` of the symmetric split, rounded up to a multiple of
+    /// [`LANES`] (the extra columns of `even` and `odd` are zero).
+    half: usize,
+    /// `(n/2 + 1) x half` (`n = p + m`): row `k < n - k` the values `B_k(t_j) +
+    /// B_(n-k)(t_j)`, and for even `n` row `n / 2` the values `B_(n/2)(t_j)`.
+    even: Vec<f64>,
+    /// `((n + 1) / 2) x half`: row `k < n - k` the values `B_k(t_j) - B_(n-k)(t_j)`.
+    odd: Vec<f64>,
 }
 
 thread_local! {
@@ -91,13 +101,33 @@ impl NumeratorNodes {
                     binomial_f64(p, i) * binomial_f64(m, j) / binomial_f64(deg, i + j);
             }
         }
+        let bn = grid.bernstein(deg);
+        let big_n = grid.big_n();
+        let half = (big_n / 2 + 1).div_ceil(LANES) * LANES;
+        let (pairs, rows) = (deg.div_ceil(2), deg / 2 + 1);
+        let (mut even, mut odd) = (vec![0.0; rows * half], vec![0.0; pairs * half]);
+        for j in 0..=big_n / 2 {
+            for k in 0..rows {
+                let (x, y) = (bn[k * grid.nodes + j], bn[(deg - k) * grid.nodes + j]);
+                if k < deg - k {
+                    even[k * half + j] = x + y;
+                    odd[k * half + j] = x - y;
+                } else {
+                    even[k * half + j] = x;
+                }
+            }
+        }
         Self {
             p,
             m,
             nodes: grid.nodes,
-            bn: grid.bernstein(deg),
+            bn,
             prod,
             sec: grid.sec,
+            big_n,
+            half,
+            even,
+            odd,
         }
     }
 
@@ -117,9 +147,11 @@ impl NumeratorNodes {
     /// to one, each share within `3 eps`: within `(m + 8) eps X` per coordinate;
     /// *evaluation*, the Bernstein values of degree `p + m` at the `f64` nodes within
     /// `(3(p + m) + 3) eps` relative and the sum of `p + m + 1` products within `(p + m +
-    /// 2) eps` of the coefficients' size: `(4(p + m) + 5) eps X`; the squared norm adds
-    /// `(dim + 3) eps` relative. So the node values are within `inner = 2 (4(p + m) + m +
-    /// 13) (sqrt(dim) + 1) eps X` (a factor 2 for the second-order terms and the margin).
+    /// 2) eps` of the coefficients' size: `(4(p + m) + 5) eps X`; by the symmetric split
+    /// ([`Self::symmetric_max`], 3-D) `(7(p + m) + 14) eps X`, the larger, is allowed; the
+    /// squared norm adds `(dim + 3) eps` relative. So the node values are within `inner =
+    /// 2 (7(p + m) + m + 22) (sqrt(dim) + 1) eps X` (a factor 2 for the second-order terms
+    /// and the margin).
     /// *Inputs*: `sub` is within `3p eps` of its sizes of the exact restriction, its
     /// centring adds `2 eps pa` (the size includes `||c|| |W|`), the fit's piece is within
     /// `((m + 1)(2m + 1) + 2) eps` of its sizes (`NodeBound::bound`'s extraction allowance,
@@ -139,7 +171,7 @@ impl NumeratorNodes {
         self.coefficients(span, coef);
         let (num, wprod) = coef.split_at((deg + 1) * dim);
         let (best, at) = if dim == 3 {
-            self.blocked_max_fixed::<3>(num)
+            self.symmetric_max::<3>(num)
         } else if dim <= BLOCK_DIM {
             self.blocked_max(num, dim)
         } else {
@@ -151,7 +183,7 @@ impl NumeratorNodes {
         let ((pa, pw), (qa, qw)) = (span.piece, span.fit);
         let root = df.sqrt() + 1.0;
         let x = (pa * qw + qa * pw) * (1.0 + 1e-6);
-        let inner = 2.0 * (4.0 * (pf + mf) + mf + 13.0) * root * eps * x;
+        let inner = 2.0 * (7.0 * (pf + mf) + mf + 22.0) * root * eps * x;
         let outer = 2.0 * (3.0 * pf + (mf + 1.0) * (2.0 * mf + 1.0) + 4.0) * root * eps * x;
         let bn = (self.sec * (lower * (1.0 + (df + 3.0) * eps) + inner) + outer)
             * (1.0 + 4.0 * eps)
@@ -254,33 +286,86 @@ impl NumeratorNodes {
         (best, at)
     }
 
-    /// [`Self::blocked_max`] for `D` coordinates known at compile time: the same sums in
-    /// the same order (so the same values and node), the accumulators a fixed array the
-    /// compiler keeps in registers (ADDED, issue 17's real-CAD-file row: the node values
-    /// were a ninth of reducing a NURBS to cubics within 1e-3, half of it loop overhead).
+    /// [`Self::blocked_max`] for `D` coordinates known at compile time by the symmetric
+    /// split of the nodes: `t_(N-j) = 1 - t_j` and `B_k(1 - t) = B_(n-k)(t)`, so with `e_k =
+    /// c_k + c_(n-k)` and `o_k = c_k - c_(n-k)` (`k < n - k`; `e = 2 c` for the middle
+    /// coefficient of an even `n`), `2 N(t_j) = E_j + O_j` and `2 N(t_(N-j)) = E_j - O_j`,
+    /// `E_j = sum e_k (B_k + B_(n-k))(t_j)`, `O_j = sum o_k (B_k - B_(n-k))(t_j)`: the two
+    /// nodes of a pair for `n + 1` products per coordinate instead of `2 (n + 1)` (the
+    /// even/odd split of a reversal-symmetric basis, as the operators' error basis,
+    /// `bezier/operator/error_basis.rs`). The mirrored node is `1 - t_j` exactly, within
+    /// the grid's angle margin of `t_(N-j)`. Rounding (`C` the largest `|c_k|`): `e_k`
+    /// within `eps C`, the table within `(3n + 4) eps` relative, the sums of at most `n/2 +
+    /// 1` terms of total weight `<= 1` within `(n/2 + 2) eps` of `2 C`, the last sum `2 eps
+    /// C`: `N(t)` within `(7n + 14) eps C` ([`Self::bound`]'s allowance). ADDED (issue 17,
+    /// the real-CAD-file row): the node values were a ninth of reducing a NURBS to cubics
+    /// within 1e-3. Returns `(max_j ||N(t_j)||^2, its node j)`.
     #[inline(never)]
-    fn blocked_max_fixed<const D: usize>(&self, num: &[f64]) -> (f64, usize) {
-        let nn = self.nodes;
-        let rows = num.len() / D;
+    fn symmetric_max<const D: usize>(&self, num: &[f64]) -> (f64, usize) {
+        let (n, hn, big_n) = (self.p + self.m, self.half, self.big_n);
+        let pairs = n.div_ceil(2);
+        let rows = n / 2 + 1;
+        let mut e = [[0.0f64; D]; 16];
+        let mut o = [[0.0f64; D]; 16];
+        let (e, o) = if rows <= 16 {
+            (&mut e[..rows], &mut o[..pairs])
+        } else {
+            return self.blocked_max(num, D);
+        };
+        for k in 0..rows {
+            let x: &[f64; D] = num[k * D..(k + 1) * D].try_into().expect("a point");
+            if k < n - k {
+                let y: &[f64; D] = num[(n - k) * D..(n - k + 1) * D]
+                    .try_into()
+                    .expect("a point");
+                for c in 0..D {
+                    e[k][c] = x[c] + y[c];
+                    o[k][c] = x[c] - y[c];
+                }
+            } else {
+                for c in 0..D {
+                    e[k][c] = 2.0 * x[c];
+                }
+            }
+        }
         let (mut best, mut at) = (0.0f64, 0);
-        for j0 in (0..nn).step_by(LANES) {
-            let mut acc = [[0.0f64; LANES]; D];
-            for k in 0..rows {
-                let r: &[f64; LANES] = self.bn[k * nn + j0..k * nn + j0 + LANES]
+        let mut keep = |sq: f64, j: usize| {
+            if sq > best || sq.is_nan() {
+                (best, at) = (if sq.is_nan() { f64::INFINITY } else { sq }, j);
+            }
+        };
+        for j0 in (0..hn).step_by(LANES) {
+            let mut ae = [[0.0f64; LANES]; D];
+            let mut ao = [[0.0f64; LANES]; D];
+            for (k, x) in e.iter().enumerate() {
+                let r: &[f64; LANES] = self.even[k * hn + j0..k * hn + j0 + LANES]
                     .try_into()
                     .expect("a block");
-                let x: &[f64; D] = num[k * D..(k + 1) * D].try_into().expect("a point");
                 for c in 0..D {
                     for l in 0..LANES {
-                        acc[c][l] += r[l] * x[c];
+                        ae[c][l] += r[l] * x[c];
+                    }
+                }
+            }
+            for (k, x) in o.iter().enumerate() {
+                let r: &[f64; LANES] = self.odd[k * hn + j0..k * hn + j0 + LANES]
+                    .try_into()
+                    .expect("a block");
+                for c in 0..D {
+                    for l in 0..LANES {
+                        ao[c][l] += r[l] * x[c];
                     }
                 }
             }
             for l in 0..LANES {
-                let sq: f64 = acc.iter().map(|a| a[l] * a[l]).sum();
-                if sq > best || sq.is_nan() {
-                    (best, at) = (if sq.is_nan() { f64::INFINITY } else { sq }, j0 + l);
+                let j = j0 + l;
+                if 2 * j > big_n {
+                    break;
                 }
+                let lo: f64 = (0..D).map(|c| (ae[c][l] + ao[c][l]).powi(2)).sum();
+                let hi: f64 = (0..D).map(|c| (ae[c][l] - ao[c][l]).powi(2)).sum();
+                keep(0.25 * lo, j);
+                keep(0.25 * hi, big_n - j);
             }
         }
         (best, at)
@@ -374,26 +459,58 @@ mod tests {
     use cagd_core::BSplineCurve;
     use cagd_testkit::bench::random_input;
 
-    /// The node maximum with the coordinates fixed at compile time is the general loop's,
-    /// bitwise (value and node), at degrees 4–15 against 1–5, scales 1e-300 to 1e300.
+    /// The node maximum by the symmetric split is the general loop's (every node by the
+    /// full Bernstein matrix) within the split's rounding allowance, `(7n + 14) eps` of the
+    /// largest coefficient for the split and `(4n + 5) eps` for the general loop, and its
+    /// node holds that value, at degrees 4–15 against 1–5 (odd and even `p + m`),
+    /// scales 1e-300 to 1e300, and for a numerator largest at the mirrored half.
     #[test]
-    fn the_fixed_node_loop_is_the_general_one() {
+    fn the_symmetric_node_loop_is_the_general_one() {
         let mut seed = 500;
-        for (p, m) in [(4, 3), (7, 1), (9, 3), (12, 5), (15, 3)] {
+        for (p, m) in [(4, 3), (7, 1), (9, 3), (12, 5), (15, 3), (6, 2), (15, 5)] {
             let nodes = NumeratorNodes::new(p, m);
+            let n = p + m;
             for scale in [1.0, 1e-300, 1e300, 3e-7] {
-                seed += 1;
-                let num: Vec<f64> = random_input((p + m + 1) * 3, seed)
-                    .iter()
-                    .map(|x| scale * x)
-                    .collect();
-                let (a, i) = nodes.blocked_max(&num, 3);
-                let (b, j) = nodes.blocked_max_fixed::<3>(&num);
-                assert_eq!(
-                    (a.to_bits(), i),
-                    (b.to_bits(), j),
-                    "({p}, {m}) scale {scale}"
-                );
+                for tilt in [false, true] {
+                    seed += 1;
+                    let mut num: Vec<f64> = random_input((n + 1) * 3, seed)
+                        .iter()
+                        .map(|x| scale * x)
+                        .collect();
+                    if tilt {
+                        // Large at the end: the maximum at a node of the mirrored half.
+                        for (k, x) in num.iter_mut().enumerate() {
+                            *x *= 1.0 + 10.0 * (k / 3) as f64;
+                        }
+                    }
+                    let (a, _) = nodes.blocked_max(&num, 3);
+                    let (b, j) = nodes.symmetric_max::<3>(&num);
+                    if !a.is_finite() {
+                        // The squares overflow at 1e300: both routes say so.
+                        assert!(b == f64::INFINITY, "({p}, {m}) scale {scale}: {b}");
+                        continue;
+                    }
+                    let c = num.iter().fold(0.0f64, |s, x| s.max(x.abs()));
+                    let tol = (11.0 * n as f64 + 19.0) * f64::EPSILON * c * 3f64.sqrt();
+                    assert!(
+                        (a.sqrt() - b.sqrt()).abs() <= tol,
+                        "({p}, {m}) scale {scale}: {a} {b}"
+                    );
+                    // The value at node j by the full matrix.
+                    let at: f64 = (0..3)
+                        .map(|c| {
+                            (0..=n)
+                                .map(|k| nodes.bn[k * nodes.nodes + j] * num[k * 3 + c])
+                                .sum::<f64>()
+                                .powi(2)
+                        })
+                        .sum();
+                    assert!((at.sqrt() - b.sqrt()).abs() <= tol, "({p}, {m}) node {j}");
+                    if tilt && b > 0.0 {
+                        // (At 1e-300 the squares underflow: every node is zero.)
+                        assert!(2 * j > nodes.big_n, "({p}, {m}): node {j}");
+                    }
+                }
             }
         }
     }
