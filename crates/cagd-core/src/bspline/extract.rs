@@ -255,6 +255,34 @@ mod tests {
     use crate::bspline::insert::tests::curve_strategy;
     use proptest::prelude::*;
 
+    /// A 3-D curve of degree `p` (polynomial or rational) with unclamped ends and interior
+    /// knots of multiplicity 1, `p`, 2, 1, `p - 1` (at least 1), its points scaled by
+    /// `scale`; and its knot vector.
+    fn unclamped_curve(p: usize, rational: bool, scale: f64) -> (Vec<f64>, BSplineCurve) {
+        let mut knots: Vec<f64> = (0..p).map(|i| -0.3 * (p - i) as f64).collect();
+        for (j, mult) in [1usize, p, 2.min(p), 1, p.saturating_sub(1).max(1)]
+            .into_iter()
+            .enumerate()
+        {
+            knots.extend(std::iter::repeat_n(
+                1.0 + 0.7 * j as f64 + 0.01 * j as f64 * j as f64,
+                mult,
+            ));
+        }
+        knots.extend((0..=p).map(|i| 5.0 + 0.4 * i as f64));
+        let n = knots.len() - p - 1;
+        let pts: Vec<f64> = (0..3 * n)
+            .map(|i| ((i * 37 % 23) as f64 - 11.0) * scale)
+            .collect();
+        let c = if rational {
+            let w: Vec<f64> = (0..n).map(|i| 0.5 + (i * 7 % 5) as f64 * 0.35).collect();
+            BSplineCurve::new_rational(p, knots.clone(), pts, w, 3).unwrap()
+        } else {
+            BSplineCurve::new(p, knots.clone(), pts, 3).unwrap()
+        };
+        (knots, c)
+    }
+
     /// One piece ([`BSplineCurve::bezier_piece`]) is bitwise the element of
     /// [`BSplineCurve::to_beziers`] on its span, at degrees 1–15, polynomial and rational,
     /// with unclamped ends and knots of multiplicity 1..p (empty spans refused).
@@ -262,27 +290,8 @@ mod tests {
     fn one_piece_is_the_extracted_piece() {
         for p in [1usize, 2, 4, 7, 11, 15] {
             for rational in [false, true] {
-                let mut knots: Vec<f64> = (0..p).map(|i| -0.3 * (p - i) as f64).collect();
-                for (j, mult) in [1usize, p, 2.min(p), 1, p.saturating_sub(1).max(1)]
-                    .into_iter()
-                    .enumerate()
-                {
-                    knots.extend(std::iter::repeat_n(
-                        1.0 + 0.7 * j as f64 + 0.01 * j as f64 * j as f64,
-                        mult,
-                    ));
-                }
-                knots.extend((0..=p).map(|i| 5.0 + 0.4 * i as f64));
+                let (knots, c) = unclamped_curve(p, rational, 3.7);
                 let n = knots.len() - p - 1;
-                let pts: Vec<f64> = (0..3 * n)
-                    .map(|i| ((i * 37 % 23) as f64 - 11.0) * 3.7)
-                    .collect();
-                let c = if rational {
-                    let w: Vec<f64> = (0..n).map(|i| 0.5 + (i * 7 % 5) as f64 * 0.35).collect();
-                    BSplineCurve::new_rational(p, knots.clone(), pts, w, 3).unwrap()
-                } else {
-                    BSplineCurve::new(p, knots.clone(), pts, 3).unwrap()
-                };
                 let all = c.to_beziers().unwrap();
                 let mut k = 0;
                 for s in 0..knots.len() - 1 {
@@ -318,20 +327,8 @@ mod tests {
     fn pieces_are_the_blossoms_at_high_degree() {
         use crate::bspline::eval::blossom;
         for p in [4usize, 7, 11, 15] {
-            let mut knots: Vec<f64> = (0..p).map(|i| -0.3 * (p - i) as f64).collect();
-            for (j, mult) in [1usize, p, 2, 1, p - 1].into_iter().enumerate() {
-                knots.extend(std::iter::repeat_n(
-                    1.0 + 0.7 * j as f64 + 0.01 * j as f64 * j as f64,
-                    mult,
-                ));
-            }
-            knots.extend((0..=p).map(|i| 5.0 + 0.4 * i as f64));
+            let (knots, c) = unclamped_curve(p, true, 3.5);
             let n = knots.len() - p - 1;
-            let pts: Vec<f64> = (0..3 * n)
-                .map(|i| ((i * 37 % 23) as f64 - 11.0) * 3.5)
-                .collect();
-            let w: Vec<f64> = (0..n).map(|i| 0.5 + (i * 7 % 5) as f64 * 0.35).collect();
-            let c = BSplineCurve::new_rational(p, knots.clone(), pts, w, 3).unwrap();
             let (work, pdim) = c.work_points();
             let scale = work.iter().fold(0.0f64, |m, x| m.max(x.abs()));
             let pieces = extract_work(&knots, p, &work, pdim);
