@@ -230,6 +230,9 @@ pub(crate) fn max_deviation_passes(
     let mut d2 = Vec::with_capacity(samples + 1);
     let mut best = 0.0f64;
     let mut ranked = Vec::with_capacity(pairs.len());
+    // The visited pairs' pieces restricted to their intervals (`a`'s, then `b`'s), for the
+    // second pass.
+    let mut restricted = Vec::new();
     // The pairs' certified caps, squared in units of `unit` (infinite without caps), and
     // the order of the visit: decreasing caps (the pairs' own order without caps).
     let caps: Vec<f64> = pairs
@@ -250,10 +253,22 @@ pub(crate) fn max_deviation_passes(
         }
         let (lo, hi, i, j) = pairs[idx];
         let (pa, pb) = (sa.get(i)?, sb.get(j)?);
-        let reach = scratch.at_nodes(pa, &na, pb, &nb, (lo, hi), dim, &mut d2)?;
+        scratch.restrict(pa, pb, (lo, hi));
+        let reach = scratch.at_nodes(pa, &na, pb, &nb, dim, &mut d2)?;
         let top = d2.iter().copied().fold(0.0f64, f64::max);
         best = best.max(top);
-        ranked.push((top, (factor * factor * reach).min(caps[idx]), idx, reach));
+        let from = restricted.len();
+        restricted.extend_from_slice(&scratch.a);
+        let mid = restricted.len();
+        restricted.extend_from_slice(&scratch.b);
+        let kept = (from, mid, restricted.len());
+        ranked.push((
+            top,
+            (factor * factor * reach).min(caps[idx]),
+            idx,
+            reach,
+            kept,
+        ));
     }
     // Pass 2: in order of their largest node value, the pairs whose bound reaches the
     // largest distance found so far (at most SPLINE_MEASURED_PIECES of them) sampled at
@@ -276,7 +291,7 @@ pub(crate) fn max_deviation_passes(
         }
     };
     let mut refined = 0;
-    for &(_, reach, idx, coarse) in &ranked {
+    for &(_, reach, idx, coarse, (from, mid, to)) in &ranked {
         if refined == SPLINE_MEASURED_PIECES {
             break;
         }
@@ -285,6 +300,7 @@ pub(crate) fn max_deviation_passes(
         }
         let (lo, hi, i, j) = pairs[idx];
         let (pa, pb) = (sa.get(i)?, sb.get(j)?);
+        scratch.load(&restricted[from..mid], &restricted[mid..to]);
         if finer && !rational && refined > 0 {
             // The other half of the Lobatto nodes of `2 N` intervals: with the first
             // pass's, the pair's bound by the factor of `2 N`.
@@ -294,13 +310,13 @@ pub(crate) fn max_deviation_passes(
                     SampleTable::cached(b.degree(), nodes, Grid::LobattoOdd),
                 )
             });
-            let half = scratch.at_nodes(pa, oa, pb, ob, (lo, hi), dim, &mut d2)?;
+            let half = scratch.at_nodes(pa, oa, pb, ob, dim, &mut d2)?;
             if (fine * coarse.max(half)).min(caps[idx]) < best {
                 continue;
             }
         }
         refined += 1;
-        scratch.sampled(pa, &ta, pb, &tb, (lo, hi), dim, &mut d2)?;
+        scratch.sampled(pa, &ta, pb, &tb, dim, &mut d2)?;
         // Only the local maxima that may exceed the largest distance found (a hair below
         // it, so that no maximum the full refinement would raise it with is skipped).
         let d = refine_sampled_maxima_above(
@@ -482,7 +498,7 @@ struct PairScratch {
 
 impl PairScratch {
     /// `d2[k] = ||a(x_k) - b(x_k)||^2` at the parameters of the tables' rows (both tables
-    /// at the same fractions `x_k` of `[lo, hi]`), as [`Self::sampled`]; returns the largest
+    /// at the same fractions `x_k` of the pair's interval), as [`Self::sampled`]; returns the largest
     /// squared norm of the difference's polynomial form at those parameters: `d2` itself for
     /// polynomial pieces, and for rational ones `||A W_b - B W_a||^2 / (w_a w_b)^2` with
     /// `w_a`, `w_b` the smallest restricted control weights (lower bounds of `W_a`, `W_b` on
@@ -491,18 +507,16 @@ impl PairScratch {
     ///
     /// # Errors
     /// [`Error::NonFinite`] at the first value that is not finite.
-    #[allow(clippy::too_many_arguments, reason = "two pieces with their tables")]
     fn at_nodes(
         &mut self,
         pa: &PieceEval,
         ta: &SampleTable,
         pb: &PieceEval,
         tb: &SampleTable,
-        (lo, hi): (f64, f64),
         dim: usize,
         d2: &mut Vec<f64>,
     ) -> Result<f64> {
-        self.sampled(pa, ta, pb, tb, (lo, hi), dim, d2)?;
+        self.sampled(pa, ta, pb, tb, dim, d2)?;
         if !pa.rational && !pb.rational {
             return Ok(d2.iter().copied().fold(0.0f64, f64::max));
         }
@@ -538,36 +552,44 @@ impl PairScratch {
         Ok(top / (wa * wb * wa * wb))
     }
 
-    /// `d2[k] = ||a(t_k) - b(t_k)||^2` (in units of `1 / self.inv`) at `t_k = lo + (hi -
-    /// lo) k / n` (`n + 1` the tables' rows): each piece's (homogeneous) points restricted to `[lo, hi]` by de Casteljau
-    /// (exact up to rounding; none when the piece is the interval), then all its samples by
-    /// the table's map.
+    /// The pieces `pa` and `pb` restricted to the pair's interval `[lo, hi]` (inside both
+    /// pieces' own) into `self.a`, `self.b`: each by two de Casteljau splits, or copied when
+    /// it is the whole piece (exact up to rounding).
+    fn restrict(&mut self, pa: &PieceEval, pb: &PieceEval, (lo, hi): (f64, f64)) {
+        pa.restrict(lo, hi, &mut self.a, &mut self.left, &mut self.right);
+        pb.restrict(lo, hi, &mut self.b, &mut self.left, &mut self.right);
+    }
+
+    /// A pair's restricted pieces kept from [`Self::restrict`] into `self.a`, `self.b`
+    /// (ADDED, issue 17's real-CAD-file row: the second pass restricted every pair it
+    /// visited again, 3 % of reducing a NURBS to cubics within 1e-3).
+    fn load(&mut self, a: &[f64], b: &[f64]) {
+        self.a.clear();
+        self.a.extend_from_slice(a);
+        self.b.clear();
+        self.b.extend_from_slice(b);
+    }
+
+    /// `d2[k] = ||a(t_k) - b(t_k)||^2` (in units of `1 / self.inv`) at the parameters
+    /// `t_k` of the tables' rows (fractions of the pair's interval; `n + 1` rows), from the
+    /// pieces restricted to the interval in `self.a`, `self.b` ([`Self::restrict`] or
+    /// [`Self::load`]), all samples of a piece by its table's map.
     ///
     /// # Errors
     /// [`Error::NonFinite`] at the first sample whose distance is not finite.
-    #[allow(clippy::too_many_arguments, reason = "two pieces with their tables")]
     fn sampled(
         &mut self,
         pa: &PieceEval,
         ta: &SampleTable,
         pb: &PieceEval,
         tb: &SampleTable,
-        (lo, hi): (f64, f64),
         dim: usize,
         d2: &mut Vec<f64>,
     ) -> Result<()> {
         let Self {
-            inv,
-            a,
-            b,
-            left,
-            right,
-            va,
-            vb,
+            inv, a, b, va, vb, ..
         } = self;
         let inv = *inv;
-        pa.restrict(lo, hi, a, left, right);
-        pb.restrict(lo, hi, b, left, right);
         let samples = ta.0.rows();
         va.resize(samples * pa.hdim, 0.0);
         vb.resize(samples * pb.hdim, 0.0);
