@@ -58,6 +58,21 @@ impl Frame {
         }
     }
 
+    /// Homogeneous points `(w x, w)` of the frame (`dim + 1` values each) moved back to
+    /// the model: `(s (w x) + c w, w)`, the homogeneous form of `s x + c` (exact up to
+    /// the rounding of the products and the sum).
+    pub(crate) fn unframe_homogeneous(&self, points: &[f64]) -> Vec<f64> {
+        let (centre, s) = (self.frame.centre(), self.frame.scale());
+        let hdim = centre.len() + 1;
+        let mut out = Vec::with_capacity(points.len());
+        for q in points.chunks_exact(hdim) {
+            let w = q[hdim - 1];
+            out.extend(q[..hdim - 1].iter().zip(centre).map(|(x, c)| s * x + c * w));
+            out.push(w);
+        }
+        out
+    }
+
     /// The model-space bound of a bound `b` found in the frame for the framed result
     /// `out` (frame units): `s b` plus the round trip's rounding.
     pub(crate) fn finish(&self, b: f64, out: &[f64]) -> f64 {
@@ -204,9 +219,15 @@ pub(crate) fn reduce_curve_framed_capped(
                 .map(|&b| frame.finish_rounded(b, rounding))
                 .collect(),
             breaks: c.breaks,
+            pieces: c
+                .pieces
+                .map(|(breaks, points)| (breaks, frame.unframe_homogeneous(&points))),
         });
         let known = Known {
-            pieces_a: None,
+            pieces_a: caps
+                .as_ref()
+                .and_then(|c| c.pieces.as_ref())
+                .map(|(breaks, points)| (&breaks[..], &points[..])),
             caps: caps.as_ref(),
         };
         red.report.max_error = Some(spline_max_deviation_known(curve, &red.curve, known)?);

@@ -365,6 +365,9 @@ pub(crate) fn reduce_global(
     let caps = SpanCaps {
         breaks: local.breaks().to_vec(),
         bounds: local.spans().to_vec(),
+        // A NURBS is reduced in its frame: the caller measures in the model, with these
+        // pieces moved back (the polynomial input's are passed below).
+        pieces: rational.then(|| (src.breaks.clone(), src.all_points().to_vec())),
     };
     let max_error = if opts.measure {
         let known = Known {

@@ -62,9 +62,10 @@ pub fn spline_max_deviation(a: &BSplineCurve, b: &BSplineCurve) -> Result<f64> {
 /// What a caller of [`spline_max_deviation_known`] knows already about the two curves.
 #[derive(Debug, Default, Clone, Copy)]
 pub(crate) struct Known<'a> {
-    /// The Bézier pieces of `a` (a polynomial curve): `pieces + 1` increasing breaks and
-    /// `(p + 1) dim` points per piece, those of `a.to_beziers()` (the global fit's source
-    /// holds them), so that they are not extracted again.
+    /// The Bézier pieces of `a`: `pieces + 1` increasing breaks and `(p + 1) h` points per
+    /// piece (`h = dim`, or for a NURBS `dim + 1` homogeneous `(w x, w)`), those of
+    /// `a.to_beziers()` up to rounding (the global fit's source holds them), so that they
+    /// are not extracted again. Ignored unless the sizes match.
     pub(crate) pieces_a: Option<(&'a [f64], &'a [f64])>,
     /// Certified bounds of the distance per interval.
     pub(crate) caps: Option<&'a SpanCaps>,
@@ -77,6 +78,11 @@ pub(crate) struct Known<'a> {
 pub(crate) struct SpanCaps {
     pub(crate) breaks: Vec<f64>,
     pub(crate) bounds: Vec<f64>,
+    /// The reduction's input as Bézier pieces, as its reducer extracted them (breaks and
+    /// points, [`Known::pieces_a`]'s layout), when it hands them on: a NURBS reduced in
+    /// its frame, whose pieces the framed caller moves back to the model
+    /// (`framed::Frame::unframe_homogeneous`) for the measurement.
+    pub(crate) pieces: Option<(Vec<f64>, Vec<f64>)>,
 }
 
 impl Known<'_> {
@@ -84,7 +90,7 @@ impl Known<'_> {
     /// open interval `(lo, hi)`: a bound of the distance on it; infinite without caps or
     /// when a cap is not a number.
     fn cap(&self, lo: f64, hi: f64) -> f64 {
-        let Some(SpanCaps { breaks, bounds }) = self.caps else {
+        let Some(SpanCaps { breaks, bounds, .. }) = self.caps else {
             return f64::INFINITY;
         };
         let n = bounds.len();
@@ -171,14 +177,15 @@ pub(crate) fn max_deviation_passes(
             why: "the two curves must have the same parameter domain",
         });
     }
+    let hdim = a.dim() + usize::from(a.is_rational());
+    let len = (a.degree() + 1) * hdim;
     let mut sa = match known.pieces_a {
-        Some((breaks, points)) if !a.is_rational() => {
-            let len = (a.degree() + 1) * a.dim();
+        Some((breaks, points)) if breaks.len() >= 2 && points.len() == (breaks.len() - 1) * len => {
             LazyPieces::ready(
                 breaks
                     .windows(2)
                     .zip(points.chunks_exact(len))
-                    .map(|(t, q)| PieceEval::polynomial(t[0], t[1], q.to_vec(), a.dim()))
+                    .map(|(t, q)| PieceEval::ready(t[0], t[1], q.to_vec(), hdim, a.is_rational()))
                     .collect(),
             )
         }
@@ -684,17 +691,18 @@ struct PieceEval {
 }
 
 impl PieceEval {
-    /// The polynomial piece on `[start, end]` with Bézier points `points` (`dim` each).
-    fn polynomial(start: f64, end: f64, points: Vec<f64>, dim: usize) -> Self {
-        let n = points.len() / dim;
+    /// The piece on `[start, end]` with Bézier points `points` (`hdim` each: homogeneous
+    /// `(w x, w)` when `rational`).
+    fn ready(start: f64, end: f64, points: Vec<f64>, hdim: usize, rational: bool) -> Self {
+        let n = points.len() / hdim;
         Self {
             start,
             end,
-            hdim: dim,
-            rational: false,
+            hdim,
+            rational,
             points,
             binom: (0..n).map(|i| cagd_core::binomial_f64(n - 1, i)).collect(),
-            scratch: RefCell::new((vec![0.0; n], vec![0.0; dim])),
+            scratch: RefCell::new((vec![0.0; n], vec![0.0; hdim])),
         }
     }
 
