@@ -181,13 +181,7 @@ pub(crate) fn max_deviation_passes(
     let len = (a.degree() + 1) * hdim;
     let mut sa = match known.pieces_a {
         Some((breaks, points)) if breaks.len() >= 2 && points.len() == (breaks.len() - 1) * len => {
-            LazyPieces::ready(
-                breaks
-                    .windows(2)
-                    .zip(points.chunks_exact(len))
-                    .map(|(t, q)| PieceEval::ready(t[0], t[1], q.to_vec(), hdim, a.is_rational()))
-                    .collect(),
-            )
+            LazyPieces::given(breaks, points, hdim, a.is_rational())
         }
         _ => LazyPieces::of(a),
     };
@@ -628,13 +622,27 @@ impl PairScratch {
 /// ([`PieceEval`]) when first asked for: a measurement with caps visits a few of its
 /// pairs, and extracting every piece of both curves was a tenth of reducing a NURBS to
 /// cubics within 1e-3 (issue 17's real-CAD-file row). The pieces are
-/// [`BSplineCurve::bezier_piece`]'s, bitwise those of [`BSplineCurve::to_beziers`].
+/// [`BSplineCurve::bezier_piece`]'s, bitwise those of [`BSplineCurve::to_beziers`], or
+/// those given ([`Known::pieces_a`]).
 struct LazyPieces<'c> {
-    /// The spline, when its pieces are extracted on demand.
-    curve: Option<&'c BSplineCurve>,
-    /// Per piece: its knot span and interval.
+    source: PieceSource<'c>,
+    /// Per piece: its knot span (of an extracted curve) and interval.
     spans: Vec<(usize, (f64, f64))>,
     pieces: Vec<Option<PieceEval>>,
+}
+
+/// Where [`LazyPieces`] takes a piece from.
+enum PieceSource<'c> {
+    /// Extracted from the spline.
+    Curve(&'c BSplineCurve),
+    /// Given: the pieces' points (`len` values each, `hdim` per point, homogeneous when
+    /// `rational`).
+    Given {
+        points: &'c [f64],
+        len: usize,
+        hdim: usize,
+        rational: bool,
+    },
 }
 
 impl<'c> LazyPieces<'c> {
@@ -647,18 +655,26 @@ impl<'c> LazyPieces<'c> {
             .collect();
         let pieces = spans.iter().map(|_| None).collect();
         Self {
-            curve: Some(curve),
+            source: PieceSource::Curve(curve),
             spans,
             pieces,
         }
     }
 
-    /// Pieces given ready.
-    fn ready(pieces: Vec<PieceEval>) -> Self {
+    /// Pieces given: `breaks` (one more than the pieces) and their points (`(p + 1) hdim`
+    /// values each, homogeneous when `rational`), made ready when first asked for.
+    fn given(breaks: &[f64], points: &'c [f64], hdim: usize, rational: bool) -> Self {
+        let spans: Vec<(usize, (f64, f64))> =
+            breaks.windows(2).map(|t| (0, (t[0], t[1]))).collect();
         Self {
-            curve: None,
-            spans: pieces.iter().map(|x| (0, (x.start, x.end))).collect(),
-            pieces: pieces.into_iter().map(Some).collect(),
+            source: PieceSource::Given {
+                points,
+                len: points.len() / spans.len().max(1),
+                hdim,
+                rational,
+            },
+            pieces: spans.iter().map(|_| None).collect(),
+            spans,
         }
     }
 
@@ -668,9 +684,20 @@ impl<'c> LazyPieces<'c> {
     /// Those of [`BSplineCurve::bezier_piece`].
     fn get(&mut self, i: usize) -> Result<&PieceEval> {
         if self.pieces[i].is_none() {
-            let curve = self.curve.expect("pieces not given are extracted");
-            let piece = curve.bezier_piece(self.spans[i].0)?;
-            self.pieces[i] = Some(PieceEval::new(&piece));
+            let piece = match self.source {
+                PieceSource::Curve(curve) => PieceEval::new(&curve.bezier_piece(self.spans[i].0)?),
+                PieceSource::Given {
+                    points,
+                    len,
+                    hdim,
+                    rational,
+                } => {
+                    let (start, end) = self.spans[i].1;
+                    let q = points[i * len..(i + 1) * len].to_vec();
+                    PieceEval::ready(start, end, q, hdim, rational)
+                }
+            };
+            self.pieces[i] = Some(piece);
         }
         Ok(self.pieces[i].as_ref().expect("extracted"))
     }
