@@ -499,9 +499,9 @@ struct PairScratch {
 
 impl PairScratch {
     /// `d2[k] = ||a(x_k) - b(x_k)||^2` at the parameters of the tables' rows (both tables
-    /// at the same fractions `x_k` of the pair's interval), as [`Self::sampled`]; returns the largest
-    /// squared norm of the difference's polynomial form at those parameters: `d2` itself for
-    /// polynomial pieces, and for rational ones `||A W_b - B W_a||^2 / (w_a w_b)^2` with
+    /// at the same fractions `x_k` of the pair's interval), as [`Self::sampled`]; returns
+    /// the largest squared norm of the difference's polynomial form at those parameters:
+    /// `d2` itself for polynomial pieces, and for rational ones `||A W_b - B W_a||^2 / (w_a w_b)^2` with
     /// `w_a`, `w_b` the smallest restricted control weights (lower bounds of `W_a`, `W_b` on
     /// the interval; infinite unless both are positive), so that the Ehlich–Zeller factor
     /// of the numerator's degree `p_a + p_b` bounds the pair's squared distance by it.
@@ -563,7 +563,7 @@ impl PairScratch {
 
     /// A pair's restricted pieces kept from [`Self::restrict`] into `self.a`, `self.b`
     /// (ADDED, issue 17's real-CAD-file row: the second pass restricted every pair it
-    /// visited again, 3 % of reducing a NURBS to cubics within 1e-3).
+    /// visited again, 2 % of reducing a NURBS to cubics within 1e-3).
     fn load(&mut self, a: &[f64], b: &[f64]) {
         self.a.clear();
         self.a.extend_from_slice(a);

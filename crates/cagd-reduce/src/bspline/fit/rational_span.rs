@@ -134,8 +134,8 @@ fn single_bound(
         .chunks_exact(blk)
         .map(|q| q[dim])
         .fold(f64::INFINITY, f64::min);
-    // Written in place (the same operations as pushing them, without a capacity check
-    // per value: that was 4 % of reducing a NURBS to cubics within 1e-3).
+    // Written in place: the same operations as pushing them value by value, 1.3 % less
+    // of reducing a NURBS to cubics within 1e-3.
     let centred = |from: &[f64], out: &mut Vec<f64>| {
         out.clear();
         out.resize(from.len(), 0.0);
