@@ -143,7 +143,8 @@ fn span_start_into(u: &[f64], p: usize, local: &[f64], pdim: usize, s: usize, tr
 impl BSplineCurve {
     /// The non-empty knot span `s` (`p <= s < n`, `u_s < u_{s+1}`) as a
     /// [`BezierSegment`]: bitwise the element of [`Self::to_beziers`] on `[u_s, u_{s+1}]`
-    /// (its points from the span's two de Boor triangles, its last point the next
+    /// (Piegl & Tiller §5.4 by blossoming, the module docs: its points `b_i = P[a^(p-i),
+    /// b^i]` from the span's two de Boor triangles, its last point the next
     /// non-empty span's first, or the de Boor value at the domain's end), from the
     /// span's own `p + 1` control points and the next span's: `O(p^2)` for one piece,
     /// where [`Self::to_beziers`] extracts every piece. ADDED (issue 17's real-CAD-file

@@ -362,12 +362,10 @@ pub(crate) fn reduce_global(
     );
     local.remove_greedily_with(&mut raw, tol, Some(&mut sharpen))?;
     let curve_out = raw.into_curve()?;
-    let caps = SpanCaps {
+    let mut caps = SpanCaps {
         breaks: local.breaks().to_vec(),
         bounds: local.spans().to_vec(),
-        // A NURBS is reduced in its frame: the caller measures in the model, with these
-        // pieces moved back (the polynomial input's are passed below).
-        pieces: rational.then(|| (src.breaks.clone(), src.all_points().to_vec())),
+        pieces: None,
     };
     let max_error = if opts.measure {
         let known = Known {
@@ -391,6 +389,12 @@ pub(crate) fn reduce_global(
         .windows(2)
         .filter(|w| w[0] < w[1])
         .count();
+    let spans_in = src.breaks.len() - 1;
+    // A NURBS is reduced in its frame: the caller measures in the model, with the source's
+    // pieces moved back (a polynomial input's are passed above).
+    if rational {
+        caps.pieces = Some(src.into_pieces());
+    }
     let red = BSplineReduction {
         report: BSplineReport {
             strategy: BSplineStrategy::GlobalFit,
@@ -404,7 +408,7 @@ pub(crate) fn reduce_global(
             continuity,
         },
         curve: curve_out,
-        spans_in: src.breaks.len() - 1,
+        spans_in,
         spans_out,
     };
     Ok((red, Some(caps)))

@@ -733,6 +733,7 @@ impl PieceEval {
         }
     }
 
+    /// The piece `piece` (homogeneous points for a rational one).
     fn new(piece: &BezierSegment) -> Self {
         let c = &piece.curve;
         let rational = c.is_rational();
@@ -741,16 +742,7 @@ impl PieceEval {
         } else {
             (c.dim(), c.points().to_vec())
         };
-        let n = points.len() / hdim;
-        Self {
-            start: piece.start,
-            end: piece.end,
-            hdim,
-            rational,
-            points,
-            binom: (0..n).map(|i| cagd_core::binomial_f64(n - 1, i)).collect(),
-            scratch: RefCell::new((vec![0.0; n], vec![0.0; hdim])),
-        }
+        Self::ready(piece.start, piece.end, points, hdim, rational)
     }
 
     /// The piece's (homogeneous) points restricted to the global interval `[lo, hi]` (inside

@@ -233,7 +233,8 @@ pub fn refine_sampled_maxima(
 /// stay below another pair's maximum is not refined at all. Never below the sampled
 /// maximum; equal to [`refine_sampled_maxima`] wherever that is at least `above` (to
 /// the parabola rule: the maxima skipped here are those the rule says cannot exceed
-/// `above`). ADDED (issue 17's real-CAD-file row: Brent on the pairs below the maximum
+/// `above`). ADDED (SPEC-reduce §0 "sampled" maximum, refined, as [`max_distance_1d`];
+/// issue 17's real-CAD-file row: Brent on the pairs below the maximum
 /// was 7 % of measuring a NURBS reduced to cubics within 1e-3).
 pub fn refine_sampled_maxima_above(
     f: &impl Fn(f64, &mut [f64]),

@@ -140,6 +140,11 @@ impl Source {
         &self.points
     }
 
+    /// The breaks and the points of every piece ([`Self::all_points`]), moved out.
+    pub(crate) fn into_pieces(self) -> (Vec<f64>, Vec<f64>) {
+        (self.breaks, self.points)
+    }
+
     fn first_point(&self) -> &[f64] {
         &self.points[..self.pdim]
     }
